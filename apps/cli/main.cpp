@@ -1,0 +1,42 @@
+// f2 — the command-line front door. Argument parsing only; the work is in f2::core.
+#include <CLI/CLI.hpp>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "commands.h"
+
+int main(int argc, char** argv) {
+    CLI::App app{
+        "f2 — ray-traced key-frame animation of scenes with the robot F-2.\n"
+        "Without a SCENE argument every command uses the embedded default scene (scenes/demo.f2)."};
+    app.set_version_flag("--version", "f2 0.1.0");
+    app.require_subcommand(1);
+
+    std::vector<f2::cli::Command> commands = {
+        f2::cli::addRenderCommand(app),
+        f2::cli::addCheckCommand(app),
+        f2::cli::addInfoCommand(app),
+    };
+    // CLI11 would only say "a subcommand is required"; name the unknown word.
+    if (argc > 1 && argv[1][0] != '-') {
+        bool known = false;
+        std::string names;
+        for (const auto& command : commands) {
+            known = known || command.app->get_name() == argv[1];
+            names += (names.empty() ? "" : ", ") + command.app->get_name();
+        }
+        if (!known) {
+            std::cerr << "f2: unknown command '" << argv[1] << "' (expected " << names << "; see f2 --help)\n";
+            return 2;
+        }
+    }
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    }
+    for (const auto& command : commands)
+        if (command.app->parsed()) return command.run();
+    return 1;
+}

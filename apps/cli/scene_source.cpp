@@ -1,0 +1,38 @@
+#include "scene_source.h"
+
+#include <charconv>
+#include <iostream>
+
+#include "core/parse/parser.h"
+#include "core/scene/default_scene.h"
+
+namespace f2::cli {
+
+std::optional<LoadedScene> loadScene(const std::string& path) {
+    bool embedded = path.empty();
+    ParseResult result = embedded ? parseScene(defaultSceneText(), kDefaultSceneName) : parseSceneFile(path);
+    for (const Diagnostic& d : result.diagnostics) std::cerr << d.format() << '\n';
+    if (!result.ok()) return std::nullopt;
+    return LoadedScene{std::move(*result.scene), embedded ? std::string(kDefaultSceneName) : path};
+}
+
+bool parseSize(const std::string& text, int& width, int& height, std::string& error) {
+    auto x = text.find('x');
+    const char* begin = text.data();
+    const char* end = begin + text.size();
+    int w = 0, h = 0;
+    if (x == std::string::npos || std::from_chars(begin, begin + x, w).ptr != begin + x ||
+        std::from_chars(begin + x + 1, end, h).ptr != end) {
+        error = "--size: expected WIDTHxHEIGHT such as 800x600, got '" + text + "'";
+        return false;
+    }
+    if (w < 1 || h < 1 || w > 16384 || h > 16384 || std::int64_t(w) * h > (std::int64_t(1) << 26)) {
+        error = "--size: " + text + " is outside 1..16384 a side and 2^26 pixels in all";
+        return false;
+    }
+    width = w;
+    height = h;
+    return true;
+}
+
+}  // namespace f2::cli

@@ -1,0 +1,16 @@
+# Flags for our own targets only: link f2_warnings (strict warnings) and
+# f2_opt (speed) into every target we build.
+add_library(f2_warnings INTERFACE)
+target_compile_options(f2_warnings INTERFACE -Wall -Wextra -Werror)
+
+add_library(f2_opt INTERFACE)
+# No -ffast-math: the images must not depend on reassociation; only errno is dropped.
+target_compile_options(f2_opt INTERFACE $<$<CONFIG:Release,RelWithDebInfo>:-O3> -fno-math-errno)
+if(F2_NATIVE)
+  target_compile_options(f2_opt INTERFACE -march=native)
+endif()
+
+if(F2_SANITIZE)
+  add_compile_options(-fsanitize=${F2_SANITIZE} -fno-omit-frame-pointer -fno-sanitize-recover=all)
+  add_link_options(-fsanitize=${F2_SANITIZE})
+endif()

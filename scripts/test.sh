@@ -1,0 +1,8 @@
+#!/usr/bin/env bash
+# Installs what is missing, builds (Release) and runs every test with CTest.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/install-deps.sh
+cmake --preset release -G Ninja
+cmake --build --preset release
+ctest --preset release "$@"

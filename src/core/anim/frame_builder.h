@@ -1,0 +1,24 @@
+#pragma once
+/// Evaluates the animation of a scene at a time: key frames -> part frames ->
+/// world-space primitives.
+#include "core/anim/frame_scene.h"
+#include "core/math/transform.h"
+
+namespace f2 {
+
+/// World transform of every part of a model placed at `worldFromRoot`, with the
+/// parts' animation evaluated at `t` (indexed by PartId).
+std::array<Transform, kPartCount> modelPartFrames(const SceneObject& object, const Transform& worldFromRoot,
+                                                  double t);
+
+/// World transform of an object's root (a primitive's own frame) at time t.
+Transform objectFrame(const SceneObject& object, double t);
+
+/// Fills `frame` (primitives, surfaces, lights) for time `t` in frames. Does
+/// not build the BVH: call frame.bvh.build(frame.primitives) after.
+void evaluateFrame(const SceneDesc& scene, double t, FrameScene& frame);
+
+/// Time in frames for playback time `seconds` at the scene's fps.
+inline double frameAtSeconds(const SceneDesc& scene, double seconds) { return seconds * scene.fps; }
+
+}  // namespace f2

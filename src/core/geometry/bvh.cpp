@@ -1,0 +1,214 @@
+#include "core/geometry/bvh.h"
+
+#include <algorithm>
+
+namespace f2 {
+
+namespace {
+constexpr int kBinCount = 16;
+constexpr std::uint32_t kMaxLeafSize = 4;
+constexpr float kTraversalCost = 1.0f;  // relative to one primitive test
+// Past this depth SAH gives way to median splits, which halve the count, so a
+// hostile layout cannot make the tree deeper than the traversal stack.
+constexpr std::uint32_t kMaxSahDepth = 64;
+constexpr int kStackSize = 128;
+
+struct BuildTask {
+    std::uint32_t node, begin, end, depth;
+};
+
+/// Slab test of a ray against a box; returns the entry distance or +inf.
+inline float boxEntry(const Bounds& b, Vec3 origin, Vec3 invDir, float tMin, float tMax) {
+    float tx0 = (b.lo.x - origin.x) * invDir.x, tx1 = (b.hi.x - origin.x) * invDir.x;
+    float ty0 = (b.lo.y - origin.y) * invDir.y, ty1 = (b.hi.y - origin.y) * invDir.y;
+    float tz0 = (b.lo.z - origin.z) * invDir.z, tz1 = (b.hi.z - origin.z) * invDir.z;
+    // std::min/max with the NaN of 0*inf on the first argument ignore it.
+    float enter = std::max(std::max(std::min(tx0, tx1), std::min(ty0, ty1)), std::max(std::min(tz0, tz1), tMin));
+    float exit = std::min(std::min(std::max(tx0, tx1), std::max(ty0, ty1)), std::min(std::max(tz0, tz1), tMax));
+    return enter <= exit ? enter : kInfinity;
+}
+
+inline Vec3 inverseDirection(Vec3 d) { return {1.0f / d.x, 1.0f / d.y, 1.0f / d.z}; }
+}  // namespace
+
+void Bvh::build(std::span<const Primitive> primitives) {
+    const std::uint32_t n = std::uint32_t(primitives.size());
+    nodes_.clear();
+    primBounds_.resize(n);
+    centroids_.resize(n);
+    indices_.resize(n);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        primBounds_[i] = primitiveBounds(primitives[i]);
+        centroids_[i] = primBounds_[i].centroid();
+        indices_[i] = i;
+    }
+    ordered_.resize(n);
+    original_.resize(n);
+    if (n == 0) return;
+
+    nodes_.reserve(2 * n);
+    nodes_.push_back({});
+    BuildTask stack[kStackSize];
+    int top = 0;
+    stack[top++] = {0, 0, n, 0};
+    while (top > 0) {
+        BuildTask task = stack[--top];
+        Bounds bounds, centroidBounds;
+        for (std::uint32_t i = task.begin; i < task.end; ++i) {
+            bounds.grow(primBounds_[indices_[i]]);
+            centroidBounds.grow(centroids_[indices_[i]]);
+        }
+        Node& node = nodes_[task.node];
+        node.bounds = bounds;
+        std::uint32_t count = task.end - task.begin;
+
+        // Find the best binned SAH split over the three axes.
+        int bestAxis = -1, bestBin = 0;
+        float bestCost = kInfinity;
+        Vec3 extent = centroidBounds.hi - centroidBounds.lo;
+        if (count > kMaxLeafSize && task.depth < kMaxSahDepth) {
+            for (int axis = 0; axis < 3; ++axis) {
+                if (!(extent[axis] > 0)) continue;
+                Bounds binBounds[kBinCount];
+                std::uint32_t binCount[kBinCount] = {};
+                float scale = kBinCount / extent[axis];
+                for (std::uint32_t i = task.begin; i < task.end; ++i) {
+                    std::uint32_t p = indices_[i];
+                    int b = std::min(kBinCount - 1, int((centroids_[p][axis] - centroidBounds.lo[axis]) * scale));
+                    binBounds[b].grow(primBounds_[p]);
+                    ++binCount[b];
+                }
+                // Sweep from the right, then from the left.
+                float rightArea[kBinCount];
+                std::uint32_t rightCount[kBinCount];
+                Bounds acc;
+                std::uint32_t accCount = 0;
+                for (int b = kBinCount - 1; b > 0; --b) {
+                    acc.grow(binBounds[b]);
+                    accCount += binCount[b];
+                    rightArea[b] = accCount ? acc.halfArea() : 0;
+                    rightCount[b] = accCount;
+                }
+                acc = Bounds{};
+                accCount = 0;
+                for (int b = 0; b < kBinCount - 1; ++b) {
+                    acc.grow(binBounds[b]);
+                    accCount += binCount[b];
+                    if (accCount == 0 || rightCount[b + 1] == 0) continue;
+                    float cost = acc.halfArea() * accCount + rightArea[b + 1] * rightCount[b + 1];
+                    if (cost < bestCost) {
+                        bestCost = cost;
+                        bestAxis = axis;
+                        bestBin = b;
+                    }
+                }
+            }
+        }
+        float leafCost = bounds.halfArea() * count;
+        bool makeLeaf = bestAxis < 0 || (count <= 16 && kTraversalCost * bounds.halfArea() + bestCost >= leafCost);
+        if (count > kMaxLeafSize && (bestAxis < 0 && count > 16)) makeLeaf = false;  // never a huge leaf
+        if (makeLeaf) {
+            node.first = task.begin;
+            node.count = count;
+            for (std::uint32_t i = task.begin; i < task.end; ++i) {
+                ordered_[i] = primitives[indices_[i]];
+                original_[i] = indices_[i];
+            }
+            continue;
+        }
+
+        std::uint32_t* first = indices_.data() + task.begin;
+        std::uint32_t* last = indices_.data() + task.end;
+        std::uint32_t* middle;
+        if (bestAxis >= 0) {
+            float scale = kBinCount / extent[bestAxis];
+            float lo = centroidBounds.lo[bestAxis];
+            middle = std::partition(first, last, [&](std::uint32_t p) {
+                return std::min(kBinCount - 1, int((centroids_[p][bestAxis] - lo) * scale)) <= bestBin;
+            });
+        } else {
+            // No SAH split (too deep, or all centroids equal): object median on the widest axis.
+            int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+            middle = first + count / 2;
+            std::nth_element(first, middle, last, [&](std::uint32_t a, std::uint32_t b) {
+                return centroids_[a][axis] < centroids_[b][axis];
+            });
+        }
+        std::uint32_t mid = std::uint32_t(middle - indices_.data());
+        std::uint32_t left = std::uint32_t(nodes_.size());
+        node.first = left;
+        node.count = 0;
+        nodes_.push_back({});
+        nodes_.push_back({});
+        stack[top++] = {left + 1, mid, task.end, task.depth + 1};
+        stack[top++] = {left, task.begin, mid, task.depth + 1};
+    }
+}
+
+bool Bvh::intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit) const {
+    if (nodes_.empty()) return false;
+    Vec3 invDir = inverseDirection(ray.direction);
+    std::uint32_t stack[kStackSize];
+    int top = 0;
+    std::uint32_t current = 0;
+    bool found = false;
+    if (boxEntry(nodes_[0].bounds, ray.origin, invDir, tMin, tMax) == kInfinity) return false;
+    for (;;) {
+        const Node& node = nodes_[current];
+        if (node.count > 0) {
+            for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
+                float t;
+                Face face;
+                if (intersectPrimitive(ordered_[i], ray, tMin, tMax, t, face)) {
+                    tMax = t;
+                    hit = {t, original_[i], face};
+                    found = true;
+                }
+            }
+        } else {
+            std::uint32_t a = node.first, b = node.first + 1;
+            float ta = boxEntry(nodes_[a].bounds, ray.origin, invDir, tMin, tMax);
+            float tb = boxEntry(nodes_[b].bounds, ray.origin, invDir, tMin, tMax);
+            if (ta > tb) {
+                std::swap(ta, tb);
+                std::swap(a, b);
+            }
+            if (ta != kInfinity) {
+                if (tb != kInfinity) stack[top++] = b;
+                current = a;
+                continue;
+            }
+        }
+        // Pop the next node that can still hold something nearer.
+        for (;;) {
+            if (top == 0) return found;
+            current = stack[--top];
+            if (boxEntry(nodes_[current].bounds, ray.origin, invDir, tMin, tMax) != kInfinity) break;
+        }
+    }
+}
+
+bool Bvh::occluded(const Ray& ray, float tMin, float tMax) const {
+    if (nodes_.empty()) return false;
+    Vec3 invDir = inverseDirection(ray.direction);
+    std::uint32_t stack[kStackSize];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const Node& node = nodes_[stack[--top]];
+        if (boxEntry(node.bounds, ray.origin, invDir, tMin, tMax) == kInfinity) continue;
+        if (node.count > 0) {
+            for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
+                float t;
+                Face face;
+                if (intersectPrimitive(ordered_[i], ray, tMin, tMax, t, face)) return true;
+            }
+        } else {
+            stack[top++] = node.first + 1;
+            stack[top++] = node.first;
+        }
+    }
+    return false;
+}
+
+}  // namespace f2

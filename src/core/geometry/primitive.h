@@ -1,0 +1,49 @@
+#pragma once
+/// World-space primitives of one evaluated frame: a sphere, closed cylinder or
+/// box placed by a rigid transform, and its bounds.
+#include <cstdint>
+#include <limits>
+
+#include "core/math/transform.h"
+#include "core/scene/models.h"
+
+namespace f2 {
+
+/// A ray with a unit direction; t counts distance along it.
+struct Ray {
+    Vec3 origin;
+    Vec3 direction;
+};
+
+inline constexpr float kInfinity = std::numeric_limits<float>::infinity();
+
+/// Intersection data of a primitive. `axes` are the rows of localFromWorld:
+/// local coordinate i of a world point p is dot(axes[i], p - centre).
+struct Primitive {
+    Vec3 centre;
+    Vec3 axes[3];
+    /// Sphere: (r, -, -); cylinder: (r, h/2, -); box: half sides.
+    Vec3 half;
+    ShapeKind kind;
+};
+
+/// Axis-aligned world bounds.
+struct Bounds {
+    Vec3 lo{kInfinity, kInfinity, kInfinity};
+    Vec3 hi{-kInfinity, -kInfinity, -kInfinity};
+
+    void grow(const Bounds& b) { lo = vmin(lo, b.lo); hi = vmax(hi, b.hi); }
+    void grow(Vec3 p) { lo = vmin(lo, p); hi = vmax(hi, p); }
+    Vec3 centroid() const { return (lo + hi) * 0.5f; }
+    float halfArea() const {
+        Vec3 e = hi - lo;
+        return e.x * e.y + e.y * e.z + e.z * e.x;
+    }
+};
+
+Bounds primitiveBounds(const Primitive& prim);
+
+/// Builds a primitive from its kind, SceneObject-style size and world transform.
+Primitive makePrimitive(ShapeKind kind, Vec3 size, const Transform& worldFromLocal);
+
+}  // namespace f2

@@ -1,0 +1,50 @@
+#pragma once
+/// Rotation matrices (SPEC 1) and rigid transforms `worldFromLocal`.
+#include "core/math/vec3.h"
+
+namespace f2 {
+
+/// Row-major 3x3 matrix; columns are the images of the local axes.
+struct Mat3 {
+    Vec3 row[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+
+    constexpr Vec3 operator*(Vec3 v) const { return {dot(row[0], v), dot(row[1], v), dot(row[2], v)}; }
+    constexpr Vec3 column(int c) const { return {row[0][c], row[1][c], row[2][c]}; }
+    constexpr Mat3 transposed() const { return {{column(0), column(1), column(2)}}; }
+    constexpr Mat3 operator*(const Mat3& b) const {
+        Mat3 r;
+        for (int i = 0; i < 3; ++i)
+            r.row[i] = {dot(row[i], b.column(0)), dot(row[i], b.column(1)), dot(row[i], b.column(2))};
+        return r;
+    }
+};
+
+inline constexpr double kPi = 3.14159265358979323846;
+
+/// R = Rz(rz) * Ry(ry) * Rx(rx), angles in degrees (SPEC 1, POV-Ray's `rotate`).
+/// Computed in double so that 90-degree turns come out exact enough for tests.
+Mat3 rotationFromEulerDegrees(double rx, double ry, double rz);
+inline Mat3 rotationFromEulerDegrees(Vec3 r) { return rotationFromEulerDegrees(r.x, r.y, r.z); }
+
+/// A rotation followed by a translation: world = linear * local + translation.
+struct Transform {
+    Mat3 linear;
+    Vec3 translation;
+
+    constexpr Vec3 applyToPoint(Vec3 p) const { return linear * p + translation; }
+    constexpr Vec3 applyToVector(Vec3 v) const { return linear * v; }
+    /// `this * inner`: first inner, then this.
+    constexpr Transform operator*(const Transform& inner) const {
+        return {linear * inner.linear, linear * inner.translation + translation};
+    }
+    /// Inverse of a rigid transform (the linear part is a rotation).
+    constexpr Transform inverseRigid() const {
+        Mat3 t = linear.transposed();
+        return {t, -(t * translation)};
+    }
+    static Transform fromPose(Vec3 position, Vec3 rotationDegrees) {
+        return {rotationFromEulerDegrees(rotationDegrees), position};
+    }
+};
+
+}  // namespace f2

@@ -1,0 +1,853 @@
+#include "core/parse/parser.h"
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <functional>
+#include <initializer_list>
+#include <numeric>
+#include <unordered_map>
+
+#include "core/parse/lexer.h"
+#include "core/parse/number.h"
+
+namespace f2 {
+
+namespace {
+
+// Command table
+enum class Command {
+    Camera,
+    AmbLight,
+    DirLight,
+    Background,
+    Material,
+    Sphere,
+    Cylinder,
+    Box,
+    Paint,
+    Robot,
+    Human,
+    Anim,
+    Key,
+    Interp,
+    Fps,
+};
+
+struct CommandName {
+    std::string_view name;
+    Command command;
+};
+
+constexpr std::array<CommandName, 15> kCommands = {{
+    {"/camera", Command::Camera},
+    {"/amb_light", Command::AmbLight},
+    {"/dir_light", Command::DirLight},
+    {"/background", Command::Background},
+    {"/material", Command::Material},
+    {"/sphere", Command::Sphere},
+    {"/cylinder", Command::Cylinder},
+    {"/box", Command::Box},
+    {"/paint", Command::Paint},
+    {"/robot", Command::Robot},
+    {"/human", Command::Human},
+    {"/anim", Command::Anim},
+    {"/key", Command::Key},
+    {"/interp", Command::Interp},
+    {"/fps", Command::Fps},
+}};
+
+constexpr std::array<std::string_view, 5> kObjectKindNames = {"sphere", "cylinder", "box", "robot", "human"};
+
+std::string_view kindName(ObjectKind kind) { return kObjectKindNames[static_cast<std::size_t>(kind)]; }
+
+/// Only short tokens get a "did you mean": the distance is O(n·m).
+constexpr std::size_t kMaxSuggestLength = 32;
+
+struct Pos {
+    int line = 0;
+    int column = 0;
+};
+
+std::string posText(Pos p) { return std::to_string(p.line) + ":" + std::to_string(p.column); }
+
+bool isNameStart(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; }
+bool isNameChar(char c) { return isNameStart(c) || (c >= '0' && c <= '9'); }
+
+bool isValidName(std::string_view s) {
+    if (s.empty() || !isNameStart(s.front())) return false;
+    return std::all_of(s.begin() + 1, s.end(), isNameChar);
+}
+
+/// PartId index of a part name, or -1.
+int partIndex(std::string_view s) {
+    for (int i = 0; i < kPartCount; ++i) {
+        if (s == kPartNames[static_cast<std::size_t>(i)]) return i;
+    }
+    return -1;
+}
+
+std::size_t editDistance(std::string_view a, std::string_view b) {
+    std::array<std::size_t, kMaxSuggestLength + 2> prev{}, cur{};
+    for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        cur[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t subst = prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
+            cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, subst});
+        }
+        prev = cur;
+    }
+    return prev[b.size()];
+}
+
+/// The command closest to a mistyped one, if it is close enough to be a typo.
+std::string_view suggestCommand(std::string_view word) {
+    if (word.size() > kMaxSuggestLength) return {};
+    // A cut-short name ("/amb light" for "/amb_light") is a likely mistake too.
+    if (word.size() >= 3) {
+        for (const CommandName& c : kCommands) {
+            if (c.name.starts_with(word)) return c.name;
+        }
+    }
+    std::string_view best;
+    std::size_t bestDistance = 3;  // at most two edits
+    for (const CommandName& c : kCommands) {
+        const std::size_t d = editDistance(word, c.name);
+        if (d < bestDistance) {
+            bestDistance = d;
+            best = c.name;
+        }
+    }
+    return best;
+}
+
+struct StringHash {
+    using is_transparent = void;
+    std::size_t operator()(std::string_view s) const noexcept { return std::hash<std::string_view>{}(s); }
+};
+
+/// A command's target: an object, or one part of a model.
+struct Target {
+    std::size_t object = 0;
+    int part = -1;  ///< PartId index, or -1 for the object itself
+};
+
+/// Parse-time bookkeeping of one track: where each key came from, for the
+/// duplicate-key warning. Parallel to Track::keys.
+struct TrackBook {
+    std::size_t object = 0;
+    int part = -1;
+    std::vector<Pos> origins;
+    bool sorted = true;  ///< keys arrived in increasing frame order so far
+};
+
+/// Parse-time bookkeeping of one object.
+struct ObjectBook {
+    Pos defined;
+    /// Index into Parser::trackBooks_ for the object track (0) and each part (1 + PartId); -1 if none.
+    std::array<int, kPartCount + 1> tracks{-1, -1, -1, -1, -1};
+};
+
+// Parser
+class Parser {
+   public:
+    Parser(std::string_view fileName, const ParseLimits& limits) : fileName_(fileName), limits_(limits) {}
+
+    ParseResult run(std::string_view text) {
+        if (text.size() > limits_.maxSceneBytes) {
+            error({1, 1}, "the scene is " + std::to_string(text.size()) + " bytes, more than the limit of " +
+                              std::to_string(limits_.maxSceneBytes) + " bytes");
+            return finish();
+        }
+        LineReader reader(text);
+        SourceLine line;
+        while (!stopped_ && reader.next(line)) parseLine(line);
+        sortUnsortedTracks();
+        return finish();
+    }
+
+   private:
+    // Diagnostics
+    void report(Severity severity, Pos pos, std::string message) {
+        if (stopped_) return;
+        if (severity == Severity::Warning) {
+            // Warnings do not stop parsing, so a hostile file could make millions.
+            if (warnings_ >= limits_.maxWarnings) {
+                if (droppedWarnings_++ == 0) firstDroppedWarning_ = pos;
+                return;
+            }
+            ++warnings_;
+        } else {
+            ++errors_;
+        }
+        diagnostics_.push_back(
+            {{std::string(fileName_), pos.line, pos.column}, severity, std::move(message)});
+        if (severity == Severity::Error && errors_ >= limits_.maxErrors) {
+            diagnostics_.push_back(
+                {{std::string(fileName_), pos.line, pos.column},
+                 Severity::Error,
+                 "too many errors (" + std::to_string(errors_) + "); parsing stopped here"});
+            stopped_ = true;
+        }
+    }
+    void error(Pos pos, std::string message) { report(Severity::Error, pos, std::move(message)); }
+    void warning(Pos pos, std::string message) { report(Severity::Warning, pos, std::move(message)); }
+
+    ParseResult finish() {
+        if (droppedWarnings_ > 0) {
+            diagnostics_.push_back(
+                {{std::string(fileName_), firstDroppedWarning_.line, firstDroppedWarning_.column},
+                 Severity::Warning,
+                 std::to_string(droppedWarnings_) + " more warnings from here on are not shown"});
+        }
+        // Duplicate-key warnings of out-of-order tracks are found at the end.
+        std::stable_sort(
+            diagnostics_.begin(), diagnostics_.end(), [](const Diagnostic& a, const Diagnostic& b) {
+                return a.loc.line != b.loc.line ? a.loc.line < b.loc.line : a.loc.column < b.loc.column;
+            });
+        ParseResult result;
+        result.diagnostics = std::move(diagnostics_);
+        if (errors_ == 0) result.scene = std::move(scene_);
+        return result;
+    }
+
+    // Tokens of the current line
+    int argCount() const { return tokens_.count - 1; }
+    std::string_view commandText() const { return tokens_.tokens[0].text; }
+    Pos commandPos() const { return {line_, tokens_.tokens[0].column}; }
+    std::string_view arg(int i) const { return tokens_.tokens[static_cast<std::size_t>(i + 1)].text; }
+    Pos argPos(int i) const { return {line_, tokens_.tokens[static_cast<std::size_t>(i + 1)].column}; }
+
+    void parseLine(const SourceLine& line) {
+        line_ = line.number;
+        if (line.text.size() > limits_.maxLineBytes) {
+            error({line_, 1}, "line is " + std::to_string(line.text.size()) +
+                                  " bytes long, more than the limit of " +
+                                  std::to_string(limits_.maxLineBytes) + " bytes");
+            return;
+        }
+        tokenizeLine(line.text, tokens_);
+        if (tokens_.count == 0) return;  // blank or comment
+
+        const std::string_view head = commandText();
+        if (!head.starts_with('/')) {
+            std::string message = "expected a command starting with '/', got " + quoteToken(head);
+            if (head.size() <= kMaxSuggestLength) {
+                const std::string slashed = "/" + std::string(head);
+                for (const CommandName& c : kCommands) {
+                    if (c.name == slashed) message += " (did you mean '" + slashed + "'?)";
+                }
+            }
+            error(commandPos(), std::move(message));
+            return;
+        }
+        for (const CommandName& c : kCommands) {
+            if (c.name == head) {
+                dispatch(c.command);
+                return;
+            }
+        }
+        std::string message = "unknown command " + quoteToken(head);
+        if (const std::string_view guess = suggestCommand(head); !guess.empty()) {
+            message += " (did you mean '" + std::string(guess) + "'?)";
+        }
+        error(commandPos(), std::move(message));
+    }
+
+    void dispatch(Command command) {
+        switch (command) {
+            case Command::Camera:
+                return parseCamera();
+            case Command::AmbLight:
+                return parseAmbLight();
+            case Command::DirLight:
+                return parseDirLight();
+            case Command::Background:
+                return parseBackground();
+            case Command::Material:
+                return parseMaterial();
+            case Command::Sphere:
+                return parseObject(ObjectKind::Sphere);
+            case Command::Cylinder:
+                return parseObject(ObjectKind::Cylinder);
+            case Command::Box:
+                return parseObject(ObjectKind::Box);
+            case Command::Paint:
+                return parsePaint();
+            case Command::Robot:
+                return parseObject(ObjectKind::Robot);
+            case Command::Human:
+                return parseObject(ObjectKind::Human);
+            case Command::Anim:
+                return parseAnim();
+            case Command::Key:
+                return parseKey();
+            case Command::Interp:
+                return parseInterp();
+            case Command::Fps:
+                return parseFps();
+        }
+    }
+
+    /// Checks the argument count against the allowed ones ("3, 6 or 9").
+    bool expectArgs(std::initializer_list<int> allowed) {
+        const int n = argCount();
+        if (std::find(allowed.begin(), allowed.end(), n) != allowed.end()) return true;
+        std::string list;
+        std::size_t i = 0;
+        for (int a : allowed) {
+            if (i > 0) list += i + 1 == allowed.size() ? " or " : ", ";
+            list += std::to_string(a);
+            ++i;
+        }
+        const bool plural = allowed.size() > 1 || *allowed.begin() != 1;
+        error(commandPos(), quoteToken(commandText()) + " takes " + list +
+                                (plural ? " arguments" : " argument") + ", got " + std::to_string(n));
+        return false;
+    }
+
+    // Argument readers: on a problem they report it, clear `ok` and return a harmless value.
+    double number(int i, bool& ok) {
+        const std::string_view text = arg(i);
+        const ParsedNumber n = parseNumber(text);
+        std::string message;
+        switch (n.status) {
+            case NumberStatus::Ok:
+                return n.value;
+            case NumberStatus::NotANumber:
+                message = "expected a number, got " + quoteToken(text);
+                if (text.find(',') != std::string_view::npos) message += " (the decimal separator is '.')";
+                break;
+            case NumberStatus::Hexadecimal:
+                message =
+                    "expected a decimal number, got " + quoteToken(text) + " (hexadecimal is not accepted)";
+                break;
+            case NumberStatus::NotFinite:
+                message = "expected a finite number, got " + quoteToken(text);
+                break;
+            case NumberStatus::OutOfRange: {
+                const bool tiny =
+                    text.find("e-") != std::string_view::npos || text.find("E-") != std::string_view::npos;
+                message = "number " + quoteToken(text) + " is out of range" +
+                          (tiny ? " (too close to zero; write 0)" : " (the largest magnitude is 3.4e38)");
+                break;
+            }
+        }
+        error(argPos(i), std::move(message));
+        ok = false;
+        return 0;
+    }
+
+    float real(int i, bool& ok) { return static_cast<float>(number(i, ok)); }
+
+    float positive(int i, std::string_view what, bool& ok) {
+        bool good = true;
+        const float v = real(i, good);
+        // Checked after rounding to float: 1e-50 is > 0 as a double but 0 as a float.
+        if (good && !(v > 0)) {
+            error(argPos(i), std::string(what) + " must be > 0, got " + printable(arg(i)));
+            good = false;
+        }
+        ok = ok && good;
+        return good ? v : 1.0f;
+    }
+
+    float nonNegative(int i, std::string_view what, bool& ok) {
+        bool good = true;
+        const float v = real(i, good);
+        if (good && v < 0) {
+            error(argPos(i), std::string(what) + " must be >= 0, got " + printable(arg(i)));
+            good = false;
+        }
+        ok = ok && good;
+        return good ? v : 0.0f;
+    }
+
+    /// A whole number in [lo, hi]; "1e3" and "-0" count as whole.
+    int whole(int i, std::string_view what, int lo, int hi, bool& ok) {
+        bool good = true;
+        const double v = number(i, good);
+        if (good && (v != std::floor(v) || v < lo || v > hi)) {
+            error(argPos(i), std::string(what) + " must be a whole number from " + std::to_string(lo) +
+                                 " to " + std::to_string(hi) + ", got " + printable(arg(i)));
+            good = false;
+        }
+        ok = ok && good;
+        return good ? static_cast<int>(v) : lo;
+    }
+
+    Vec3 vec3(int first, bool& ok) { return {real(first, ok), real(first + 1, ok), real(first + 2, ok)}; }
+
+    Pose pose(int first, bool withRotation, bool& ok) {
+        Pose p;
+        p.position = vec3(first, ok);
+        if (withRotation) p.rotation = vec3(first + 3, ok);
+        return p;
+    }
+
+    Color8 color(int first, bool& ok) {
+        static constexpr std::array<std::string_view, 3> kWhat = {"red", "green", "blue"};
+        std::array<std::uint8_t, 3> c{};
+        for (int k = 0; k < 3; ++k) {
+            c[static_cast<std::size_t>(k)] =
+                static_cast<std::uint8_t>(whole(first + k, kWhat[static_cast<std::size_t>(k)], 0, 255, ok));
+        }
+        return {c[0], c[1], c[2]};
+    }
+
+    /// A name for a new object: valid and not yet used.
+    bool newName(int i) {
+        const std::string_view name = arg(i);
+        if (!isValidName(name)) {
+            error(argPos(i), "invalid name " + quoteToken(name) +
+                                 " (expected a letter or '_', then letters, digits or '_')");
+            return false;
+        }
+        if (auto it = names_.find(name); it != names_.end()) {
+            error(argPos(i), "duplicate name " + quoteToken(name) + " (first defined at " +
+                                 posText(books_[it->second].defined) + ")");
+            return false;
+        }
+        return true;
+    }
+
+    /// Looks up an existing object by name; `token` is the whole argument, for the message.
+    std::optional<std::size_t> existing(std::string_view name, std::string_view token, Pos pos) {
+        if (!isValidName(name)) {
+            error(pos, "invalid target " + quoteToken(token) + " (expected a name or name.part)");
+            return std::nullopt;
+        }
+        auto it = names_.find(name);
+        if (it == names_.end()) {
+            error(pos, "unknown name " + quoteToken(name));
+            return std::nullopt;
+        }
+        return it->second;
+    }
+
+    /// Checks that `part` is a part name and the object has parts.
+    std::optional<int> partOf(std::size_t object, std::string_view part, Pos pos) {
+        const int index = partIndex(part);
+        if (index < 0) {
+            error(pos, "unknown part " + quoteToken(part) + " (expected body, head, lhand or rhand)");
+            return std::nullopt;
+        }
+        const SceneObject& o = scene_.objects[object];
+        if (!isModel(o.kind)) {
+            error(pos, quoteToken(commandText()) + " on a part of a primitive: " + quoteToken(o.name) +
+                           " is a " + std::string(kindName(o.kind)) + "; only robots and humans have parts");
+            return std::nullopt;
+        }
+        return index;
+    }
+
+    /// Resolves `name` or `name.part` in argument i.
+    std::optional<Target> target(int i) {
+        const std::string_view text = arg(i);
+        const Pos pos = argPos(i);
+        const std::size_t dot = text.find('.');
+        const std::optional<std::size_t> object = existing(text.substr(0, dot), text, pos);
+        if (!object) return std::nullopt;
+        if (dot == std::string_view::npos) return Target{*object, -1};
+        // Point at the part itself, just after the dot.
+        const std::optional<int> part =
+            partOf(*object, text.substr(dot + 1), {pos.line, pos.column + static_cast<int>(dot) + 1});
+        if (!part) return std::nullopt;
+        return Target{*object, *part};
+    }
+
+    std::string targetName(Target t) const {
+        std::string s = scene_.objects[t.object].name;
+        if (t.part >= 0) {
+            s += '.';
+            s += kPartNames[static_cast<std::size_t>(t.part)];
+        }
+        return s;
+    }
+
+    Track& trackOf(Target t) {
+        SceneObject& o = scene_.objects[t.object];
+        return t.part < 0 ? o.track : o.partTracks[static_cast<std::size_t>(t.part)];
+    }
+
+    // Commands
+    /// Reports a repeated single-use command; remembers the first one.
+    bool firstOnly(std::optional<Pos>& seen) {
+        if (seen) {
+            error(commandPos(),
+                  "second " + quoteToken(commandText()) + " (the first is at " + posText(*seen) + ")");
+            return false;
+        }
+        seen = commandPos();
+        return true;
+    }
+
+    void parseCamera() {
+        if (!firstOnly(cameraSeen_) || !expectArgs({3, 6, 9})) return;
+        bool ok = true;
+        CameraDesc camera;
+        camera.width = whole(0, "image width", 1, limits_.maxImageSide, ok);
+        camera.height = whole(1, "image height", 1, limits_.maxImageSide, ok);
+        {
+            bool good = true;
+            camera.distance = number(2, good);
+            if (good && !(camera.distance > 0)) {
+                error(argPos(2), "screen distance must be > 0, got " + printable(arg(2)));
+                good = false;
+            }
+            ok = ok && good;
+        }
+        if (argCount() >= 6) camera.pose = pose(3, argCount() == 9, ok);
+        if (!ok) return;
+        const long long pixels = static_cast<long long>(camera.width) * camera.height;
+        if (pixels > limits_.maxImagePixels) {
+            error(argPos(0), "image of " + std::to_string(camera.width) + "x" +
+                                 std::to_string(camera.height) + " = " + std::to_string(pixels) +
+                                 " pixels is larger than the limit of " +
+                                 std::to_string(limits_.maxImagePixels) + " pixels");
+            return;
+        }
+        scene_.camera = camera;
+    }
+
+    void parseAmbLight() {
+        if (!expectArgs({1})) return;
+        bool ok = true;
+        const float i = nonNegative(0, "ambient intensity", ok);
+        if (!ok) return;
+        const float sum = scene_.ambient + i;
+        if (!std::isfinite(sum)) {
+            error(argPos(0), "total ambient intensity is out of range");
+            return;
+        }
+        scene_.ambient = sum;
+    }
+
+    void parseDirLight() {
+        if (!expectArgs({4})) return;
+        bool ok = true;
+        DirectionalLight light;
+        light.intensity = nonNegative(0, "light intensity", ok);
+        light.direction = vec3(1, ok);
+        if (!ok) return;
+        const Vec3 d = light.direction;
+        if (d.x == 0 && d.y == 0 && d.z == 0) {
+            error(argPos(1), "light direction must not be 0 0 0");
+            return;
+        }
+        // The renderer normalises in float: the squared length must neither vanish nor overflow.
+        const float lengthSquared = dot(d, d);
+        if (!(lengthSquared > 0) || !std::isfinite(lengthSquared)) {
+            error(argPos(1),
+                  "light direction cannot be normalised (its length is too close to 0 or too large)");
+            return;
+        }
+        scene_.lights.push_back(light);
+    }
+
+    void parseBackground() {
+        if (!firstOnly(backgroundSeen_) || !expectArgs({3})) return;
+        bool ok = true;
+        const Color8 c = color(0, ok);
+        if (ok) scene_.background = c;
+    }
+
+    void parseFps() {
+        if (!firstOnly(fpsSeen_) || !expectArgs({1})) return;
+        bool ok = true;
+        const int fps = whole(0, "fps", 1, limits_.maxFps, ok);
+        if (ok) scene_.fps = fps;
+    }
+
+    void parseObject(ObjectKind kind) {
+        static constexpr std::array<std::string_view, 3> kBoxWhat = {"side sx", "side sy", "side sz"};
+        static constexpr std::array<std::string_view, 2> kCylinderWhat = {"radius", "height"};
+        int sizeArgs = 0;
+        if (kind == ObjectKind::Sphere) sizeArgs = 1;
+        if (kind == ObjectKind::Cylinder) sizeArgs = 2;
+        if (kind == ObjectKind::Box) sizeArgs = 3;
+        const int withoutRotation = 1 + sizeArgs + 3;
+        if (!expectArgs({withoutRotation, withoutRotation + 3})) return;
+        if (scene_.objects.size() >= limits_.maxObjects) {
+            error(commandPos(), "too many objects: at most " + std::to_string(limits_.maxObjects) +
+                                    " allowed (a robot or human counts as one)");
+            return;
+        }
+
+        bool ok = true;
+        SceneObject object;
+        object.kind = kind;
+        for (int k = 0; k < sizeArgs; ++k) {
+            const std::string_view what = kind == ObjectKind::Box
+                                              ? kBoxWhat[static_cast<std::size_t>(k)]
+                                              : kCylinderWhat[static_cast<std::size_t>(k)];
+            object.size[k] = positive(1 + k, what, ok);
+        }
+        object.rest = pose(1 + sizeArgs, argCount() == withoutRotation + 3, ok);
+        // A valid new name is registered even if other arguments are wrong, so
+        // later lines that use it do not add "unknown name" errors.
+        if (!newName(0)) return;
+        object.name = std::string(arg(0));
+        names_.emplace(object.name, scene_.objects.size());
+        books_.push_back({commandPos(), {-1, -1, -1, -1, -1}});
+        scene_.objects.push_back(std::move(object));
+    }
+
+    void parsePaint() {
+        if (!expectArgs({4})) return;
+        bool ok = true;
+        const std::optional<Target> t = target(0);
+        const Color8 c = color(1, ok);
+        if (!t || !ok) return;
+        SceneObject& o = scene_.objects[t->object];
+        if (t->part >= 0) {
+            o.appearance[static_cast<std::size_t>(t->part)].color = c;
+        } else if (isModel(o.kind)) {
+            for (Appearance& a : o.appearance) a.color = c;
+        } else {
+            o.appearance[0].color = c;
+        }
+    }
+
+    void parseMaterial() {
+        if (!expectArgs({5})) return;
+        bool ok = true;
+        const std::optional<Target> t = target(0);
+        Material m;
+        m.ka = nonNegative(1, "ka", ok);
+        m.kd = nonNegative(2, "kd", ok);
+        m.ks = nonNegative(3, "ks", ok);
+        m.n = positive(4, "n", ok);
+        if (!t || !ok) return;
+        SceneObject& o = scene_.objects[t->object];
+        if (t->part >= 0) {
+            o.appearance[static_cast<std::size_t>(t->part)].material = m;
+        } else if (isModel(o.kind)) {
+            for (Appearance& a : o.appearance) a.material = m;  // the eyes use the head's
+        } else {
+            o.appearance[0].material = m;
+        }
+    }
+
+    void parseAnim() {
+        if (!expectArgs({1, 2})) return;
+        // Only validates: /key needs no /anim (SPEC 6).
+        if (argCount() == 1) {
+            target(0);
+            return;
+        }
+        if (arg(0).find('.') != std::string_view::npos) {
+            error(argPos(0), "'/anim' with two arguments takes a name and a part, got " + quoteToken(arg(0)));
+            return;
+        }
+        if (const std::optional<std::size_t> object = existing(arg(0), arg(0), argPos(0))) {
+            partOf(*object, arg(1), argPos(1));
+        }
+    }
+
+    void parseInterp() {
+        if (!expectArgs({2})) return;
+        const std::optional<Target> t = target(0);
+        Interpolation mode = Interpolation::Linear;
+        const std::string_view word = arg(1);
+        if (word == "linear") {
+            mode = Interpolation::Linear;
+        } else if (word == "ease") {
+            mode = Interpolation::Ease;
+        } else if (word == "spline") {
+            mode = Interpolation::Spline;
+        } else {
+            error(argPos(1),
+                  "unknown interpolation " + quoteToken(word) + " (expected linear, ease or spline)");
+            return;
+        }
+        if (t) trackOf(*t).interpolation = mode;  // the last /interp of a target wins
+    }
+
+    void parseKey() {
+        // Counted before anything else so that the limit holds for broken lines too.
+        if (++keyLines_ > limits_.maxKeyLines) {
+            error(commandPos(),
+                  "too many '/key' lines: at most " + std::to_string(limits_.maxKeyLines) + " allowed");
+            return;
+        }
+        const int n = argCount();
+        if (n < 2) {
+            error(commandPos(), "'/key' takes 2 or 8 arguments (a frame, a target and 0 or 6 numbers), got " +
+                                    std::to_string(n));
+            return;
+        }
+        if (n != 2 && n != 8) {
+            error(commandPos(), "'/key' takes 0 or 6 numbers after the target, got " + std::to_string(n - 2));
+            return;
+        }
+        bool ok = true;
+        const int frame = whole(0, "key frame", 0, limits_.maxKeyFrame, ok);
+        const std::optional<Target> t = target(1);
+        Pose p;
+        if (n == 8) p = pose(2, true, ok);
+        if (!t || !ok) return;
+        // Without numbers: an object's pose as created, a part's zero offset and rotation.
+        if (n == 2 && t->part < 0) p = scene_.objects[t->object].rest;
+        addKey(*t, frame, p, argPos(0));
+    }
+
+    void addKey(Target t, int frame, const Pose& pose, Pos origin) {
+        Track& track = trackOf(t);
+        int& bookIndex = books_[t.object].tracks[static_cast<std::size_t>(t.part + 1)];
+        if (bookIndex < 0) {
+            bookIndex = static_cast<int>(trackBooks_.size());
+            trackBooks_.push_back({t.object, t.part, {}, true});
+        }
+        TrackBook& book = trackBooks_[static_cast<std::size_t>(bookIndex)];
+        // Keys in increasing order (the usual case) stay sorted as they come; a
+        // track that goes back is sorted once at the end, so a reversed file of
+        // n keys costs O(n log n), not O(n²).
+        if (book.sorted && !track.keys.empty()) {
+            Key& last = track.keys.back();
+            if (frame == last.frame) {
+                warnReplaced(t, frame, origin, book.origins.back());
+                last.pose = pose;
+                book.origins.back() = origin;
+                return;
+            }
+            if (frame < last.frame) book.sorted = false;
+        }
+        track.keys.push_back({frame, pose});
+        book.origins.push_back(origin);
+    }
+
+    void warnReplaced(Target t, int frame, Pos now, Pos before) {
+        warning(now, "key frame " + std::to_string(frame) + " of " + quoteToken(targetName(t)) +
+                         " is given again; it replaces the key at " + posText(before));
+    }
+
+    void sortUnsortedTracks() {
+        for (TrackBook& book : trackBooks_) {
+            if (book.sorted) continue;
+            const Target t{book.object, book.part};
+            std::vector<Key>& keys = trackOf(t).keys;
+            std::vector<std::uint32_t> order(keys.size());
+            std::iota(order.begin(), order.end(), 0u);
+            // Stable: keys of one frame stay in file order, so the last one wins.
+            std::stable_sort(order.begin(), order.end(),
+                             [&](std::uint32_t a, std::uint32_t b) { return keys[a].frame < keys[b].frame; });
+            std::vector<Key> sorted;
+            sorted.reserve(keys.size());
+            Pos lastOrigin;
+            for (std::uint32_t k : order) {
+                if (!sorted.empty() && sorted.back().frame == keys[k].frame) {
+                    warnReplaced(t, keys[k].frame, book.origins[k], lastOrigin);
+                    sorted.back() = keys[k];
+                } else {
+                    sorted.push_back(keys[k]);
+                }
+                lastOrigin = book.origins[k];
+            }
+            keys = std::move(sorted);
+            book.origins = {};
+        }
+    }
+
+    std::string_view fileName_;
+    ParseLimits limits_;
+    SceneDesc scene_;
+    std::vector<Diagnostic> diagnostics_;
+    std::size_t errors_ = 0, warnings_ = 0, droppedWarnings_ = 0;
+    Pos firstDroppedWarning_;
+    bool stopped_ = false;
+
+    int line_ = 0;
+    LineTokens tokens_;
+
+    std::unordered_map<std::string, std::size_t, StringHash, std::equal_to<>> names_;
+    std::vector<ObjectBook> books_;  ///< parallel to scene_.objects
+    std::vector<TrackBook> trackBooks_;
+    std::optional<Pos> cameraSeen_, backgroundSeen_, fpsSeen_;
+    std::size_t keyLines_ = 0;
+};
+
+ParseResult readError(const std::string& displayName, std::string message) {
+    ParseResult result;
+    result.diagnostics.push_back({{displayName, 1, 1}, Severity::Error, std::move(message)});
+    return result;
+}
+
+/// Reads a whole stream, stopping one byte past the limit so that a huge or
+/// endless input is never held in memory.
+bool readStream(std::FILE* f, std::size_t limit, std::string& out, std::string& problem) {
+    std::array<char, 1 << 16> buffer;
+    for (;;) {
+        const std::size_t got = std::fread(buffer.data(), 1, buffer.size(), f);
+        if (got > 0) {
+            if (out.size() + got > limit) {
+                problem = "the input is larger than the limit of " + std::to_string(limit) + " bytes";
+                return false;
+            }
+            out.append(buffer.data(), got);
+        }
+        if (got < buffer.size()) {
+            if (std::ferror(f)) {
+                problem = std::strerror(errno);
+                return false;
+            }
+            return true;
+        }
+    }
+}
+
+}  // namespace
+
+ParseResult parseScene(std::string_view text, std::string_view fileName, const ParseLimits& limits) {
+    return Parser(fileName, limits).run(text);
+}
+
+ParseResult parseScene(std::string_view text, std::string_view fileName) {
+    return parseScene(text, fileName, ParseLimits{});
+}
+
+ParseResult parseSceneFile(const std::string& path, const ParseLimits& limits) {
+    std::string text, problem;
+    if (path == "-") {
+        const std::string name = "<stdin>";
+        errno = 0;
+        if (!readStream(stdin, limits.maxSceneBytes, text, problem)) {
+            return readError(name, "cannot read standard input: " + problem);
+        }
+        return parseScene(text, name, limits);
+    }
+
+    const std::string prefix = "cannot read " + quoteToken(path) + ": ";
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::file_status status = fs::status(path, ec);
+    if (status.type() == fs::file_type::not_found) return readError(path, prefix + std::strerror(ENOENT));
+    if (ec) return readError(path, prefix + ec.message());
+    if (status.type() == fs::file_type::directory) return readError(path, prefix + "it is a directory");
+    if (status.type() != fs::file_type::regular) return readError(path, prefix + "it is not a regular file");
+    const std::uintmax_t size = fs::file_size(path, ec);
+    if (!ec && size > limits.maxSceneBytes) {
+        return readError(path, prefix + "the file is " + std::to_string(size) +
+                                   " bytes, more than the limit of " + std::to_string(limits.maxSceneBytes) +
+                                   " bytes");
+    }
+
+    errno = 0;
+    std::FILE* f = std::fopen(path.c_str(), "rb");  // binary: CRLF is handled by the lexer
+    if (!f) return readError(path, prefix + std::strerror(errno != 0 ? errno : EIO));
+    text.reserve(static_cast<std::size_t>(ec ? 0 : size));
+    const bool read = readStream(f, limits.maxSceneBytes, text, problem);
+    std::fclose(f);
+    if (!read) return readError(path, prefix + problem);
+    return parseScene(text, path, limits);
+}
+
+ParseResult parseSceneFile(const std::string& path) { return parseSceneFile(path, ParseLimits{}); }
+
+}  // namespace f2

@@ -1,0 +1,53 @@
+#pragma once
+/// Renders frames of a scene: evaluate the animation at t, build the BVH,
+/// trace the image in tiles over a persistent thread pool.
+#include <atomic>
+
+#include "core/anim/frame_scene.h"
+#include "core/render/camera.h"
+#include "core/render/image.h"
+#include "core/render/thread_pool.h"
+
+namespace f2 {
+
+struct RenderOptions {
+    int antialias = 1;  ///< N: N x N stratified samples per pixel; 1 = pixel centre (SPEC 2)
+};
+
+/// Wall-clock split of one frame, in milliseconds.
+struct FrameTimings {
+    double evaluateMs = 0, buildMs = 0, traceMs = 0;
+    double totalMs() const { return evaluateMs + buildMs + traceMs; }
+};
+
+inline constexpr int kTileSize = 16;
+
+class Renderer {
+public:
+    /// `threads` = 0 uses every core.
+    explicit Renderer(int threads = 0);
+
+    /// Traces a prepared frame (its BVH built) into `out` at the camera's size.
+    /// Returns false if `cancel` was raised (the image is then incomplete).
+    bool trace(const FrameScene& frame, const Camera& camera, Image& out, const RenderOptions& options = {},
+               const std::atomic<bool>* cancel = nullptr);
+
+    /// The whole frame: evaluate `scene` at time `t` (frames), build, trace.
+    /// Reuses this renderer's frame buffers, so steady-state frames do not allocate.
+    FrameTimings render(const SceneDesc& scene, double t, const Camera& camera, Image& out,
+                        const RenderOptions& options = {}, const std::atomic<bool>* cancel = nullptr);
+
+    /// The frame evaluated by the last render().
+    const FrameScene& frame() const { return frame_; }
+    int threadCount() const { return pool_.threadCount(); }
+
+private:
+    ThreadPool pool_;
+    FrameScene frame_;
+};
+
+/// Colour (0..1) of one pixel's sample at image point (px, py): the reference
+/// path, used by tests and `--pixel` debugging.
+Vec3 renderSample(const FrameScene& frame, const Camera& camera, float px, float py);
+
+}  // namespace f2

@@ -1,0 +1,51 @@
+#pragma once
+/// A small persistent pool: workers live as long as the pool and run one
+/// parallel loop at a time; the calling thread takes part in it.
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace f2 {
+
+class ThreadPool {
+public:
+    /// `threads` counts the caller: 1 means no worker threads. 0 = all cores.
+    explicit ThreadPool(int threads = 0);
+    ~ThreadPool();
+    ThreadPool(const ThreadPool&) = delete;
+    ThreadPool& operator=(const ThreadPool&) = delete;
+
+    int threadCount() const { return int(workers_.size()) + 1; }
+
+    /// Calls body(i) for every i in [0, count), items handed out by an atomic
+    /// counter. Returns when all are done. Not reentrant.
+    template <class Body>
+    void parallelFor(std::uint32_t count, Body&& body) {
+        run(count, [](void* ctx, std::uint32_t i) { (*static_cast<Body*>(ctx))(i); }, &body);
+    }
+
+    static int hardwareThreads();
+
+private:
+    using ItemFn = void (*)(void*, std::uint32_t);
+    void run(std::uint32_t count, ItemFn fn, void* ctx);
+    void workerLoop();
+    void drain();
+
+    std::vector<std::thread> workers_;
+    std::mutex mutex_;
+    std::condition_variable wake_, done_;
+    std::uint64_t generation_ = 0;
+    int busy_ = 0;  ///< workers still inside the current loop
+    bool stop_ = false;
+    // Current loop.
+    ItemFn fn_ = nullptr;
+    void* ctx_ = nullptr;
+    std::uint32_t count_ = 0;
+    std::atomic<std::uint32_t> next_{0};
+};
+
+}  // namespace f2

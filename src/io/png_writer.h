@@ -1,0 +1,16 @@
+#pragma once
+/// PNG output through libpng, written atomically.
+#include <string>
+
+#include "core/render/image.h"
+
+namespace f2 {
+
+/// Writes `image` to `path` (temporary file, then rename). On failure returns
+/// false, sets `error` and leaves no file behind.
+bool writePng(const Image& image, const std::string& path, std::string& error);
+
+/// Reads an 8-bit RGB or RGBA PNG (tests, comparisons). False on failure.
+bool readPng(const std::string& path, Image& image, std::string& error);
+
+}  // namespace f2
