@@ -6,7 +6,8 @@ namespace f2 {
 
 namespace {
 constexpr int kBinCount = 16;
-constexpr std::uint32_t kMaxLeafSize = 4;
+constexpr std::uint32_t kMaxLeafSize = 4;    // below this, no split is searched
+constexpr std::uint32_t kMaxLeafCount = 16;  // Node::count is 16 bits; packets test leaves whole
 constexpr float kTraversalCost = 1.0f;  // relative to one primitive test
 // Past this depth SAH gives way to median splits, which halve the count, so a
 // hostile layout cannot make the tree deeper than the traversal stack.
@@ -105,11 +106,11 @@ void Bvh::build(std::span<const Primitive> primitives) {
             }
         }
         float leafCost = bounds.halfArea() * count;
-        bool makeLeaf = bestAxis < 0 || (count <= 16 && kTraversalCost * bounds.halfArea() + bestCost >= leafCost);
-        if (count > kMaxLeafSize && (bestAxis < 0 && count > 16)) makeLeaf = false;  // never a huge leaf
+        // A leaf when no split was searched or SAH prefers it; never more than kMaxLeafCount.
+        bool makeLeaf = count <= kMaxLeafCount && (bestAxis < 0 || kTraversalCost * bounds.halfArea() + bestCost >= leafCost);
         if (makeLeaf) {
             node.first = task.begin;
-            node.count = count;
+            node.count = std::uint16_t(count);
             for (std::uint32_t i = task.begin; i < task.end; ++i) {
                 ordered_[i] = primitives[indices_[i]];
                 original_[i] = indices_[i];
@@ -120,6 +121,7 @@ void Bvh::build(std::span<const Primitive> primitives) {
         std::uint32_t* first = indices_.data() + task.begin;
         std::uint32_t* last = indices_.data() + task.end;
         std::uint32_t* middle;
+        int splitAxis = bestAxis;
         if (bestAxis >= 0) {
             float scale = kBinCount / extent[bestAxis];
             float lo = centroidBounds.lo[bestAxis];
@@ -128,16 +130,17 @@ void Bvh::build(std::span<const Primitive> primitives) {
             });
         } else {
             // No SAH split (too deep, or all centroids equal): object median on the widest axis.
-            int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+            splitAxis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
             middle = first + count / 2;
             std::nth_element(first, middle, last, [&](std::uint32_t a, std::uint32_t b) {
-                return centroids_[a][axis] < centroids_[b][axis];
+                return centroids_[a][splitAxis] < centroids_[b][splitAxis];
             });
         }
         std::uint32_t mid = std::uint32_t(middle - indices_.data());
         std::uint32_t left = std::uint32_t(nodes_.size());
         node.first = left;
         node.count = 0;
+        node.axis = std::uint16_t(splitAxis);
         nodes_.push_back({});
         nodes_.push_back({});
         stack[top++] = {left + 1, mid, task.end, task.depth + 1};

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/geometry/intersect.h"
+#include "core/geometry/packet.h"
 
 namespace f2 {
 
@@ -22,7 +23,8 @@ public:
     struct Node {
         Bounds bounds;
         std::uint32_t first = 0;  ///< leaf: first ordered primitive; inner: left child
-        std::uint32_t count = 0;  ///< primitives in a leaf, 0 for an inner node
+        std::uint16_t count = 0;  ///< primitives in a leaf (at most 16), 0 for an inner node
+        std::uint16_t axis = 0;   ///< inner: split axis; the left child holds the lower side
     };
 
     void build(std::span<const Primitive> primitives);
@@ -32,7 +34,16 @@ public:
     /// Any hit within (tMin, tMax): shadow rays stop at the first occluder.
     bool occluded(const Ray& ray, float tMin, float tMax) const;
 
+    /// Packet versions: the `active` lanes traverse together; results as above per lane.
+    /// intersect() narrows hit.t (the lanes' tMax on entry) and sets primitive and face.
+    void intersect(const RayPacket& rays, Mask active, Float tMin, PacketHit& hit) const;
+    /// Lanes of `active` that hit something within (tMin, tMax).
+    Mask occluded(const RayPacket& rays, Mask active, Float tMin, Float tMax) const;
+
     std::span<const Node> nodes() const { return nodes_; }
+    /// Primitives in leaf order, and each one's index in the frame.
+    std::span<const Primitive> orderedPrimitives() const { return ordered_; }
+    std::span<const std::uint32_t> originalIndices() const { return original_; }
     Bounds bounds() const { return nodes_.empty() ? Bounds{} : nodes_[0].bounds; }
 
 private:

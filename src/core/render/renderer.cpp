@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "core/anim/frame_builder.h"
+#include "core/render/packet_shading.h"
 #include "core/render/shading.h"
 
 namespace f2 {
@@ -20,13 +21,83 @@ Vec3 renderSample(const FrameScene& frame, const Camera& camera, float px, float
     return traceRay(frame, camera.rayThrough(px, py));
 }
 
+namespace {
+// A packet covers a block of kBlockWidth x kBlockHeight pixels (4x4 with
+// AVX-512, 4x2 with AVX2, 1x1 without SIMD); tiles are whole blocks.
+constexpr int kBlockWidth = simd::kWidth >= 4 ? 4 : 1;
+constexpr int kBlockHeight = simd::kWidth / kBlockWidth;
+static_assert(kTileSize % kBlockWidth == 0 && kTileSize % kBlockHeight == 0);
+
+struct LaneOffsets {
+    Float x, y;
+    LaneOffsets() {
+        alignas(64) float xs[simd::kWidth], ys[simd::kWidth];
+        for (int i = 0; i < simd::kWidth; ++i) {
+            xs[i] = float(i % kBlockWidth);
+            ys[i] = float(i / kBlockWidth);
+        }
+        x = simd::load(xs);
+        y = simd::load(ys);
+    }
+};
+
+/// Primary rays through image points (px, py); the lane version of Camera::rayThrough.
+RayPacket primaryRays(const Camera& camera, Float px, Float py) {
+    Float x = px / Float(float(camera.width)) - Float(0.5f);
+    Float y = (Float(0.5f) - py / Float(float(camera.height))) * Float(float(camera.height)) /
+              Float(float(camera.width));
+    Vec3P v(x, y, Float(camera.distance));
+    v = v * (Float(1.0f) / simd::sqrt(dot(v, v)));
+    const Mat3& m = camera.worldFromCamera;
+    Vec3P d(dot(Vec3P(m.row[0]), v), dot(Vec3P(m.row[1]), v), dot(Vec3P(m.row[2]), v));
+    return RayPacket(Vec3P(camera.eye), d);
+}
+
+ColorP clamped(const ColorP& c) {
+    auto unit = [](Float v) { return simd::min(simd::max(v, Float(0.0f)), Float(1.0f)); };
+    return {unit(c.r), unit(c.g), unit(c.b)};
+}
+
+/// Renders one block of pixels with its top-left corner at (x0, y0).
+void renderBlock(const FrameScene& frame, const Camera& camera, int aa, const LaneOffsets& lanes, int x0, int y0,
+                 Image& out) {
+    Float px = Float(float(x0)) + lanes.x, py = Float(float(y0)) + lanes.y;
+    Mask inside = (px < Float(float(camera.width))) & (py < Float(float(camera.height)));
+    ColorP c;
+    if (aa == 1) {
+        c = tracePacket(frame, primaryRays(camera, px + Float(0.5f), py + Float(0.5f)), inside);
+    } else {
+        // Stratified: the centre of each of the N x N sub-cells, clamped per sample
+        // so the result is the average of displayed values.
+        c = {Float(0.0f), Float(0.0f), Float(0.0f)};
+        for (int sy = 0; sy < aa; ++sy) {
+            for (int sx = 0; sx < aa; ++sx) {
+                Float ox((float(sx) + 0.5f) / float(aa)), oy((float(sy) + 0.5f) / float(aa));
+                ColorP s = clamped(tracePacket(frame, primaryRays(camera, px + ox, py + oy), inside));
+                c = {c.r + s.r, c.g + s.g, c.b + s.b};
+            }
+        }
+        Float weight(1.0f / float(aa * aa));
+        c = {c.r * weight, c.g * weight, c.b * weight};
+    }
+    alignas(64) std::int32_t r[simd::kWidth], g[simd::kWidth], b[simd::kWidth];
+    simd::store(r, toBytes(c.r));
+    simd::store(g, toBytes(c.g));
+    simd::store(b, toBytes(c.b));
+    for (std::uint32_t live = simd::bits(inside); live != 0; live &= live - 1) {
+        int i = __builtin_ctz(live);
+        out.at(x0 + i % kBlockWidth, y0 + i / kBlockWidth) = {std::uint8_t(r[i]), std::uint8_t(g[i]), std::uint8_t(b[i])};
+    }
+}
+}  // namespace
+
 bool Renderer::trace(const FrameScene& frame, const Camera& camera, Image& out, const RenderOptions& options,
                      const std::atomic<bool>* cancel) {
     out.resize(camera.width, camera.height);
     const int tilesX = (camera.width + kTileSize - 1) / kTileSize;
     const int tilesY = (camera.height + kTileSize - 1) / kTileSize;
     const int aa = options.antialias < 1 ? 1 : options.antialias;
-    const float sampleWeight = 1.0f / float(aa * aa);
+    static const LaneOffsets lanes;
     std::atomic<bool> cancelled{false};
 
     pool_.parallelFor(std::uint32_t(tilesX * tilesY), [&](std::uint32_t tile) {
@@ -38,29 +109,20 @@ bool Renderer::trace(const FrameScene& frame, const Camera& camera, Image& out, 
         const int y0 = int(tile / std::uint32_t(tilesX)) * kTileSize;
         const int x1 = std::min(x0 + kTileSize, camera.width);
         const int y1 = std::min(y0 + kTileSize, camera.height);
-        for (int y = y0; y < y1; ++y) {
-            for (int x = x0; x < x1; ++x) {
-                Vec3 c;
-                if (aa == 1) {
-                    c = renderSample(frame, camera, float(x) + 0.5f, float(y) + 0.5f);
-                } else {
-                    // Stratified: the centre of each of the N x N sub-cells, so the
-                    // image is deterministic and the same for any thread count.
-                    for (int sy = 0; sy < aa; ++sy)
-                        for (int sx = 0; sx < aa; ++sx) {
-                            Vec3 s = renderSample(frame, camera, float(x) + (float(sx) + 0.5f) / float(aa),
-                                                  float(y) + (float(sy) + 0.5f) / float(aa));
-                            // Clamp per sample: the average of displayed values.
-                            c += Vec3{std::clamp(s.x, 0.0f, 1.0f), std::clamp(s.y, 0.0f, 1.0f),
-                                      std::clamp(s.z, 0.0f, 1.0f)};
-                        }
-                    c = c * sampleWeight;
-                }
-                out.at(x, y) = {toByte(c.x), toByte(c.y), toByte(c.z)};
-            }
-        }
+        for (int y = y0; y < y1; y += kBlockHeight)
+            for (int x = x0; x < x1; x += kBlockWidth) renderBlock(frame, camera, aa, lanes, x, y, out);
     });
     return !cancelled.load();
+}
+
+/// The single-ray reference path over the whole image (tests compare it with trace()).
+void traceReference(const FrameScene& frame, const Camera& camera, Image& out) {
+    out.resize(camera.width, camera.height);
+    for (int y = 0; y < camera.height; ++y)
+        for (int x = 0; x < camera.width; ++x) {
+            Vec3 c = renderSample(frame, camera, float(x) + 0.5f, float(y) + 0.5f);
+            out.at(x, y) = {toByte(c.x), toByte(c.y), toByte(c.z)};
+        }
 }
 
 FrameTimings Renderer::render(const SceneDesc& scene, double t, const Camera& camera, Image& out,

@@ -46,8 +46,12 @@ private:
     FrameScene frame_;
 };
 
-/// Colour (0..1) of one pixel's sample at image point (px, py): the reference
-/// path, used by tests and `--pixel` debugging.
+/// Colour (0..1) of one pixel's sample at image point (px, py): the single-ray
+/// reference path, used by tests and debugging.
 Vec3 renderSample(const FrameScene& frame, const Camera& camera, float px, float py);
+
+/// The whole image by the single-ray reference path, one thread, one sample per
+/// pixel. The packet path of Renderer::trace must agree with it (tests).
+void traceReference(const FrameScene& frame, const Camera& camera, Image& out);
 
 }  // namespace f2

@@ -1,0 +1,158 @@
+#include "core/scene/bench_scenes.h"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+
+#include "core/math/transform.h"
+
+namespace f2 {
+
+namespace {
+
+/// Shortest decimal form, independent of the C++ and C locales (SPEC 7 reads
+/// numbers in the C locale).
+std::string num(double v) {
+    if (std::fabs(v) < 1e-9) v = 0;  // no "-0" or 1e-15 noise in the text
+    std::array<char, 32> buf{};
+    auto [end, ec] = std::to_chars(buf.data(), buf.data() + buf.size(), v, std::chars_format::general, 9);
+    return ec == std::errc{} ? std::string(buf.data(), end) : std::string("0");
+}
+
+void append(std::string& out, std::initializer_list<std::string_view> parts) {
+    for (std::string_view part : parts) out += part;
+}
+
+/// Appends " n1 n2 ..." (each number after a space).
+void appendNumbers(std::string& out, std::initializer_list<double> values) {
+    for (double v : values) {
+        out += ' ';
+        out += num(v);
+    }
+}
+
+constexpr std::array<std::array<int, 3>, 4> kPalette = {{{220, 60, 60}, {60, 90, 220}, {230, 200, 40}, {200, 200, 200}}};
+
+/// Phase of object i: neighbours move out of step, so the scene looks alive
+/// and the BVH sees a different layout at each frame.
+double phaseOf(int i) { return 0.7 * double(i); }
+
+}  // namespace
+
+bool parseBenchSceneSpec(std::string_view text, BenchSceneSpec& spec, std::string& error) {
+    auto colon = text.find(':');
+    std::string_view kind = text.substr(0, colon);
+    BenchSceneSpec parsed;
+    if (kind == "robots") parsed.shape = BenchShape::Robots;
+    else if (kind == "spheres") parsed.shape = BenchShape::Spheres;
+    if (colon == std::string_view::npos || (kind != "robots" && kind != "spheres")) {
+        error.assign("expected robots:N or spheres:N, got '").append(text).append("'");
+        return false;
+    }
+    std::string_view count = text.substr(colon + 1);
+    const char* end = count.data() + count.size();
+    auto [ptr, ec] = std::from_chars(count.data(), end, parsed.count);
+    if (count.empty() || ec != std::errc{} || ptr != end || parsed.count < 1 || parsed.count > kMaxBenchObjects) {
+        error.assign("N in '").append(text).append("' must be a whole number 1..").append(std::to_string(kMaxBenchObjects));
+        return false;
+    }
+    spec = parsed;
+    return true;
+}
+
+std::string benchSceneName(const BenchSceneSpec& spec) {
+    std::string name = spec.shape == BenchShape::Robots ? "robots:" : "spheres:";
+    return name.append(std::to_string(spec.count));
+}
+
+BenchGrid benchGrid(int count) {
+    int columns = int(std::sqrt(double(count)));
+    while (columns * columns < count) ++columns;  // exact ceil(sqrt(N)), no rounding surprises
+    if (columns < 1) columns = 1;
+    return {columns, (count + columns - 1) / columns};
+}
+
+BenchCamera benchCamera(int count) {
+    // Look down at `pitch` toward the grid's centre C = (0, -5, 0) (mid-height
+    // of a robot) from distance D = 200 + 2.5 * half, where half = 75 * max(columns,
+    // rows) is the grid's half-width. With d = 0.5 (90 degrees across) at 4:3,
+    // the near edge is the tightest fit; D >= 173 + 2.43 * half keeps it inside.
+    BenchGrid grid = benchGrid(count);
+    double half = 0.5 * kBenchSpacing * double(std::max(grid.columns, grid.rows));
+    double distance = 200.0 + 2.5 * half;
+    double pitch = kBenchPitchDegrees * kPi / 180.0;
+    // Eye = C - D * forward, forward = R(pitch, 0, 0) * (0, 0, 1) = (0, -sin, cos).
+    return {0.0, -5.0 + distance * std::sin(pitch), -distance * std::cos(pitch), kBenchPitchDegrees};
+}
+
+std::string benchSceneText(const BenchSceneSpec& spec, int width, int height) {
+    const bool robots = spec.shape == BenchShape::Robots;
+    const BenchGrid grid = benchGrid(spec.count);
+    const BenchCamera cam = benchCamera(spec.count);
+    std::string out;
+    out.reserve(std::size_t(spec.count) * (robots ? 640 : 220) + 1024);
+    // Built by appending pieces: GCC 12 misreports `"literal" + std::string` (-Wrestrict).
+    append(out, {"# f2 bench --scene ", benchSceneName(spec), ": ", std::to_string(grid.columns), " x ",
+                 std::to_string(grid.rows), " grid, spacing ", num(kBenchSpacing), " (docs/performance.md)\n"});
+    append(out, {"/camera ", std::to_string(width), " ", std::to_string(height), " 0.5"});
+    appendNumbers(out, {cam.eyeX, cam.eyeY, cam.eyeZ, cam.pitch, 0, 0});
+    out += "\n/background 115 153 217\n/amb_light 0.2\n/dir_light 0.75 0.5 -1 0.7\n";
+    // Floor: top face at y = -105, where robots stand; one cell of margin around the grid.
+    out += "/box floor";
+    appendNumbers(out, {grid.columns * kBenchSpacing + 2 * kBenchSpacing, 50,
+                        grid.rows * kBenchSpacing + 2 * kBenchSpacing, 0, -130, 0});
+    out += "\n/paint floor 0 200 0\n";
+
+    std::string name;
+    for (int i = 0; i < spec.count; ++i) {
+        const int column = i % grid.columns, row = i / grid.columns;
+        const double x = (column - (grid.columns - 1) * 0.5) * kBenchSpacing;
+        const double z = (row - (grid.rows - 1) * 0.5) * kBenchSpacing;
+        name.clear();
+        name += robots ? 'r' : 's';
+        name += std::to_string(i);
+        const auto& color = kPalette[std::size_t(i) & 3];
+        const double phase = phaseOf(i);
+        if (robots) {
+            // Facing the camera (ry 180); arms swing in opposition along a
+            // spline and the head turns, each robot out of phase.
+            append(out, {"/robot ", name});
+            appendNumbers(out, {x, 0, z, 0, 180, 0});
+            append(out, {"\n/paint ", name});
+            appendNumbers(out, {double(color[0]), double(color[1]), double(color[2])});
+            append(out, {"\n/interp ", name, ".lhand spline\n/interp ", name, ".rhand spline\n/interp ", name,
+                         ".head ease\n"});
+            for (int k = 0; k <= 4; ++k) {
+                const std::string frame = std::to_string(k * kBenchSwingFrames / 4);
+                const double swing = 40.0 * std::sin(phase + k * kPi / 2);
+                append(out, {"/key ", frame, " ", name, ".lhand 0 0 0"});
+                appendNumbers(out, {swing, 0, 0});
+                append(out, {"\n/key ", frame, " ", name, ".rhand 0 0 0"});
+                appendNumbers(out, {-swing, 0, 0});
+                out += '\n';
+            }
+            for (int k = 0; k <= 2; ++k) {
+                append(out, {"/key ", std::to_string(k * kBenchSwingFrames / 2), " ", name, ".head 0 0 0 0"});
+                appendNumbers(out, {(k % 2 ? -30.0 : 30.0) * std::cos(phase), 0});
+                out += '\n';
+            }
+        } else {
+            // Radius 50 resting on the floor (centre y = -55), bobbing up to 30.
+            const double low = -55 + 15 * (1 + std::sin(phase)), high = -55 + 15 * (1 - std::sin(phase));
+            append(out, {"/sphere ", name, " 50"});
+            appendNumbers(out, {x, low, z});
+            append(out, {"\n/paint ", name});
+            appendNumbers(out, {double(color[0]), double(color[1]), double(color[2])});
+            append(out, {"\n/interp ", name, " ease\n"});
+            for (int k = 0; k <= 2; ++k) {
+                append(out, {"/key ", std::to_string(k * kBenchSwingFrames / 2), " ", name});
+                appendNumbers(out, {x, k % 2 ? high : low, z, 0, 0, 0});
+                out += '\n';
+            }
+        }
+    }
+    return out;
+}
+
+}  // namespace f2
