@@ -2,6 +2,8 @@
 
 #include "core/anim/track.h"
 
+#include <algorithm>
+
 namespace f2 {
 
 namespace {
@@ -30,30 +32,60 @@ std::array<Transform, kPartCount> modelPartFrames(const SceneObject& object, con
     return worldFromPart;
 }
 
-void evaluateFrame(const SceneDesc& scene, double t, FrameScene& frame) {
-    frame.primitives.clear();
-    frame.surfaces.clear();
+namespace {
+/// Writes the primitives of one object at `out` (primitiveCountOf(kind) slots).
+void evaluateObject(const SceneObject& object, double t, Primitive* prims, Surface* surfaces) {
+    Transform worldFromObject = objectFrame(object, t);
+    if (!isModel(object.kind)) {
+        *prims = makePrimitive(shapeKindOf(object.kind), object.size, worldFromObject);
+        const Appearance& look = object.appearance[0];
+        *surfaces = {toUnitColor(look.color), look.material};
+        return;
+    }
+    auto worldFromPart = modelPartFrames(object, worldFromObject, t);
+    for (const ModelShape& shape : modelOf(object.kind).shapes) {
+        const Transform& partFrame = worldFromPart[int(shape.part)];
+        *prims++ = makePrimitive(shape.kind, shape.size, partFrame * translation(shape.centre));
+        const Appearance& look = object.appearance[int(shape.part)];
+        *surfaces++ = {toUnitColor(shape.ownColor ? shape.color : look.color), look.material};
+    }
+}
+
+// Objects per parallel work item: big enough to hide the hand-out cost.
+constexpr std::size_t kObjectsPerChunk = 256;
+}  // namespace
+
+void evaluateFrame(const SceneDesc& scene, double t, FrameScene& frame, ThreadPool* pool) {
     frame.lights.clear();
     frame.ambient = scene.ambient;
     frame.background = toUnitColor(scene.background);
     for (const DirectionalLight& light : scene.lights)
         frame.lights.push_back({-normalize(light.direction), light.intensity});
 
-    for (const SceneObject& object : scene.objects) {
-        Transform worldFromObject = objectFrame(object, t);
-        if (!isModel(object.kind)) {
-            frame.primitives.push_back(makePrimitive(shapeKindOf(object.kind), object.size, worldFromObject));
-            const Appearance& look = object.appearance[0];
-            frame.surfaces.push_back({toUnitColor(look.color), look.material});
-            continue;
-        }
-        auto worldFromPart = modelPartFrames(object, worldFromObject, t);
-        for (const ModelShape& shape : modelOf(object.kind).shapes) {
-            const Transform& partFrame = worldFromPart[int(shape.part)];
-            frame.primitives.push_back(makePrimitive(shape.kind, shape.size, partFrame * translation(shape.centre)));
-            const Appearance& look = object.appearance[int(shape.part)];
-            frame.surfaces.push_back({toUnitColor(shape.ownColor ? shape.color : look.color), look.material});
-        }
+    // Each object owns a fixed run of primitive slots, so objects can be
+    // evaluated in any order, in parallel, straight into place.
+    const std::size_t objectCount = scene.objects.size();
+    frame.firstPrimitive.resize(objectCount + 1);
+    std::size_t total = 0;
+    for (std::size_t i = 0; i < objectCount; ++i) {
+        frame.firstPrimitive[i] = std::uint32_t(total);
+        total += primitiveCountOf(scene.objects[i].kind);
+    }
+    frame.firstPrimitive[objectCount] = std::uint32_t(total);
+    frame.primitives.resize(total);
+    frame.surfaces.resize(total);
+
+    auto evaluateChunk = [&](std::uint32_t chunk) {
+        std::size_t end = std::min(objectCount, (chunk + 1) * kObjectsPerChunk);
+        for (std::size_t i = chunk * kObjectsPerChunk; i < end; ++i)
+            evaluateObject(scene.objects[i], t, &frame.primitives[frame.firstPrimitive[i]],
+                           &frame.surfaces[frame.firstPrimitive[i]]);
+    };
+    std::uint32_t chunks = std::uint32_t((objectCount + kObjectsPerChunk - 1) / kObjectsPerChunk);
+    if (pool) {
+        pool->parallelFor(chunks, evaluateChunk);
+    } else {
+        for (std::uint32_t c = 0; c < chunks; ++c) evaluateChunk(c);
     }
 }
 

@@ -3,6 +3,7 @@
 /// world-space primitives.
 #include "core/anim/frame_scene.h"
 #include "core/math/transform.h"
+#include "core/render/thread_pool.h"
 
 namespace f2 {
 
@@ -14,9 +15,10 @@ std::array<Transform, kPartCount> modelPartFrames(const SceneObject& object, con
 /// World transform of an object's root (a primitive's own frame) at time t.
 Transform objectFrame(const SceneObject& object, double t);
 
-/// Fills `frame` (primitives, surfaces, lights) for time `t` in frames. Does
-/// not build the BVH: call frame.bvh.build(frame.primitives) after.
-void evaluateFrame(const SceneDesc& scene, double t, FrameScene& frame);
+/// Fills `frame` (primitives, surfaces, lights) for time `t` in frames, on the
+/// pool's threads when one is given. Does not build the BVH: call
+/// frame.bvh.update(frame.primitives) after.
+void evaluateFrame(const SceneDesc& scene, double t, FrameScene& frame, ThreadPool* pool = nullptr);
 
 /// Time in frames for playback time `seconds` at the scene's fps.
 inline double frameAtSeconds(const SceneDesc& scene, double seconds) { return seconds * scene.fps; }

@@ -24,6 +24,8 @@ struct LightSample {
 struct FrameScene {
     std::vector<Primitive> primitives;
     std::vector<Surface> surfaces;  ///< parallel to primitives
+    /// Object i's primitives are [firstPrimitive[i], firstPrimitive[i + 1]).
+    std::vector<std::uint32_t> firstPrimitive;
     std::vector<LightSample> lights;
     float ambient = 0;
     Vec3 background;  ///< 0..1

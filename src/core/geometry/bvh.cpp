@@ -13,6 +13,17 @@ constexpr float kTraversalCost = 1.0f;  // relative to one primitive test
 // hostile layout cannot make the tree deeper than the traversal stack.
 constexpr std::uint32_t kMaxSahDepth = 64;
 constexpr int kStackSize = 128;
+constexpr std::uint32_t kRefitChunk = 1024;  // primitives or leaves per parallel work item
+
+/// body(chunk) for chunk in [0, chunks), on the pool when there is one.
+template <class Body>
+void forChunks(ThreadPool* pool, std::uint32_t chunks, Body&& body) {
+    if (pool) {
+        pool->parallelFor(chunks, body);
+    } else {
+        for (std::uint32_t c = 0; c < chunks; ++c) body(c);
+    }
+}
 
 struct BuildTask {
     std::uint32_t node, begin, end, depth;
@@ -32,17 +43,21 @@ inline float boxEntry(const Bounds& b, Vec3 origin, Vec3 invDir, float tMin, flo
 inline Vec3 inverseDirection(Vec3 d) { return {1.0f / d.x, 1.0f / d.y, 1.0f / d.z}; }
 }  // namespace
 
-void Bvh::build(std::span<const Primitive> primitives) {
+void Bvh::build(std::span<const Primitive> primitives, ThreadPool* pool) {
     const std::uint32_t n = std::uint32_t(primitives.size());
     nodes_.clear();
+    leaves_.clear();
     primBounds_.resize(n);
     centroids_.resize(n);
     indices_.resize(n);
-    for (std::uint32_t i = 0; i < n; ++i) {
-        primBounds_[i] = primitiveBounds(primitives[i]);
-        centroids_[i] = primBounds_[i].centroid();
-        indices_[i] = i;
-    }
+    auto boundChunk = [&](std::uint32_t chunk) {
+        for (std::uint32_t i = chunk * kRefitChunk; i < std::min(n, (chunk + 1) * kRefitChunk); ++i) {
+            primBounds_[i] = primitiveBounds(primitives[i]);
+            centroids_[i] = primBounds_[i].centroid();
+            indices_[i] = i;
+        }
+    };
+    forChunks(pool, (n + kRefitChunk - 1) / kRefitChunk, boundChunk);
     ordered_.resize(n);
     original_.resize(n);
     if (n == 0) return;
@@ -111,6 +126,7 @@ void Bvh::build(std::span<const Primitive> primitives) {
         if (makeLeaf) {
             node.first = task.begin;
             node.count = std::uint16_t(count);
+            leaves_.push_back(task.node);
             for (std::uint32_t i = task.begin; i < task.end; ++i) {
                 ordered_[i] = primitives[indices_[i]];
                 original_[i] = indices_[i];
@@ -146,6 +162,51 @@ void Bvh::build(std::span<const Primitive> primitives) {
         stack[top++] = {left + 1, mid, task.end, task.depth + 1};
         stack[top++] = {left, task.begin, mid, task.depth + 1};
     }
+    costAtBuild_ = sahCost();
+}
+
+float Bvh::sahCost() const {
+    if (nodes_.empty()) return 0;
+    float sum = 0;
+    for (const Node& node : nodes_) sum += node.bounds.halfArea() * (node.count > 0 ? float(node.count) : kTraversalCost);
+    float root = nodes_[0].bounds.halfArea();
+    return root > 0 ? sum / root : 0;
+}
+
+float Bvh::refit(std::span<const Primitive> primitives, ThreadPool* pool) {
+    // Leaves are independent: refresh their primitives and bounds in parallel.
+    const std::uint32_t leafCount = std::uint32_t(leaves_.size());
+    forChunks(pool, (leafCount + kRefitChunk - 1) / kRefitChunk, [&](std::uint32_t chunk) {
+        for (std::uint32_t k = chunk * kRefitChunk; k < std::min(leafCount, (chunk + 1) * kRefitChunk); ++k) {
+            Node& leaf = nodes_[leaves_[k]];
+            Bounds b;
+            for (std::uint32_t i = leaf.first; i < leaf.first + leaf.count; ++i) {
+                ordered_[i] = primitives[original_[i]];
+                b.grow(primitiveBounds(ordered_[i]));
+            }
+            leaf.bounds = b;
+        }
+    });
+    // Children always come after their parent, so a backward sweep sees them first.
+    float sum = 0;
+    for (std::size_t k = nodes_.size(); k-- > 0;) {
+        Node& node = nodes_[k];
+        if (node.count == 0) {
+            node.bounds = nodes_[node.first].bounds;
+            node.bounds.grow(nodes_[node.first + 1].bounds);
+        }
+        sum += node.bounds.halfArea() * (node.count > 0 ? float(node.count) : kTraversalCost);
+    }
+    float root = nodes_[0].bounds.halfArea();
+    return root > 0 ? sum / root : 0;
+}
+
+bool Bvh::update(std::span<const Primitive> primitives, ThreadPool* pool) {
+    if (!nodes_.empty() && primitives.size() == ordered_.size() &&
+        refit(primitives, pool) <= costAtBuild_ * kRebuildGrowth)
+        return false;
+    build(primitives, pool);
+    return true;
 }
 
 bool Bvh::intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit) const {
@@ -191,7 +252,7 @@ bool Bvh::intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit) cons
     }
 }
 
-bool Bvh::occluded(const Ray& ray, float tMin, float tMax) const {
+bool Bvh::occluded(const Ray& ray, float tMin, float tMax, std::uint32_t skip) const {
     if (nodes_.empty()) return false;
     Vec3 invDir = inverseDirection(ray.direction);
     std::uint32_t stack[kStackSize];
@@ -204,7 +265,7 @@ bool Bvh::occluded(const Ray& ray, float tMin, float tMax) const {
             for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
                 float t;
                 Face face;
-                if (intersectPrimitive(ordered_[i], ray, tMin, tMax, t, face)) return true;
+                if (original_[i] != skip && intersectPrimitive(ordered_[i], ray, tMin, tMax, t, face)) return true;
             }
         } else {
             stack[top++] = node.first + 1;

@@ -7,6 +7,7 @@
 
 #include "core/geometry/intersect.h"
 #include "core/geometry/packet.h"
+#include "core/render/thread_pool.h"
 
 namespace f2 {
 
@@ -27,18 +28,32 @@ public:
         std::uint16_t axis = 0;   ///< inner: split axis; the left child holds the lower side
     };
 
-    void build(std::span<const Primitive> primitives);
+    /// Full binned-SAH build over `primitives` (primitive bounds on the pool's threads if given).
+    void build(std::span<const Primitive> primitives, ThreadPool* pool = nullptr);
+
+    /// This frame's tree: refits the last tree to the moved primitives (same
+    /// count, any motion: the result is always correct), and rebuilds when
+    /// there is none or refitting has let its SAH cost grow by kRebuildGrowth.
+    /// Returns true when it rebuilt.
+    bool update(std::span<const Primitive> primitives, ThreadPool* pool = nullptr);
+    static constexpr float kRebuildGrowth = 1.3f;
+
+    /// Expected cost of a ray under the SAH model, relative to the root's area.
+    float sahCost() const;
 
     /// Closest hit within (tMin, tMax).
     bool intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit) const;
-    /// Any hit within (tMin, tMax): shadow rays stop at the first occluder.
-    bool occluded(const Ray& ray, float tMin, float tMax) const;
+    /// Any hit within (tMin, tMax) on a primitive other than `skip`: shadow rays
+    /// stop at the first occluder. A convex primitive cannot shadow its own lit
+    /// side, so shadow rays skip the primitive they start on.
+    static constexpr std::uint32_t kNoPrimitive = 0xFFFFFFFFu;
+    bool occluded(const Ray& ray, float tMin, float tMax, std::uint32_t skip = kNoPrimitive) const;
 
     /// Packet versions: the `active` lanes traverse together; results as above per lane.
     /// intersect() narrows hit.t (the lanes' tMax on entry) and sets primitive and face.
     void intersect(const RayPacket& rays, Mask active, Float tMin, PacketHit& hit) const;
-    /// Lanes of `active` that hit something within (tMin, tMax).
-    Mask occluded(const RayPacket& rays, Mask active, Float tMin, Float tMax) const;
+    /// Lanes of `active` that hit something within (tMin, tMax) other than their `skip` primitive.
+    Mask occluded(const RayPacket& rays, Mask active, Float tMin, Float tMax, Int skip) const;
 
     std::span<const Node> nodes() const { return nodes_; }
     /// Primitives in leaf order, and each one's index in the frame.
@@ -54,6 +69,11 @@ private:
     std::vector<Bounds> primBounds_;
     std::vector<Vec3> centroids_;
     std::vector<std::uint32_t> indices_;
+    std::vector<std::uint32_t> leaves_;  ///< indices of the leaf nodes
+    float costAtBuild_ = 0;              ///< sahCost() right after the last full build
+
+    /// Recomputes every node's bounds from `primitives` (same count as built); returns sahCost().
+    float refit(std::span<const Primitive> primitives, ThreadPool* pool);
 };
 
 }  // namespace f2

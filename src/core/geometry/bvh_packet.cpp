@@ -59,7 +59,7 @@ void Bvh::intersect(const RayPacket& rays, Mask active, Float tMin, PacketHit& h
     }
 }
 
-Mask Bvh::occluded(const RayPacket& rays, Mask active, Float tMin, Float tMax) const {
+Mask Bvh::occluded(const RayPacket& rays, Mask active, Float tMin, Float tMax, Int skip) const {
     Mask blocked{};
     if (nodes_.empty() || simd::none(active)) return blocked;
     std::uint32_t stack[kStackSize];
@@ -72,9 +72,11 @@ Mask Bvh::occluded(const RayPacket& rays, Mask active, Float tMin, Float tMax) c
         if (simd::none(lanes)) continue;
         if (node.count > 0) {
             for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
+                Mask test = simd::andNot(lanes, skip == Int(std::int32_t(original_[i])));
+                if (simd::none(test)) continue;
                 Float t = tMax;
                 Int face;
-                blocked = blocked | intersectPrimitiveP(ordered_[i], rays, lanes, tMin, tMax, t, face);
+                blocked = blocked | intersectPrimitiveP(ordered_[i], rays, test, tMin, tMax, t, face);
                 lanes = simd::andNot(lanes, blocked);
                 if (simd::none(lanes)) break;
             }

@@ -32,15 +32,28 @@ inline bool quadraticInterval(Vec3 perp, Vec3 dperp, float r, float& t0, float& 
         t1 = kInfinity;
         return true;
     }
+    float inverseA = 1.0f / a;
     float b = dot(perp, dperp);
     // Discriminant via the closest approach, which keeps precision when the
     // ray starts far from the primitive.
-    Vec3 closest = perp - dperp * (b / a);
+    Vec3 closest = perp - dperp * (b * inverseA);
     float disc = r * r - dot(closest, closest);
     if (disc < 0) return false;
     float s = std::sqrt(disc * a);
-    t0 = (-b - s) / a;
-    t1 = (-b + s) / a;
+    t0 = (-b - s) * inverseA;
+    t1 = (-b + s) * inverseA;
+    return true;
+}
+
+/// The sphere's case of the above: ray directions are unit, so a = 1.
+inline bool sphereInterval(Vec3 oc, Vec3 d, float r, float& t0, float& t1) {
+    float b = dot(oc, d);
+    Vec3 closest = oc - d * b;
+    float disc = r * r - dot(closest, closest);
+    if (disc < 0) return false;
+    float s = std::sqrt(disc);
+    t0 = -b - s;
+    t1 = -b + s;
     return true;
 }
 
@@ -63,7 +76,7 @@ inline bool primitiveInterval(const Primitive& prim, const Ray& ray, Interval& i
     switch (prim.kind) {
         case ShapeKind::Sphere: {
             float t0, t1;
-            if (!detail::quadraticInterval(oc, ray.direction, prim.half.x, t0, t1)) return false;
+            if (!detail::sphereInterval(oc, ray.direction, prim.half.x, t0, t1)) return false;
             iv = {t0, t1, Face::Curved, Face::Curved};
             return true;
         }

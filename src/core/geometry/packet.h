@@ -48,21 +48,32 @@ inline Mask quadraticIntervalP(const Vec3P& perp, const Vec3P& dperp, Float r, F
     Float a = dot(dperp, dperp);
     Float c = dot(perp, perp) - r * r;
     Mask parallel = a <= Float(1e-20f);
+    Float inverseA = Float(1.0f) / a;
     Float b = dot(perp, dperp);
-    Vec3P closest = perp - dperp * (b / a);
+    Vec3P closest = perp - dperp * (b * inverseA);
     Float disc = r * r - dot(closest, closest);
     Float s = simd::sqrt(disc * a);
-    t0 = simd::select(parallel, Float(-kInfinity), (-b - s) / a);
-    t1 = simd::select(parallel, Float(kInfinity), (-b + s) / a);
+    t0 = simd::select(parallel, Float(-kInfinity), (-b - s) * inverseA);
+    t1 = simd::select(parallel, Float(kInfinity), (-b + s) * inverseA);
     // Parallel to the axis: inside for all t or never; otherwise real roots.
     return (parallel & (c <= Float(0.0f))) | simd::andNot(disc >= Float(0.0f), parallel);
 }
 
+/// Lane version of sphereInterval().
+inline Mask sphereIntervalP(const Vec3P& oc, const Vec3P& d, Float r, Float& t0, Float& t1) {
+    Float b = dot(oc, d);
+    Vec3P closest = oc - d * b;
+    Float disc = r * r - dot(closest, closest);
+    Float s = simd::sqrt(disc);
+    t0 = -b - s;
+    t1 = -b + s;
+    return disc >= Float(0.0f);
+}
+
 /// Lane version of clipSlab(): narrows [enter, exit] by |o + t d| <= h.
-inline Mask clipSlabP(Float o, Float d, Float h, Face face, Float& enter, Float& exit, Int& enterFace,
+inline Mask clipSlabP(Float o, Float d, Float inv, Float h, Face face, Float& enter, Float& exit, Int& enterFace,
                       Int& exitFace) {
     Mask flat = d == Float(0.0f);
-    Float inv = Float(1.0f) / d;
     Float a = (-h - o) * inv, b = (h - o) * inv;
     Mask swapped = a > b;
     Float tNear = simd::select(swapped, b, a), tFar = simd::select(swapped, a, b);
@@ -84,23 +95,35 @@ inline Mask primitiveIntervalP(const Primitive& prim, const RayPacket& ray, Floa
     switch (prim.kind) {
         case ShapeKind::Sphere:
             enterFace = exitFace = Int(int(Face::Curved));
-            return detail::quadraticIntervalP(oc, ray.direction, Float(prim.half.x), enter, exit);
+            return detail::sphereIntervalP(oc, ray.direction, Float(prim.half.x), enter, exit);
         case ShapeKind::Cylinder: {
             Vec3P axis(prim.axes[1]);
             Float oa = dot(oc, axis), da = dot(ray.direction, axis);
             Mask valid = detail::quadraticIntervalP(oc - axis * oa, ray.direction - axis * da, Float(prim.half.x),
                                                     enter, exit);
             enterFace = exitFace = Int(int(Face::Curved));
-            return valid & detail::clipSlabP(oa, da, Float(prim.half.y), Face::Cap, enter, exit, enterFace, exitFace);
+            return valid & detail::clipSlabP(oa, da, Float(1.0f) / da, Float(prim.half.y), Face::Cap, enter, exit,
+                                             enterFace, exitFace);
         }
         case ShapeKind::Box: {
             enter = Float(-kInfinity);
             exit = Float(kInfinity);
             enterFace = exitFace = Int(int(Face::SlabX));
             Mask valid = simd::allLanes();
+            if (prim.axisAligned) {
+                // Local axes are the world axes: the packet's reciprocals serve as they are.
+                const Float* o[3] = {&oc.x, &oc.y, &oc.z};
+                const Float* d[3] = {&ray.direction.x, &ray.direction.y, &ray.direction.z};
+                const Float* inv[3] = {&ray.inverseDirection.x, &ray.inverseDirection.y, &ray.inverseDirection.z};
+                for (int i = 0; i < 3; ++i)
+                    valid = valid & detail::clipSlabP(*o[i], *d[i], *inv[i], Float(prim.half[i]),
+                                                      Face(int(Face::SlabX) + i), enter, exit, enterFace, exitFace);
+                return valid;
+            }
             for (int i = 0; i < 3; ++i) {
                 Vec3P axis(prim.axes[i]);
-                valid = valid & detail::clipSlabP(dot(oc, axis), dot(ray.direction, axis), Float(prim.half[i]),
+                Float d = dot(ray.direction, axis);
+                valid = valid & detail::clipSlabP(dot(oc, axis), d, Float(1.0f) / d, Float(prim.half[i]),
                                                   Face(int(Face::SlabX) + i), enter, exit, enterFace, exitFace);
             }
             return valid;

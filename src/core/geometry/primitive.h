@@ -25,6 +25,7 @@ struct Primitive {
     /// Sphere: (r, -, -); cylinder: (r, h/2, -); box: half sides.
     Vec3 half;
     ShapeKind kind;
+    bool axisAligned = false;  ///< axes are exactly the world axes (fast box test)
 };
 
 /// Axis-aligned world bounds.

@@ -27,10 +27,16 @@ struct Camera {
     /// Ray through image point (x, y) in pixels from the top-left corner;
     /// the centre of pixel (i, j) is (i + 0.5, j + 0.5).
     Ray rayThrough(float px, float py) const {
-        float x = px / float(width) - 0.5f;
-        float y = (0.5f - py / float(height)) * float(height) / float(width);
+        float x = px * inverseWidth() - 0.5f;
+        float y = (0.5f - py * inverseHeight()) * aspect();
         return {eye, worldFromCamera * normalize(Vec3{x, y, distance})};
     }
+
+    // Reciprocals, so the per-ray work multiplies instead of divides (the packet
+    // path uses the same three numbers, which keeps both paths bit-identical).
+    float inverseWidth() const { return 1.0f / float(width); }
+    float inverseHeight() const { return 1.0f / float(height); }
+    float aspect() const { return float(height) / float(width); }
 };
 
 }  // namespace f2

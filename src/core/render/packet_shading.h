@@ -54,7 +54,7 @@ inline ColorP tracePacket(const FrameScene& frame, const RayPacket& rays, Mask a
         Mask lit = hitLanes & (nDotL > Float(0.0f));
         if (simd::none(lit)) continue;
         lit = simd::andNot(lit, frame.bvh.occluded(RayPacket(shadowOrigin, toLight), lit, Float(0.0f),
-                                                    Float(kInfinity)));
+                                                    Float(kInfinity), hit.primitive));
         if (simd::none(lit)) continue;
         Float intensity(light.intensity);
         diffuse = simd::select(lit, diffuse + intensity * kd * nDotL, diffuse);

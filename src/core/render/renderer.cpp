@@ -43,9 +43,8 @@ struct LaneOffsets {
 
 /// Primary rays through image points (px, py); the lane version of Camera::rayThrough.
 RayPacket primaryRays(const Camera& camera, Float px, Float py) {
-    Float x = px / Float(float(camera.width)) - Float(0.5f);
-    Float y = (Float(0.5f) - py / Float(float(camera.height))) * Float(float(camera.height)) /
-              Float(float(camera.width));
+    Float x = px * Float(camera.inverseWidth()) - Float(0.5f);
+    Float y = (Float(0.5f) - py * Float(camera.inverseHeight())) * Float(camera.aspect());
     Vec3P v(x, y, Float(camera.distance));
     v = v * (Float(1.0f) / simd::sqrt(dot(v, v)));
     const Mat3& m = camera.worldFromCamera;
@@ -84,9 +83,13 @@ void renderBlock(const FrameScene& frame, const Camera& camera, int aa, const La
     simd::store(r, toBytes(c.r));
     simd::store(g, toBytes(c.g));
     simd::store(b, toBytes(c.b));
-    for (std::uint32_t live = simd::bits(inside); live != 0; live &= live - 1) {
-        int i = __builtin_ctz(live);
-        out.at(x0 + i % kBlockWidth, y0 + i / kBlockWidth) = {std::uint8_t(r[i]), std::uint8_t(g[i]), std::uint8_t(b[i])};
+    const int w = std::min(kBlockWidth, camera.width - x0), h = std::min(kBlockHeight, camera.height - y0);
+    for (int row = 0; row < h; ++row) {
+        Rgb8* dst = &out.at(x0, y0 + row);
+        for (int col = 0; col < w; ++col) {
+            int i = row * kBlockWidth + col;
+            dst[col] = {std::uint8_t(r[i]), std::uint8_t(g[i]), std::uint8_t(b[i])};
+        }
     }
 }
 }  // namespace
@@ -129,11 +132,11 @@ FrameTimings Renderer::render(const SceneDesc& scene, double t, const Camera& ca
                               const RenderOptions& options, const std::atomic<bool>* cancel) {
     FrameTimings timings;
     auto start = Clock::now();
-    evaluateFrame(scene, t, frame_);
+    evaluateFrame(scene, t, frame_, &pool_);
     timings.evaluateMs = millisecondsSince(start);
 
     start = Clock::now();
-    frame_.bvh.build(frame_.primitives);
+    frame_.bvh.update(frame_.primitives, &pool_);
     timings.buildMs = millisecondsSince(start);
 
     start = Clock::now();

@@ -32,7 +32,7 @@ inline Vec3 shadeHit(const FrameScene& frame, const Ray& ray, const HitRecord& h
     for (const LightSample& light : frame.lights) {
         float nDotL = dot(n, light.toLight);
         if (nDotL <= 0) continue;
-        if (frame.bvh.occluded({shadowOrigin, light.toLight}, 0.0f, kInfinity)) continue;
+        if (frame.bvh.occluded({shadowOrigin, light.toLight}, 0.0f, kInfinity, hit.primitive)) continue;
         diffuse += light.intensity * m.kd * nDotL;
         Vec3 reflected = n * (2 * nDotL) - light.toLight;
         float rDotV = dot(reflected, toEye);

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <mutex>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 namespace f2 {
@@ -24,7 +25,8 @@ public:
     /// counter. Returns when all are done. Not reentrant.
     template <class Body>
     void parallelFor(std::uint32_t count, Body&& body) {
-        run(count, [](void* ctx, std::uint32_t i) { (*static_cast<Body*>(ctx))(i); }, &body);
+        using Fn = std::remove_reference_t<Body>;
+        run(count, [](void* ctx, std::uint32_t i) { (*static_cast<Fn*>(ctx))(i); }, const_cast<void*>(static_cast<const void*>(&body)));
     }
 
     static int hardwareThreads();

@@ -75,12 +75,13 @@ BenchGrid benchGrid(int count) {
 
 BenchCamera benchCamera(int count) {
     // Look down at `pitch` toward the grid's centre C = (0, -5, 0) (mid-height
-    // of a robot) from distance D = 200 + 2.5 * half, where half = 75 * max(columns,
-    // rows) is the grid's half-width. With d = 0.5 (90 degrees across) at 4:3,
-    // the near edge is the tightest fit; D >= 173 + 2.43 * half keeps it inside.
+    // of a robot) from distance D = 100 + 2 * half, half = 75 * max(columns, rows)
+    // the grid's half-width. With d = 0.5 (tangents 1 across, 0.75 up at 4:3)
+    // the binding limits are the near corners sideways (D >= 1.87 half - 57)
+    // and the near edge downward (D >= 1.63 half + 58), each with 5% margin.
     BenchGrid grid = benchGrid(count);
     double half = 0.5 * kBenchSpacing * double(std::max(grid.columns, grid.rows));
-    double distance = 200.0 + 2.5 * half;
+    double distance = 100.0 + 2.0 * half;
     double pitch = kBenchPitchDegrees * kPi / 180.0;
     // Eye = C - D * forward, forward = R(pitch, 0, 0) * (0, 0, 1) = (0, -sin, cos).
     return {0.0, -5.0 + distance * std::sin(pitch), -distance * std::cos(pitch), kBenchPitchDegrees};

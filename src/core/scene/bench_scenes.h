@@ -38,7 +38,7 @@ struct BenchGrid {
 BenchGrid benchGrid(int count);
 
 /// Eye and pitch of a generated scene's camera (d = 0.5, no yaw or roll):
-/// half = 75 * max(columns, rows), D = 200 + 2.5 * half,
+/// half = 75 * max(columns, rows), D = 100 + 2 * half,
 /// eye = (0, -5 + D sin 35deg, -D cos 35deg), rotation (35, 0, 0).
 /// Fits the grid in a 4:3 image (docs/performance.md).
 struct BenchCamera {
