@@ -62,6 +62,7 @@ void Bvh::intersect(const RayPacket& rays, Mask active, Float tMin, PacketHit& h
 Mask Bvh::occluded(const RayPacket& rays, Mask active, Float tMin, Float tMax, Int skip) const {
     Mask blocked{};
     if (nodes_.empty() || simd::none(active)) return blocked;
+    VisitOrder order(rays, active);  // the nearer occluder first ends a lane sooner
     std::uint32_t stack[kStackSize];
     int top = 0;
     stack[top++] = 0;
@@ -82,8 +83,9 @@ Mask Bvh::occluded(const RayPacket& rays, Mask active, Float tMin, Float tMax, I
             }
             if (simd::none(simd::andNot(active, blocked))) return blocked;  // every ray is in shadow
         } else {
-            stack[top++] = node.first + 1;
-            stack[top++] = node.first;
+            bool upper = order.upperFirst[node.axis];
+            stack[top++] = node.first + (upper ? 0 : 1);
+            stack[top++] = node.first + (upper ? 1 : 0);
         }
     }
     return blocked;

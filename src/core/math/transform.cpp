@@ -10,6 +10,7 @@ struct SinCos {
 };
 // Exact values at multiples of 90 degrees keep axis-aligned scenes free of 1e-17 noise.
 SinCos sinCosDegrees(double deg) {
+    if (deg == 0) return {0, 1};  // parts at rest: most angles of a frame
     double r = std::fmod(deg, 360.0);
     if (r < 0) r += 360.0;
     if (r == 0) return {0, 1};
@@ -22,6 +23,7 @@ SinCos sinCosDegrees(double deg) {
 }  // namespace
 
 Mat3 rotationFromEulerDegrees(double rx, double ry, double rz) {
+    if (rx == 0 && ry == 0 && rz == 0) return Mat3{};
     auto [sx, cx] = sinCosDegrees(rx);
     auto [sy, cy] = sinCosDegrees(ry);
     auto [sz, cz] = sinCosDegrees(rz);

@@ -94,9 +94,9 @@ void tokenizeLine(std::string_view line, LineTokens& out) {
 }
 
 namespace {
-void appendPrintable(std::string& out, std::string_view token) {
-    const bool cut = token.size() > kMaxQuotedBytes;
-    if (cut) token = token.substr(0, kMaxQuotedBytes);
+void appendPrintable(std::string& out, std::string_view token, std::size_t maxBytes = kMaxQuotedBytes) {
+    const bool cut = token.size() > maxBytes;
+    if (cut) token = token.substr(0, maxBytes);
     std::size_t i = 0;
     while (i < token.size()) {
         const auto b = static_cast<std::uint8_t>(token[i]);
@@ -128,6 +128,13 @@ std::string quoteToken(std::string_view token) {
     // Built by appending: GCC 12 warns falsely (-Wrestrict) on "'" + std::string.
     std::string out(1, '\'');
     appendPrintable(out, token);
+    out += '\'';
+    return out;
+}
+
+std::string quotePath(std::string_view path) {
+    std::string out(1, '\'');
+    appendPrintable(out, path, std::string_view::npos);
     out += '\'';
     return out;
 }

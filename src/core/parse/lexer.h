@@ -52,6 +52,10 @@ void tokenizeLine(std::string_view line, LineTokens& out);
 /// bytes, so that binary garbage never reaches a terminal raw.
 std::string quoteToken(std::string_view token);
 
+/// Like quoteToken() but never cut: a file path in "cannot read '...'" is
+/// shown whole (it was cut after 48 bytes before, hiding which file it was).
+std::string quotePath(std::string_view path);
+
 /// Like quoteToken() but without the quotes (numbers in "got -1").
 std::string printable(std::string_view token);
 

@@ -823,7 +823,7 @@ ParseResult parseSceneFile(const std::string& path, const ParseLimits& limits) {
         return parseScene(text, name, limits);
     }
 
-    const std::string prefix = "cannot read " + quoteToken(path) + ": ";
+    const std::string prefix = "cannot read " + quotePath(path) + ": ";
     namespace fs = std::filesystem;
     std::error_code ec;
     const fs::file_status status = fs::status(path, ec);

@@ -32,7 +32,8 @@ void appendNumbers(std::string& out, std::initializer_list<double> values) {
     }
 }
 
-constexpr std::array<std::array<int, 3>, 4> kPalette = {{{220, 60, 60}, {60, 90, 220}, {230, 200, 40}, {200, 200, 200}}};
+constexpr std::array<std::array<int, 3>, 4> kPalette = {
+    {{220, 60, 60}, {60, 90, 220}, {230, 200, 40}, {200, 200, 200}}};
 
 /// Phase of object i: neighbours move out of step, so the scene looks alive
 /// and the BVH sees a different layout at each frame.
@@ -44,8 +45,10 @@ bool parseBenchSceneSpec(std::string_view text, BenchSceneSpec& spec, std::strin
     auto colon = text.find(':');
     std::string_view kind = text.substr(0, colon);
     BenchSceneSpec parsed;
-    if (kind == "robots") parsed.shape = BenchShape::Robots;
-    else if (kind == "spheres") parsed.shape = BenchShape::Spheres;
+    if (kind == "robots")
+        parsed.shape = BenchShape::Robots;
+    else if (kind == "spheres")
+        parsed.shape = BenchShape::Spheres;
     if (colon == std::string_view::npos || (kind != "robots" && kind != "spheres")) {
         error.assign("expected robots:N or spheres:N, got '").append(text).append("'");
         return false;
@@ -53,8 +56,12 @@ bool parseBenchSceneSpec(std::string_view text, BenchSceneSpec& spec, std::strin
     std::string_view count = text.substr(colon + 1);
     const char* end = count.data() + count.size();
     auto [ptr, ec] = std::from_chars(count.data(), end, parsed.count);
-    if (count.empty() || ec != std::errc{} || ptr != end || parsed.count < 1 || parsed.count > kMaxBenchObjects) {
-        error.assign("N in '").append(text).append("' must be a whole number 1..").append(std::to_string(kMaxBenchObjects));
+    if (count.empty() || ec != std::errc{} || ptr != end || parsed.count < 1 ||
+        parsed.count > kMaxBenchObjects) {
+        error.assign("N in '")
+            .append(text)
+            .append("' must be a whole number 1..")
+            .append(std::to_string(kMaxBenchObjects));
         return false;
     }
     spec = parsed;
@@ -94,8 +101,9 @@ std::string benchSceneText(const BenchSceneSpec& spec, int width, int height) {
     std::string out;
     out.reserve(std::size_t(spec.count) * (robots ? 640 : 220) + 1024);
     // Built by appending pieces: GCC 12 misreports `"literal" + std::string` (-Wrestrict).
-    append(out, {"# f2 bench --scene ", benchSceneName(spec), ": ", std::to_string(grid.columns), " x ",
-                 std::to_string(grid.rows), " grid, spacing ", num(kBenchSpacing), " (docs/performance.md)\n"});
+    append(out,
+           {"# f2 bench --scene ", benchSceneName(spec), ": ", std::to_string(grid.columns), " x ",
+            std::to_string(grid.rows), " grid, spacing ", num(kBenchSpacing), " (docs/performance.md)\n"});
     append(out, {"/camera ", std::to_string(width), " ", std::to_string(height), " 0.5"});
     appendNumbers(out, {cam.eyeX, cam.eyeY, cam.eyeZ, cam.pitch, 0, 0});
     out += "\n/background 115 153 217\n/amb_light 0.2\n/dir_light 0.75 0.5 -1 0.7\n";
