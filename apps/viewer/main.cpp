@@ -1,0 +1,18 @@
+// f2-viewer: plays an F2 scene live in a Qt window.
+#include <QApplication>
+
+#include "main_window.h"
+#include "viewer_options.h"
+
+int main(int argc, char** argv) {
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName("F2Stage");
+    QApplication::setApplicationName("f2-viewer");
+    QApplication::setApplicationVersion("0.1.0");
+
+    const f2::viewer::ViewerOptions options = f2::viewer::parseViewerOptions(app);
+    f2::viewer::MainWindow window;
+    f2::viewer::applyViewerOptions(options, window);
+    window.show();
+    return QApplication::exec();
+}

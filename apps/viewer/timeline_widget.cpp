@@ -1,0 +1,88 @@
+#include "timeline_widget.h"
+
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QSignalBlocker>
+#include <QSlider>
+#include <QStyle>
+#include <QToolButton>
+#include <algorithm>
+#include <cmath>
+
+namespace f2::viewer {
+
+TimelineWidget::TimelineWidget(QWidget* parent) : QWidget(parent) {
+    auto* layout = new QHBoxLayout(this);
+    layout->setContentsMargins(6, 2, 6, 2);
+
+    // Standard style icons: they exist on every platform, unlike media glyphs in fonts.
+    QToolButton* first = addButton(QStyle::SP_MediaSkipBackward, tr("First frame (Home)"));
+    QToolButton* back = addButton(QStyle::SP_MediaSeekBackward, tr("Step back (Left)"));
+    playButton_ = addButton(QStyle::SP_MediaPlay, tr("Play / pause (Space)"));
+    QToolButton* forward = addButton(QStyle::SP_MediaSeekForward, tr("Step forward (Right)"));
+    QToolButton* last = addButton(QStyle::SP_MediaSkipForward, tr("Last frame (End)"));
+    for (QToolButton* b : {first, back, playButton_, forward, last}) layout->addWidget(b);
+    setPlaying(false);
+
+    slider_ = new QSlider(Qt::Horizontal, this);
+    slider_->setTracking(true);            // the picture follows while dragging
+    slider_->setFocusPolicy(Qt::NoFocus);  // keep Space/arrows for the window's shortcuts
+    layout->addWidget(slider_, 1);
+
+    frameLabel_ = new QLabel(this);
+    frameLabel_->setMinimumWidth(
+        frameLabel_->fontMetrics().horizontalAdvance("frame 00000 / 00000  000.00 s"));
+    layout->addWidget(frameLabel_);
+
+    speed_ = new QComboBox(this);
+    speed_->setFocusPolicy(Qt::NoFocus);
+    speed_->setToolTip(tr("Playback speed"));
+    for (double s : kSpeeds) speed_->addItem(QString::number(s) + QString::fromUtf8("×"), s);
+    speed_->setCurrentIndex(2);
+    layout->addWidget(speed_);
+
+    connect(playButton_, &QToolButton::clicked, this, &TimelineWidget::playToggled);
+    connect(back, &QToolButton::clicked, this, [this] { emit stepRequested(-1); });
+    connect(forward, &QToolButton::clicked, this, [this] { emit stepRequested(1); });
+    connect(first, &QToolButton::clicked, this, [this] { emit seekRequested(0); });
+    connect(last, &QToolButton::clicked, this, [this] { emit seekRequested(lastFrame_); });
+    connect(slider_, &QSlider::valueChanged, this, [this](int v) { emit seekRequested(v); });
+    connect(slider_, &QSlider::sliderPressed, this, &TimelineWidget::scrubStarted);
+    connect(slider_, &QSlider::sliderReleased, this, &TimelineWidget::scrubFinished);
+    connect(speed_, &QComboBox::currentIndexChanged, this,
+            [this](int i) { emit speedChanged(speed_->itemData(i).toDouble()); });
+    setRange(0, 24);
+}
+
+QToolButton* TimelineWidget::addButton(int standardIcon, const QString& tip) {
+    auto* button = new QToolButton(this);
+    button->setIcon(style()->standardIcon(QStyle::StandardPixmap(standardIcon)));
+    button->setToolTip(tip);
+    button->setAutoRaise(true);
+    button->setFocusPolicy(Qt::NoFocus);
+    return button;
+}
+
+void TimelineWidget::setRange(int lastFrame, int fps) {
+    lastFrame_ = std::max(0, lastFrame);
+    fps_ = std::max(1, fps);
+    const QSignalBlocker block(slider_);
+    slider_->setRange(0, lastFrame_);
+    slider_->setPageStep(std::max(1, fps_));
+}
+
+void TimelineWidget::setTime(double time) {
+    const int frame = std::clamp(int(std::floor(time + 1e-9)), 0, lastFrame_);
+    {
+        const QSignalBlocker block(slider_);
+        if (!slider_->isSliderDown()) slider_->setValue(frame);
+    }
+    frameLabel_->setText(tr("frame %1 / %2  %3 s").arg(frame).arg(lastFrame_).arg(time / fps_, 0, 'f', 2));
+}
+
+void TimelineWidget::setPlaying(bool playing) {
+    playButton_->setIcon(style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+}
+
+}  // namespace f2::viewer

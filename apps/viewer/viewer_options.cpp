@@ -1,0 +1,113 @@
+#include "viewer_options.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QElapsedTimer>
+#include <QTimer>
+#include <cstdio>
+#include <memory>
+
+#include "main_window.h"
+#include "playback.h"
+#include "viewport_widget.h"
+
+namespace f2::viewer {
+
+namespace {
+constexpr double kStatsWarmUpSeconds = 1.0;  // skip start-up (first frames, window mapping)
+
+[[noreturn]] void fail(QCommandLineParser& parser, const QString& message) {
+    std::fprintf(stderr, "f2-viewer: %s\n\n%s", qPrintable(message), qPrintable(parser.helpText()));
+    std::exit(2);
+}
+}  // namespace
+
+ViewerOptions parseViewerOptions(const QApplication& app) {
+    QCommandLineParser parser;
+    parser.setApplicationDescription("Plays an F2 scene (default: the embedded demo scene) live.");
+    parser.addHelpOption();
+    parser.addVersionOption();
+    parser.addPositionalArgument("scene", "Scene file (.f2) to open");
+    QCommandLineOption frame("frame", "Start paused at frame <n>.", "n");
+    QCommandLineOption scale("scale", "Render scale: 25, 50, 100 or scene.", "scale");
+    QCommandLineOption size("size", "Picture area size WIDTHxHEIGHT (default 800x600).", "size");
+    QCommandLineOption quitAfter("quit-after", "Quit after <seconds> (for scripts).", "seconds");
+    QCommandLineOption stats("stats", "Print the achieved frames per second on exit.");
+    parser.addOptions({frame, scale, size, quitAfter, stats});
+    parser.process(app);
+
+    ViewerOptions options;
+    const QStringList args = parser.positionalArguments();
+    if (args.size() > 1) fail(parser, "expected at most one scene file");
+    if (!args.isEmpty()) options.scene = args.first();
+    bool ok = true;
+    if (parser.isSet(frame)) {
+        options.frame = parser.value(frame).toDouble(&ok);
+        if (!ok || *options.frame < 0) fail(parser, "--frame: expected a number >= 0");
+    }
+    if (parser.isSet(scale)) {
+        const QString s = parser.value(scale);
+        if (s == "25")
+            options.scale = int(RenderScale::Quarter);
+        else if (s == "50")
+            options.scale = int(RenderScale::Half);
+        else if (s == "100")
+            options.scale = int(RenderScale::Full);
+        else if (s == "scene")
+            options.scale = int(RenderScale::SceneSize);
+        else
+            fail(parser, "--scale: expected 25, 50, 100 or scene");
+    }
+    if (parser.isSet(size)) {
+        const QStringList wh = parser.value(size).split('x');
+        bool okW = false, okH = false;
+        if (wh.size() == 2) options.viewportSize = QSize(wh[0].toInt(&okW), wh[1].toInt(&okH));
+        if (!okW || !okH || options.viewportSize.width() < 16 || options.viewportSize.height() < 16)
+            fail(parser, "--size: expected WIDTHxHEIGHT such as 800x600");
+    }
+    if (parser.isSet(quitAfter)) {
+        options.quitAfterSeconds = parser.value(quitAfter).toDouble(&ok);
+        if (!ok || options.quitAfterSeconds <= 0) fail(parser, "--quit-after: expected seconds > 0");
+    }
+    options.stats = parser.isSet(stats);
+    return options;
+}
+
+void applyViewerOptions(const ViewerOptions& options, MainWindow& window) {
+    if (options.scale) window.setRenderScale(RenderScale(*options.scale));
+    if (options.viewportSize.isValid()) window.resizeForViewport(options.viewportSize);
+    if (!options.scene.isEmpty()) window.openFile(options.scene);
+    if (options.frame) {
+        window.playback()->pause();
+        window.playback()->seek(*options.frame);
+    } else {
+        window.playback()->play();
+    }
+
+    if (options.stats) {
+        // Count the frames shown after a warm-up, until quitting.
+        auto clock = std::make_shared<QElapsedTimer>();
+        auto startCount = std::make_shared<quint64>(0);
+        QTimer::singleShot(int(kStatsWarmUpSeconds * 1000), &window, [&window, clock, startCount] {
+            *startCount = window.renderController()->framesDelivered();
+            clock->start();
+        });
+        QObject::connect(qApp, &QCoreApplication::aboutToQuit, &window, [&window, clock, startCount] {
+            if (!clock->isValid()) return;
+            const double seconds = double(clock->nsecsElapsed()) * 1e-9;
+            const quint64 frames = window.renderController()->framesDelivered() - *startCount;
+            const FrameInfo& last = window.shownFrame();
+            std::fprintf(stderr,
+                         "f2-viewer: %llu frames in %.2f s = %.1f fps achieved (scene %d fps), %dx%d, "
+                         "last frame %.1f ms, %llu requests skipped\n",
+                         static_cast<unsigned long long>(frames), seconds, frames / seconds,
+                         window.playback()->fps(), last.size.width(), last.size.height(),
+                         last.timings.totalMs(),
+                         static_cast<unsigned long long>(window.renderController()->framesSkipped()));
+        });
+    }
+    if (options.quitAfterSeconds > 0)
+        QTimer::singleShot(int(options.quitAfterSeconds * 1000), qApp, &QCoreApplication::quit);
+}
+
+}  // namespace f2::viewer

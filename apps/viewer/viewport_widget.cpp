@@ -1,0 +1,128 @@
+#include "viewport_widget.h"
+
+#include <QMouseEvent>
+#include <QPainter>
+#include <QWheelEvent>
+#include <algorithm>
+#include <cmath>
+
+namespace f2::viewer {
+
+namespace {
+// SPEC 7 limits on the image; a huge high-DPI window must not exceed them.
+constexpr int kMaxSide = 16384;
+constexpr qint64 kMaxPixels = qint64(1) << 26;
+}  // namespace
+
+ViewportWidget::ViewportWidget(QWidget* parent) : QWidget(parent) {
+    setFocusPolicy(Qt::StrongFocus);
+    setMouseTracking(false);
+    setAttribute(Qt::WA_OpaquePaintEvent);  // paintEvent covers every pixel
+    setCursor(Qt::OpenHandCursor);
+    setToolTip(tr("Drag to orbit, wheel to zoom; View > Scene Camera to go back"));
+}
+
+void ViewportWidget::setSceneCamera(const Camera& camera, float targetDistance, bool keepOrbit) {
+    sceneCamera_ = camera;
+    targetDistance_ = targetDistance;
+    if (!keepOrbit) orbit_.reset();
+    emit viewChanged();
+}
+
+void ViewportWidget::resetView() {
+    orbit_.reset();
+    emit viewChanged();
+}
+
+void ViewportWidget::setRenderScale(RenderScale scale) {
+    if (scale == scale_) return;
+    scale_ = scale;
+    emit viewChanged();
+}
+
+QSize ViewportWidget::renderSize() const {
+    if (scale_ == RenderScale::SceneSize) return {sceneCamera_.width, sceneCamera_.height};
+    const double factor = scale_ == RenderScale::Quarter ? 0.25 : scale_ == RenderScale::Half ? 0.5 : 1.0;
+    // Device pixels, so a high-DPI screen gets a sharp picture at 100 %.
+    const double k = factor * devicePixelRatioF();
+    int w = std::clamp(int(std::lround(width() * k)), 1, kMaxSide);
+    int h = std::clamp(int(std::lround(height() * k)), 1, kMaxSide);
+    if (qint64(w) * h > kMaxPixels) {
+        const double shrink = std::sqrt(double(kMaxPixels) / (double(w) * h));
+        w = std::max(1, int(w * shrink));
+        h = std::max(1, int(h * shrink));
+    }
+    return {w, h};
+}
+
+Camera ViewportWidget::viewCamera(QSize size) const {
+    const Camera base = sceneCamera_.resized(size.width(), size.height());
+    return orbit_ ? orbit_->apply(base) : base;
+}
+
+void ViewportWidget::setImage(const QImage& image) {
+    image_ = image;
+    update();
+}
+
+void ViewportWidget::paintEvent(QPaintEvent*) {
+    QPainter painter(this);
+    painter.fillRect(rect(), palette().color(QPalette::Window).darker(300));
+    if (image_.isNull()) {
+        painter.setPen(Qt::lightGray);
+        painter.drawText(rect(), Qt::AlignCenter, tr("Rendering…"));
+        return;
+    }
+    // Fit the image into the widget keeping its aspect; while a resize is
+    // being rendered the old frame is simply stretched.
+    const QSizeF fitted = QSizeF(image_.size()).scaled(QSizeF(size()), Qt::KeepAspectRatio);
+    const QRectF target((width() - fitted.width()) / 2, (height() - fitted.height()) / 2, fitted.width(),
+                        fitted.height());
+    painter.setRenderHint(QPainter::SmoothPixmapTransform, true);
+    painter.drawImage(target, image_);
+}
+
+void ViewportWidget::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    if (scale_ != RenderScale::SceneSize) emit viewChanged();
+}
+
+OrbitCamera& ViewportWidget::startOrbit() {
+    if (!orbit_) orbit_ = OrbitCamera::fromCamera(sceneCamera_, targetDistance_);
+    return *orbit_;
+}
+
+void ViewportWidget::mousePressEvent(QMouseEvent* event) {
+    if (event->button() != Qt::LeftButton) return QWidget::mousePressEvent(event);
+    dragFrom_ = event->position().toPoint();
+    setCursor(Qt::ClosedHandCursor);
+}
+
+void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
+    if (!dragFrom_) return QWidget::mouseMoveEvent(event);
+    const QPoint now = event->position().toPoint();
+    const QPoint delta = now - *dragFrom_;
+    dragFrom_ = now;
+    if (delta.isNull()) return;
+    // Like grabbing a turntable: dragging right carries the near side of the
+    // scene to the right (the eye swings left round the target); dragging
+    // down shows it more from above.
+    startOrbit().orbit(float(delta.x()) * kOrbitDegPerPixel, float(delta.y()) * kOrbitDegPerPixel);
+    emit viewChanged();
+}
+
+void ViewportWidget::mouseReleaseEvent(QMouseEvent* event) {
+    if (event->button() != Qt::LeftButton) return QWidget::mouseReleaseEvent(event);
+    dragFrom_.reset();
+    setCursor(Qt::OpenHandCursor);
+}
+
+void ViewportWidget::wheelEvent(QWheelEvent* event) {
+    const double steps = event->angleDelta().y() / 120.0;  // one notch = 120
+    if (steps == 0) return;
+    startOrbit().zoom(float(std::pow(kZoomPerWheelStep, steps)));
+    emit viewChanged();
+    event->accept();
+}
+
+}  // namespace f2::viewer

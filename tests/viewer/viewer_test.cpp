@@ -1,0 +1,452 @@
+// QtTest suite of f2-viewer, run on the offscreen platform. It drives the real
+// MainWindow and checks what it shows against the core renderer.
+#include <QDir>
+#include <QDockWidget>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QPlainTextEdit>
+#include <QSignalSpy>
+#include <QSlider>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+#include <QWheelEvent>
+
+#include "animation_exporter.h"
+#include "core/parse/parser.h"
+#include "core/render/renderer.h"
+#include "image_convert.h"
+#include "io/png_writer.h"
+#include "main_window.h"
+#include "orbit_camera.h"
+#include "playback.h"
+#include "render_controller.h"
+#include "scene_document.h"
+#include "timeline_widget.h"
+#include "viewport_widget.h"
+
+using namespace f2;
+using namespace f2::viewer;
+using namespace std::chrono_literals;
+
+namespace {
+
+constexpr int kWaitMs = 10000;  // generous: CI machines are slow and shared
+
+/// A tiny animated scene: a sphere moving right over frames 0..10.
+const char* const kSmallScene = R"(/camera 96 72 0.6 0 0 -10
+/background 20 30 40
+/amb_light 0.3
+/dir_light 0.8 0.3 -0.5 1
+/box floor 40 1 40 0 -2 10
+/sphere ball 1.5 -3 0 8
+/key 0 ball
+/key 10 ball 3 0 8 0 0 0
+)";
+
+void writeFile(const QString& path, const QByteArray& text) {
+    QFile f(path);
+    QVERIFY2(f.open(QIODevice::WriteOnly | QIODevice::Truncate), qPrintable(path));
+    QCOMPARE(f.write(text), text.size());
+}
+
+QByteArray readFile(const QString& path) {
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+/// What `f2 render --frame t --size WxH` gives for the scene's own camera.
+Image coreRender(const SceneDesc& scene, double t, int width, int height) {
+    Renderer renderer;
+    Image image;
+    renderer.render(scene, t, Camera::fromDesc(scene.camera).resized(width, height), image);
+    return image;
+}
+
+/// Waits until the window shows the latest requested frame and it is frame `t`.
+bool waitForShownFrame(MainWindow& w, double t) {
+    QElapsedTimer clock;
+    clock.start();
+    while (clock.elapsed() < kWaitMs) {
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+        if (!w.renderController()->hasPendingFrames() && w.shownFrame().serial != 0 &&
+            w.shownFrame().time == t)
+            return true;
+        QTest::qWait(5);
+    }
+    return false;
+}
+
+void expectViewportMatchesCore(MainWindow& w, double t) {
+    const QImage shown = w.viewport()->image();
+    QVERIFY(!shown.isNull());
+    QCOMPARE(shown.size(), w.viewport()->renderSize());
+    const Image expected = coreRender(*w.document()->scene(), t, shown.width(), shown.height());
+    QVERIFY2(fromQImage(shown) == expected,
+             "viewer image differs from Renderer::render at the same camera/size");
+}
+
+}  // namespace
+
+class ViewerTest : public QObject {
+    Q_OBJECT
+   private slots:
+    void initTestCase();
+
+    void orbitStartsAtSceneCamera();
+    void orbitTurnsAndZoomsAroundTarget();
+    void imageConversionRoundTrips();
+    void playStepScrubShowsCoreImage();
+    void keyboardShortcutsDrivePlayback();
+    void renderScaleFollowsWindow();
+    void dragOrbitsWheelZoomsAndSceneCameraResets();
+    void brokenFileShowsErrorsAndKeepsImage();
+    void reloadsAfterEditorReplacesFile();
+    void windowRespondsDuringSlowFrame();
+    void latestRequestWins();
+    void exportWritesPngSequence();
+};
+
+void ViewerTest::initTestCase() {
+    // Settings (recent files, scale) go to the test's XDG_CONFIG_HOME, not the user's.
+    QCoreApplication::setOrganizationName("F2StageTest");
+    QCoreApplication::setApplicationName("f2-viewer-test");
+}
+
+void ViewerTest::orbitStartsAtSceneCamera() {
+    CameraDesc desc;
+    desc.pose = {{10, 230, -620}, {16, -20, 0}};
+    const Camera camera = Camera::fromDesc(desc);
+    const OrbitCamera orbit = OrbitCamera::fromCamera(camera, 900);
+    const Camera same = orbit.apply(camera);
+    QVERIFY(length(same.eye - camera.eye) < 1e-2f);
+    for (int c = 0; c < 3; ++c)
+        QVERIFY(length(same.worldFromCamera.column(c) - camera.worldFromCamera.column(c)) < 1e-5f);
+    QVERIFY(length(orbit.target() - (camera.eye + camera.worldFromCamera.column(2) * 900)) < 1e-2f);
+}
+
+void ViewerTest::orbitTurnsAndZoomsAroundTarget() {
+    const Camera camera = Camera::fromDesc(CameraDesc{});  // at the origin looking along +z
+    OrbitCamera orbit = OrbitCamera::fromCamera(camera, 100);
+    QVERIFY(length(orbit.target() - Vec3{0, 0, 100}) < 1e-4f);
+
+    orbit.orbit(180, 0);  // half way round: the eye ends up behind the target
+    Camera turned = orbit.apply(camera);
+    QVERIFY(length(turned.eye - Vec3{0, 0, 200}) < 1e-3f);
+    QVERIFY(length(turned.worldFromCamera.column(2) - Vec3{0, 0, -1}) < 1e-5f);
+
+    orbit.orbit(0, 500);  // pitch clamps short of the pole
+    QCOMPARE(orbit.pitchDeg(), OrbitCamera::kMaxPitchDeg);
+    QVERIFY(orbit.apply(camera).eye.y > 99.0f);  // looking down from above
+
+    orbit.zoom(0.5f);
+    QVERIFY(std::abs(length(orbit.apply(camera).eye - orbit.target()) - 50.0f) < 1e-3f);
+    orbit.zoom(0.0f);  // ignored
+    QCOMPARE(orbit.distance(), 50.0f);
+
+    // The default scene's pivot lands among its objects, in front of the eye.
+    const ParseResult seed = parseSceneFile(F2_SOURCE_DIR "/scenes/seed_example.f2");
+    QVERIFY(seed.ok());
+    const float d = orbitTargetDistance(*seed.scene, Camera::fromDesc(seed.scene->camera));
+    QVERIFY(d > 100 && d < 400);
+}
+
+void ViewerTest::imageConversionRoundTrips() {
+    Image image;
+    image.resize(5, 3);  // odd width: QImage pads scanlines
+    for (int y = 0; y < 3; ++y)
+        for (int x = 0; x < 5; ++x) image.at(x, y) = {std::uint8_t(x * 50), std::uint8_t(y * 80), 7};
+    const QImage q = toQImage(image);
+    QCOMPARE(q.size(), QSize(5, 3));
+    QCOMPARE(q.pixelColor(4, 2), QColor(200, 160, 7));
+    QVERIFY(fromQImage(q) == image);
+}
+
+void ViewerTest::playStepScrubShowsCoreImage() {
+    MainWindow w;
+    w.resizeForViewport({200, 150});
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    w.openFile(F2_SOURCE_DIR "/scenes/seed_example.f2");
+    QVERIFY(!w.document()->hasErrors());
+    QCOMPARE(w.playback()->lastFrame(), 15);
+
+    // Plays: time advances and frames arrive.
+    const quint64 before = w.renderController()->framesDelivered();
+    w.playback()->play();
+    QTRY_VERIFY_WITH_TIMEOUT(w.playback()->time() > 2.0, kWaitMs);
+    QTRY_VERIFY_WITH_TIMEOUT(w.renderController()->framesDelivered() >= before + 3, kWaitMs);
+
+    // Steps: stepping pauses on a whole frame.
+    w.playback()->seek(3);
+    w.timeline()->stepRequested(1);
+    QVERIFY(!w.playback()->isPlaying());
+    QCOMPARE(w.playback()->time(), 4.0);
+    QVERIFY(waitForShownFrame(w, 4));
+    expectViewportMatchesCore(w, 4);
+
+    // Scrubs: drag the slider as a user would; the picture follows while held.
+    QSlider* slider = w.timeline()->slider();
+    w.playback()->play();
+    slider->setSliderDown(true);
+    QVERIFY(!w.playback()->isPlaying());
+    for (int v : {6, 8, 11}) slider->setValue(v);
+    QVERIFY(waitForShownFrame(w, 11));
+    expectViewportMatchesCore(w, 11);
+    slider->setSliderDown(false);
+    QVERIFY(w.playback()->isPlaying());  // playing again after the drag
+    w.playback()->pause();
+}
+
+void ViewerTest::keyboardShortcutsDrivePlayback() {
+    MainWindow w;
+    w.resizeForViewport({160, 120});
+    w.show();
+    QVERIFY(QTest::qWaitForWindowActive(&w));
+    w.openFile(F2_SOURCE_DIR "/scenes/seed_example.f2");
+    w.playback()->pause();
+    QTest::keyClick(&w, Qt::Key_End);
+    QCOMPARE(w.playback()->time(), 15.0);
+    QTest::keyClick(&w, Qt::Key_Right);  // wraps round to the start
+    QCOMPARE(w.playback()->time(), 0.0);
+    QTest::keyClick(&w, Qt::Key_Left);
+    QCOMPARE(w.playback()->time(), 15.0);
+    QTest::keyClick(&w, Qt::Key_Home);
+    QCOMPARE(w.playback()->time(), 0.0);
+    QTest::keyClick(&w, Qt::Key_Space);
+    QVERIFY(w.playback()->isPlaying());
+    QTest::keyClick(&w, Qt::Key_Space);
+    QVERIFY(!w.playback()->isPlaying());
+}
+
+void ViewerTest::renderScaleFollowsWindow() {
+    MainWindow w;
+    w.resizeForViewport({480, 300});  // wider than the transport bar needs
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    w.playback()->pause();
+    w.playback()->seek(50);
+    QCOMPARE(w.viewport()->size(), QSize(480, 300));
+    w.setRenderScale(RenderScale::Half);
+    QVERIFY(waitForShownFrame(w, 50));
+    QCOMPARE(w.viewport()->image().size(), QSize(240, 150));
+    expectViewportMatchesCore(w, 50);
+
+    w.resizeForViewport({520, 320});  // resizing re-renders at the new size
+    QTRY_COMPARE_WITH_TIMEOUT(w.viewport()->image().size(), QSize(260, 160), kWaitMs);
+    QVERIFY(waitForShownFrame(w, 50));
+    expectViewportMatchesCore(w, 50);
+
+    w.setRenderScale(RenderScale::SceneSize);  // the scene's /camera, like `f2 render`
+    QTRY_COMPARE_WITH_TIMEOUT(w.viewport()->image().size(), QSize(800, 600), kWaitMs);
+    w.setRenderScale(RenderScale::Full);
+}
+
+void ViewerTest::dragOrbitsWheelZoomsAndSceneCameraResets() {
+    MainWindow w;
+    w.resizeForViewport({480, 300});
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    w.playback()->pause();
+    w.playback()->seek(120);
+    ViewportWidget* view = w.viewport();
+    const Camera scene = view->viewCamera();
+    QVERIFY(!view->isOrbiting());
+
+    // Drag left to right: the eye swings round the target, the target stays in view.
+    const QPoint centre = view->rect().center();
+    QTest::mousePress(view, Qt::LeftButton, {}, centre);
+    QTest::mouseMove(view, centre + QPoint(60, 0));
+    QTest::mouseMove(view, centre + QPoint(120, 20));
+    QTest::mouseRelease(view, Qt::LeftButton, {}, centre + QPoint(120, 20));
+    QVERIFY(view->isOrbiting());
+    const Camera orbited = view->viewCamera();
+    QVERIFY(length(orbited.eye - scene.eye) > 10.0f);
+    QVERIFY(waitForShownFrame(w, 120));
+    QVERIFY(fromQImage(view->image()) !=
+            coreRender(*w.document()->scene(), 120, view->image().width(), view->image().height()));
+    if (qEnvironmentVariableIsSet("F2_VIEWER_DUMP_DIR"))
+        view->image().save(qEnvironmentVariable("F2_VIEWER_DUMP_DIR") + "/orbited.png");
+
+    // Wheel forward zooms in: the eye moves toward the target.
+    const Vec3 before = view->viewCamera().eye;
+    QWheelEvent wheel(QPointF(centre), view->mapToGlobal(QPointF(centre)), {}, {0, 240}, Qt::NoButton, {},
+                      Qt::NoScrollPhase, false);
+    QApplication::sendEvent(view, &wheel);
+    QVERIFY(length(view->viewCamera().eye - before) > 1.0f);
+
+    // View > Scene Camera goes back to exactly the scene's view.
+    view->resetView();
+    QVERIFY(!view->isOrbiting());
+    QVERIFY(waitForShownFrame(w, 120));
+    expectViewportMatchesCore(w, 120);
+}
+
+void ViewerTest::brokenFileShowsErrorsAndKeepsImage() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("scene.f2");
+    writeFile(path, kSmallScene);
+    MainWindow w;
+    w.resizeForViewport({96, 72});
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    w.openFile(path);
+    w.playback()->pause();
+    w.playback()->seek(5);
+    QVERIFY(waitForShownFrame(w, 5));
+    const QImage good = w.viewport()->image();
+    const auto goodScene = w.document()->scene();
+    QVERIFY(!w.diagnosticsDock()->isVisible());
+
+    // Break line 3 on disk; the watcher reloads by itself.
+    const QByteArray broken = QByteArray(kSmallScene).replace("/amb_light 0.3", "/amb_lite 0.3");
+    writeFile(path, broken);
+    QTRY_VERIFY_WITH_TIMEOUT(w.document()->hasErrors(), kWaitMs);
+    const QString shown = w.diagnosticsView()->toPlainText();
+    QVERIFY2(shown.contains(path + ":3:1: error:"), qPrintable(shown));
+    QVERIFY(w.diagnosticsDock()->isVisible());
+    QCOMPARE(w.document()->scene(), goodScene);  // the last good scene stays
+
+    // Rendering goes on with the old scene: a new frame still looks like it.
+    w.playback()->seek(5.0);
+    w.scheduleFrame();
+    QVERIFY(waitForShownFrame(w, 5));
+    QCOMPARE(w.viewport()->image(), good);
+
+    // F5 on the broken file changes nothing either; the viewer never writes it.
+    QVERIFY(!w.document()->reload());
+    QCOMPARE(readFile(path), broken);
+
+    // Fixing it clears the errors and shows the edit.
+    writeFile(path, QByteArray(kSmallScene).replace("/background 20 30 40", "/background 90 30 40"));
+    QTRY_VERIFY_WITH_TIMEOUT(!w.document()->hasErrors(), kWaitMs);
+    QVERIFY(w.document()->scene() != goodScene);
+    QVERIFY(waitForShownFrame(w, 5));
+    QVERIFY(w.viewport()->image() != good);
+    expectViewportMatchesCore(w, 5);
+    QCOMPARE(w.diagnosticsView()->toPlainText(), QStringLiteral("No problems."));
+}
+
+void ViewerTest::reloadsAfterEditorReplacesFile() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("scene.f2");
+    writeFile(path, kSmallScene);
+    SceneDocument doc;
+    QSignalSpy changed(&doc, &SceneDocument::sceneChanged);
+    QVERIFY(doc.load(path));
+    QCOMPARE(changed.count(), 1);
+    QCOMPARE(changed.at(0).at(0).toBool(), true);  // a new document
+
+    // Save the way many editors do: write a new file, rename it over the old.
+    for (int round = 0; round < 2; ++round) {
+        const QString temp = dir.filePath("scene.f2.tmp");
+        writeFile(temp, QByteArray(kSmallScene)
+                            .replace("/fps", "#")
+                            .append("/fps " + QByteArray::number(30 + round) + "\n"));
+        QVERIFY(QFile::remove(path));
+        QVERIFY(QFile::rename(temp, path));
+        QTRY_COMPARE_WITH_TIMEOUT(doc.scene()->fps, 30 + round, kWaitMs);
+        QCOMPARE(changed.last().at(0).toBool(), false);  // same file: keep time and view
+    }
+}
+
+void ViewerTest::windowRespondsDuringSlowFrame() {
+    MainWindow w;
+    w.resizeForViewport({160, 120});
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    w.playback()->pause();
+    QVERIFY(waitForShownFrame(w, 0));
+
+    // Every frame now takes at least 1.5 s on the worker.
+    w.renderController()->setDebugDelay(1500ms);
+    int ticks = 0;
+    QTimer ticker;
+    connect(&ticker, &QTimer::timeout, [&ticks] { ++ticks; });
+    ticker.start(10);
+    QSignalSpy frames(w.renderController(), &RenderController::frameReady);
+
+    QElapsedTimer clock;
+    clock.start();
+    w.playback()->seek(100);
+    w.scheduleFrame();
+    QCoreApplication::processEvents();  // runs requestFrame(): it must return at once
+    QVERIFY2(clock.elapsed() < 200, "requesting a frame blocked the GUI thread");
+    QVERIFY(w.renderController()->hasPendingFrames());
+
+    // Meanwhile the window keeps handling events: timers, resizes, repaints.
+    QTest::qWait(700);
+    QCOMPARE(frames.count(), 0);
+    QVERIFY2(ticks >= 20, qPrintable(QString("only %1 timer ticks in 700 ms").arg(ticks)));
+    w.resize(w.size() + QSize(30, 20));
+    w.viewport()->repaint();  // synchronous paint of the old image, stretched
+    QVERIFY(clock.elapsed() < 1400);
+
+    QVERIFY(frames.wait(kWaitMs));
+    QVERIFY(clock.elapsed() >= 1500);
+    w.renderController()->setDebugDelay(0ms);
+}
+
+void ViewerTest::latestRequestWins() {
+    const ParseResult parsed = parseScene(kSmallScene, "small.f2");
+    QVERIFY(parsed.ok());
+    const auto scene = std::make_shared<const SceneDesc>(*parsed.scene);
+    const Camera camera = Camera::fromDesc(scene->camera);
+
+    RenderController controller;
+    controller.setDebugDelay(300ms);
+    QSignalSpy frames(&controller, &RenderController::frameReady);
+    for (int t = 0; t <= 10; ++t) controller.request({scene, double(t), camera});
+    QTRY_VERIFY_WITH_TIMEOUT(!controller.hasPendingFrames(), kWaitMs);
+    QTest::qWait(400);  // nothing else is coming
+    // The first request was in flight; the nine in between were skipped.
+    QVERIFY2(frames.count() <= 2, qPrintable(QString::number(frames.count())));
+    QCOMPARE(controller.framesSkipped(), quint64(11 - frames.count()));
+    const auto last = frames.last().at(1).value<FrameInfo>();
+    QCOMPARE(last.time, 10.0);
+    QVERIFY(fromQImage(frames.last().at(0).value<QImage>()) == coreRender(*scene, 10, 96, 72));
+}
+
+void ViewerTest::exportWritesPngSequence() {
+    const ParseResult parsed = parseScene(kSmallScene, "small.f2");
+    QVERIFY(parsed.ok());
+    const auto scene = std::make_shared<const SceneDesc>(*parsed.scene);
+    QTemporaryDir dir;
+    ExportJob job;
+    job.scene = scene;
+    job.camera = Camera::fromDesc(scene->camera);
+    job.firstFrame = 0;
+    job.lastFrame = scene->lastFrame();
+    job.sink = std::make_unique<PngSequenceSink>(dir.filePath("out"), "small");
+
+    AnimationExporter exporter;
+    QSignalSpy progress(&exporter, &AnimationExporter::progress);
+    QSignalSpy finished(&exporter, &AnimationExporter::finished);
+    exporter.start(std::move(job));
+    QVERIFY(finished.wait(kWaitMs * 3));
+    QVERIFY2(finished.at(0).at(0).toBool(), qPrintable(finished.at(0).at(1).toString()));
+    QCOMPARE(progress.count(), 11);
+    for (int f : {0, 7, 10}) {
+        Image read;
+        std::string error;
+        const QString file = dir.filePath(QStringLiteral("out/small_%1.png").arg(f, 4, 10, QChar('0')));
+        QVERIFY2(readPng(file.toStdString(), read, error), error.c_str());
+        QVERIFY(read == coreRender(*scene, f, 96, 72));
+    }
+
+    // Cancelling stops early and says so.
+    ExportJob slow;
+    slow.scene = scene;
+    slow.camera = Camera::fromDesc(scene->camera).resized(1600, 1200);
+    slow.lastFrame = 10;
+    slow.sink = std::make_unique<PngSequenceSink>(dir.filePath("cancelled"), "small");
+    QSignalSpy finished2(&exporter, &AnimationExporter::finished);
+    exporter.start(std::move(slow));
+    exporter.cancel();
+    QVERIFY(finished2.wait(kWaitMs));
+    QCOMPARE(finished2.at(0).at(0).toBool(), false);
+    QVERIFY(finished2.at(0).at(1).toString().contains("cancelled"));
+}
+
+QTEST_MAIN(ViewerTest)
+#include "viewer_test.moc"
