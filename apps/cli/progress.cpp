@@ -1,0 +1,78 @@
+#include "progress.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+namespace f2::cli {
+
+Progress::Progress(int total, bool live) : total_(total), live_(live) {}
+
+bool Progress::isInteractive() {
+    const char* term = std::getenv("TERM");
+    return ::isatty(STDERR_FILENO) && !(term && std::strcmp(term, "dumb") == 0);
+}
+
+double Progress::elapsedSeconds() const {
+    return std::chrono::duration<double>(Clock::now() - start_).count();
+}
+
+double Progress::framesPerSecond() const {
+    double s = elapsedSeconds();
+    int rendered = done_ - skipped_;
+    return s > 0 && rendered > 0 ? rendered / s : 0;
+}
+
+void Progress::update(int done) {
+    done_ = done;
+    if (!live_) return;
+    auto now = Clock::now();
+    // At most ~10 redraws a second: a terminal is slower than a small frame.
+    if (done < total_ && now - lastDraw_ < std::chrono::milliseconds(100)) return;
+    lastDraw_ = now;
+
+    constexpr int kBarWidth = 24;
+    int filled = total_ > 0 ? int(std::lround(double(kBarWidth) * done / total_)) : kBarWidth;
+    std::string bar(std::size_t(filled), '#');
+    bar.resize(kBarWidth, '-');
+    double fps = framesPerSecond();
+    std::string left = fps > 0 ? formatDuration((total_ - done) / fps) + " left" : "";
+    char line[160];
+    int n = std::snprintf(line, sizeof line, "\r[%s] %d/%d frames  %.1f fps  %s", bar.c_str(), done, total_,
+                          fps, left.c_str());
+    std::size_t width = n > 0 ? std::size_t(n) : 0;
+    // Blank out what is left of a longer previous line.
+    std::string pad(drawnWidth_ > width ? drawnWidth_ - width : 0, ' ');
+    std::fprintf(stderr, "%s%s", line, pad.c_str());
+    std::fflush(stderr);
+    drawnWidth_ = width;
+}
+
+void Progress::clear() {
+    if (!live_ || drawnWidth_ == 0) return;
+    std::fprintf(stderr, "\r%*s\r", int(drawnWidth_), "");
+    std::fflush(stderr);
+    drawnWidth_ = 0;
+}
+
+std::string Progress::summary() const {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.1f s, %.1f frames/s", elapsedSeconds(), framesPerSecond());
+    return text;
+}
+
+std::string formatDuration(double seconds) {
+    long s = std::lround(std::max(0.0, seconds));
+    char text[32];
+    if (s >= 3600)
+        std::snprintf(text, sizeof text, "%ld:%02ld:%02ld", s / 3600, s / 60 % 60, s % 60);
+    else
+        std::snprintf(text, sizeof text, "%ld:%02ld", s / 60, s % 60);
+    return text;
+}
+
+}  // namespace f2::cli

@@ -1,0 +1,49 @@
+#include "io/frame_primitives.h"
+
+#include <charconv>
+
+#include "core/anim/frame_builder.h"
+
+namespace f2 {
+
+namespace {
+std::string shapeLabel(const SceneObject& object, const ModelShape& shape) {
+    std::string label = object.name + "." + kPartNames[int(shape.part)];
+    // The robot's eyes are the two spheres on its head, left (-x) first.
+    if (object.kind == ObjectKind::Robot && shape.kind == ShapeKind::Sphere)
+        label += shape.centre.x < 0 ? " (left eye)" : " (right eye)";
+    return label;
+}
+}  // namespace
+
+std::vector<PlacedPrimitive> framePrimitives(const SceneDesc& scene, double t) {
+    std::vector<PlacedPrimitive> out;
+    out.reserve(scene.primitiveCount());
+    for (const SceneObject& object : scene.objects) {
+        Transform worldFromObject = objectFrame(object, t);
+        if (!isModel(object.kind)) {
+            const Appearance& look = object.appearance[0];
+            out.push_back({object.name, shapeKindOf(object.kind), object.size, worldFromObject, look.color,
+                           look.material});
+            continue;
+        }
+        auto worldFromPart = modelPartFrames(object, worldFromObject, t);
+        for (const ModelShape& shape : modelOf(object.kind).shapes) {
+            const Appearance& look = object.appearance[int(shape.part)];
+            Transform partFromShape{Mat3{}, shape.centre};
+            out.push_back({shapeLabel(object, shape), shape.kind, shape.size,
+                           worldFromPart[int(shape.part)] * partFromShape,
+                           shape.ownColor ? shape.color : look.color, look.material});
+        }
+    }
+    return out;
+}
+
+std::string formatNumber(float value) {
+    if (value == 0) return "0";  // also turns -0 into 0
+    char text[32];
+    auto result = std::to_chars(text, text + sizeof text, value);
+    return std::string(text, result.ptr);
+}
+
+}  // namespace f2

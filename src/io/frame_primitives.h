@@ -1,0 +1,31 @@
+#pragma once
+/// The primitives of one evaluated frame as exact placed shapes (kind, size,
+/// local-to-world transform, colour, material), in scene order — what the
+/// exporters write. Built from the animation API rather than from the
+/// renderer's FrameScene, whose intersection layout is free to change.
+#include <string>
+#include <vector>
+
+#include "core/math/transform.h"
+#include "core/scene/models.h"
+
+namespace f2 {
+
+struct PlacedPrimitive {
+    std::string label;  ///< "floor", "r1.head", "r1.head (left eye)"...
+    ShapeKind kind = ShapeKind::Sphere;
+    Vec3 size;                 ///< sphere (r, 0, 0); cylinder (r, h, 0); box (sx, sy, sz)
+    Transform worldFromLocal;  ///< canonical frame: centred, cylinder axis local y
+    Color8 color;
+    Material material;
+};
+
+/// Every primitive at time `t` (frames): objects as created, a robot as body,
+/// head, left eye, right eye, lhand, rhand; a human as body, head, lhand,
+/// rhand (the order of the renderer and of the Embree peer's format).
+std::vector<PlacedPrimitive> framePrimitives(const SceneDesc& scene, double t);
+
+/// Text of a float that reads back to the same float, in the C locale.
+std::string formatNumber(float value);
+
+}  // namespace f2

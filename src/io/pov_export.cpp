@@ -1,0 +1,125 @@
+#include "io/pov_export.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "io/frame_primitives.h"
+
+namespace f2 {
+
+namespace {
+// Strings are built with append: GCC 12 warns falsely (-Wrestrict) on
+// `"literal" + std::string` chains.
+std::string join(std::initializer_list<std::string> parts) {
+    std::string text;
+    for (const std::string& p : parts) text.append(p);
+    return text;
+}
+
+std::string vec(Vec3 v) {
+    return join({"<", formatNumber(v.x), ", ", formatNumber(v.y), ", ", formatNumber(v.z), ">"});
+}
+
+std::string color(Color8 c) {
+    return join({"<", std::to_string(c.r), ", ", std::to_string(c.g), ", ", std::to_string(c.b), "> / 255"});
+}
+
+/// POV-Ray's `matrix` maps a row vector: p' = p * M, rows 0..2 the images of
+/// the local axes (our columns), row 3 the translation.
+std::string matrix(const Transform& m) {
+    std::string text = "matrix <";
+    for (int axis = 0; axis < 3; ++axis) {
+        Vec3 c = m.linear.column(axis);
+        text.append(join({formatNumber(c.x), ", ", formatNumber(c.y), ", ", formatNumber(c.z), ",  "}));
+    }
+    Vec3 t = m.translation;
+    return text.append(join({formatNumber(t.x), ", ", formatNumber(t.y), ", ", formatNumber(t.z), ">"}));
+}
+
+std::string shape(const PlacedPrimitive& p) {
+    switch (p.kind) {
+        case ShapeKind::Sphere:
+            return join({"sphere { <0, 0, 0>, ", formatNumber(p.size.x)});
+        case ShapeKind::Cylinder: {
+            std::string h = formatNumber(p.size.y * 0.5f);
+            // Closed (no `open`): caps at local y = +-h/2, as SPEC 4.
+            return join({"cylinder { <0, -", h, ", 0>, <0, ", h, ", 0>, ", formatNumber(p.size.x)});
+        }
+        case ShapeKind::Box:
+            return join({"box { ", vec(p.size * -0.5f), ", ", vec(p.size * 0.5f)});
+    }
+    return "";
+}
+
+/// Radius of a sphere around the primitive's centre that holds it.
+float boundingRadius(const PlacedPrimitive& p) {
+    switch (p.kind) {
+        case ShapeKind::Sphere:
+            return p.size.x;
+        case ShapeKind::Cylinder:
+            return std::hypot(p.size.x, p.size.y * 0.5f);
+        case ShapeKind::Box:
+            return length(p.size) * 0.5f;
+    }
+    return 0;
+}
+}  // namespace
+
+std::string povScene(const SceneDesc& scene, double t, const Camera& camera, const std::string& source) {
+    std::vector<PlacedPrimitive> prims = framePrimitives(scene, t);
+    std::ostringstream out;
+    out.imbue(std::locale::classic());
+    out << "// " << source << " at frame " << t << ", exported by f2 (F2 Stage).\n"
+        << "// Render: povray +I<this file> +O<image>.png +W" << camera.width << " +H" << camera.height
+        << " -A +FN -D\n"
+        << "// (+A0.1 for anti-aliasing). Coordinates are f2's: left-handed, y up, like POV-Ray's.\n"
+        << "#version 3.7;\n\n"
+        // srgb working gamma = POV-Ray's default sRGB output gamma: colours go out
+        // as computed, like f2's (it shades in display values, no gamma step).
+        // Ambient light 1: each finish carries ka * (the scene's ambient).
+        << "global_settings { assumed_gamma srgb ambient_light rgb <1, 1, 1> max_trace_level 1 }\n\n"
+        << "background { rgb " << color(scene.background) << " }\n\n";
+
+    // SPEC 2: the ray of image point (x, y) in [-1/2, 1/2] x [-h/2w, h/2w] is
+    // R (x, y, d); POV-Ray's is direction + x' right + y' up with x', y' in
+    // [-1/2, 1/2], so right = R x^, up = R y^ * h/w, direction = R z^ * d.
+    const Mat3& r = camera.worldFromCamera;
+    float aspect = float(camera.height) / float(camera.width);
+    out << "camera {\n  perspective\n  location " << vec(camera.eye) << "\n  right " << vec(r.column(0))
+        << "\n  up " << vec(r.column(1) * aspect) << "\n  direction " << vec(r.column(2) * camera.distance)
+        << "\n}\n\n";
+
+    // Directional lights: parallel lights placed beyond everything (POV-Ray
+    // casts no shadow from objects behind a light's location).
+    Vec3 lo{kInfinity, kInfinity, kInfinity}, hi = -lo;
+    auto grow = [&](Vec3 c, float radius) {
+        lo = vmin(lo, c - Vec3{radius, radius, radius});
+        hi = vmax(hi, c + Vec3{radius, radius, radius});
+    };
+    grow(camera.eye, 0);
+    for (const PlacedPrimitive& p : prims) grow(p.worldFromLocal.translation, boundingRadius(p));
+    Vec3 centre = (lo + hi) * 0.5f;
+    float far = length(hi - lo) * 2 + 1000;
+    for (const DirectionalLight& light : scene.lights) {
+        Vec3 toLight = -normalize(light.direction);
+        std::string i = formatNumber(light.intensity);
+        out << "light_source { " << vec(centre + toLight * far) << " color rgb <" << i << ", " << i << ", "
+            << i << "> parallel point_at " << vec(centre) << " }  // travels along " << vec(light.direction)
+            << "\n";
+    }
+    out << "\n";
+
+    for (const PlacedPrimitive& p : prims) {
+        const Material& m = p.material;
+        out << "// " << p.label << "\n"
+            << shape(p) << "\n  " << matrix(p.worldFromLocal) << "\n  pigment { rgb " << color(p.color)
+            << " }\n"
+            << "  finish { ambient " << formatNumber(m.ka * scene.ambient) << " diffuse "
+            << formatNumber(m.kd) << " phong " << formatNumber(m.ks) << " phong_size " << formatNumber(m.n)
+            << " }\n}\n";
+    }
+    return out.str();
+}
+
+}  // namespace f2
