@@ -1,0 +1,201 @@
+#include "bench_measure.h"
+
+#include <sys/resource.h>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <vector>
+
+#include "core/parse/parser.h"
+#include "core/render/renderer.h"
+#include "core/render/shading.h"
+#include "core/render/thread_pool.h"
+
+namespace f2::cli {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+
+double msBetween(Clock::time_point a, Clock::time_point b) {
+    return std::chrono::duration<double, std::milli>(b - a).count();
+}
+
+/// Value at fraction q (0..1) of sorted data, linear between neighbours.
+double quantile(const std::vector<double>& sorted, double q) {
+    if (sorted.empty()) return 0;
+    double pos = q * double(sorted.size() - 1);
+    std::size_t i = std::size_t(pos);
+    if (i + 1 >= sorted.size()) return sorted.back();
+    return sorted[i] + (sorted[i + 1] - sorted[i]) * (pos - double(i));
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return quantile(v, 0.5);
+}
+
+std::string jsonString(const std::string& s) {
+    std::string out = "\"";
+    for (char c : s) {
+        if (c == '"' || c == '\\') {
+            out += '\\';
+            out += c;
+        } else if (static_cast<unsigned char>(c) < 0x20) {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "\\u%04x", unsigned(c));
+            out += buf;
+        } else {
+            out += c;
+        }
+    }
+    return out + '"';
+}
+
+/// Fixed-point number for JSON and tables; snprintf with '.' as the program
+/// never calls setlocale.
+std::string fixed(double v, int digits) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+    return buf;
+}
+}  // namespace
+
+std::optional<LoadedScene> loadBenchScene(const BenchSceneSpec& spec, int width, int height) {
+    const std::string name = benchSceneName(spec);
+    ParseResult parsed = parseScene(benchSceneText(spec, width, height), "<" + name + ">");
+    for (const Diagnostic& d : parsed.diagnostics) std::cerr << d.format() << '\n';
+    if (!parsed.ok()) return std::nullopt;
+    return LoadedScene{std::move(*parsed.scene), name};
+}
+
+double peakRssMb() {
+    std::ifstream status("/proc/self/status");
+    std::string line;
+    while (std::getline(status, line)) {
+        if (line.rfind("VmHWM:", 0) == 0) {
+            std::istringstream fields(line.substr(6));
+            double kb = 0;
+            if (fields >> kb) return kb / 1024.0;
+        }
+    }
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return double(usage.ru_maxrss) / 1024.0;  // kilobytes on Linux
+}
+
+bool resetPeakRss() {
+#if defined(__GLIBC__)
+    malloc_trim(0);  // hand freed heap back first, or the new mark starts at the old peak
+#endif
+    std::ofstream clear("/proc/self/clear_refs");
+    clear << "5\n";  // 5 = reset the peak RSS (proc(5))
+    clear.flush();
+    return bool(clear);
+}
+
+BenchResult runBench(const SceneDesc& scene, const std::string& name, const Camera& camera,
+                     const BenchSettings& settings) {
+    Renderer renderer(settings.threads);
+    Image image;
+    const RenderOptions options{settings.antialias};
+    BenchResult result;
+    result.scene = name;
+    result.width = camera.width;
+    result.height = camera.height;
+    result.threads = renderer.threadCount();
+    result.antialias = settings.antialias;
+    result.frame = settings.frame;
+    result.step = settings.step;
+    // Time of iteration k: with a step, loop over [0, last key] like playback.
+    const double span = std::max(scene.lastFrame(), 1);
+    long iteration = 0;
+    auto nextTime = [&] {
+        double t = settings.frame + settings.step * double(iteration++);
+        return settings.step == 0 ? t : std::fmod(t, span);
+    };
+
+    // Warm-up: fills caches, grows the renderer's buffers, wakes the pool and
+    // lets the CPU clock settle; none of it is timed.
+    const auto warmStart = Clock::now();
+    do {
+        renderer.render(scene, nextTime(), camera, image, options);
+        ++result.warmupFrames;
+    } while (msBetween(warmStart, Clock::now()) < settings.warmupSeconds * 1e3);
+
+    std::vector<double> total, eval, build, trace;
+    const auto start = Clock::now();
+    for (;;) {
+        const auto before = Clock::now();
+        FrameTimings t = renderer.render(scene, nextTime(), camera, image, options);
+        const auto after = Clock::now();
+        total.push_back(msBetween(before, after));
+        eval.push_back(t.evaluateMs);
+        build.push_back(t.buildMs);
+        trace.push_back(t.traceMs);
+        result.rays = t.rays;  // counted by the renderer as it casts them
+        if (total.size() >= std::size_t(kMinTimedFrames) && msBetween(start, after) >= settings.seconds * 1e3)
+            break;
+    }
+    result.seconds = msBetween(start, Clock::now()) / 1e3;
+    result.frames = int(total.size());
+    std::sort(total.begin(), total.end());
+    result.msMedian = quantile(total, 0.5);
+    result.msMin = total.front();
+    result.msMax = total.back();
+    result.msP10 = quantile(total, 0.1);
+    result.msP90 = quantile(total, 0.9);
+    result.msEval = median(eval);
+    result.msBuild = median(build);
+    result.msTrace = median(trace);
+    result.primitives = renderer.frame().primitives.size();
+    result.peakRssMb = peakRssMb();
+    return result;
+}
+
+std::string benchJson(const BenchResult& r) {
+    std::ostringstream j;
+    j << "{\"scene\": " << jsonString(r.scene) << ", \"size\": \"" << r.width << 'x' << r.height << "\""
+      << ", \"width\": " << r.width << ", \"height\": " << r.height << ", \"threads\": " << r.threads
+      << ", \"aa\": " << r.antialias << ", \"frame_t\": " << fixed(r.frame, 3)
+      << ", \"step\": " << fixed(r.step, 3) << ", \"primitives\": " << r.primitives
+      << ", \"frames\": " << r.frames << ", \"warmup_frames\": " << r.warmupFrames
+      << ", \"seconds\": " << fixed(r.seconds, 3) << ", \"fps\": " << fixed(r.fps(), 2)
+      << ", \"ms_median\": " << fixed(r.msMedian, 4) << ", \"ms_min\": " << fixed(r.msMin, 4)
+      << ", \"ms_max\": " << fixed(r.msMax, 4) << ", \"ms_p10\": " << fixed(r.msP10, 4)
+      << ", \"ms_p90\": " << fixed(r.msP90, 4) << ", \"ms_eval\": " << fixed(r.msEval, 4)
+      << ", \"ms_build\": " << fixed(r.msBuild, 4) << ", \"ms_trace\": " << fixed(r.msTrace, 4)
+      << ", \"primary_rays\": " << r.rays.primary << ", \"shadow_rays\": " << r.rays.shadow
+      << ", \"mrays_per_s\": " << fixed(r.mraysPerSecond(), 3)
+      << ", \"mrays_per_s_trace\": " << fixed(r.mraysPerSecondTrace(), 3)
+      << ", \"peak_rss_mb\": " << fixed(r.peakRssMb, 2) << "}";
+    return j.str();
+}
+
+void printBench(std::ostream& out, const BenchResult& r) {
+    out << "f2 bench: " << r.scene << " frame " << r.frame
+        << (r.step != 0 ? " stepping " + fixed(r.step, 3) : "") << " (" << r.primitives << " primitives), "
+        << r.width << 'x' << r.height << (r.antialias > 1 ? " aa " + std::to_string(r.antialias) : "") << ", "
+        << r.threads << " threads\n"
+        << "  frames      " << r.frames << " timed in " << fixed(r.seconds, 2) << " s after "
+        << r.warmupFrames << " warm-up\n"
+        << "  frame time  median " << fixed(r.msMedian, 3) << " ms  (min " << fixed(r.msMin, 3) << ", p10 "
+        << fixed(r.msP10, 3) << ", p90 " << fixed(r.msP90, 3) << ", max " << fixed(r.msMax, 3) << ")\n"
+        << "  FPS         " << fixed(r.fps(), 1) << "  (1000 / median frame time)\n"
+        << "  split       evaluate " << fixed(r.msEval, 3) << " ms, build " << fixed(r.msBuild, 3)
+        << " ms, trace " << fixed(r.msTrace, 3) << " ms  (medians)\n"
+        << "  rays        " << r.rays.primary << " primary + " << r.rays.shadow
+        << " shadow per frame: " << fixed(r.mraysPerSecond(), 1) << " Mrays/s over the frame, "
+        << fixed(r.mraysPerSecondTrace(), 1) << " over trace\n"
+        << "  peak RSS    " << fixed(r.peakRssMb, 1) << " MB\n";
+}
+
+}  // namespace f2::cli

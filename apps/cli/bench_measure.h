@@ -1,0 +1,72 @@
+#pragma once
+/// The measurement behind `f2 bench`: render one frame over and over through
+/// Renderer::render (evaluate + build + trace), after a warm-up, and summarise
+/// the frame times. See docs/performance.md for what is timed and why.
+#include <cstdint>
+#include <ostream>
+#include <string>
+
+#include "core/anim/frame_scene.h"
+#include "core/render/camera.h"
+#include "core/render/renderer.h"
+#include "core/scene/bench_scenes.h"
+#include "scene_source.h"
+
+namespace f2::cli {
+
+struct BenchSettings {
+    double frame = 0;  ///< animation time t (frames)
+    /// 0: every iteration renders t = frame. Otherwise iteration k renders
+    /// frame + k * step, looped over the scene's animation (playback: things
+    /// move between frames, so a BVH that refits pays what playback pays).
+    double step = 0;
+    int threads = 0;             ///< 0 = every core
+    double seconds = 3.0;        ///< timed duration (at least kMinTimedFrames frames)
+    double warmupSeconds = 0.5;  ///< untimed frames first (at least one frame)
+    int antialias = 1;
+};
+
+/// Timed frames never fewer than this, however slow, so a median exists.
+inline constexpr int kMinTimedFrames = 3;
+
+
+struct BenchResult {
+    std::string scene;
+    int width = 0, height = 0, threads = 0, antialias = 1;
+    double frame = 0, step = 0;
+    std::size_t primitives = 0;
+    int frames = 0, warmupFrames = 0;
+    double seconds = 0;  ///< wall time of the timed frames
+    /// Whole-frame wall time around Renderer::render (ms).
+    double msMedian = 0, msMin = 0, msMax = 0, msP10 = 0, msP90 = 0;
+    /// Medians of the split Renderer::render reports (ms).
+    double msEval = 0, msBuild = 0, msTrace = 0;
+    RayCounts rays;  ///< of the last timed frame
+    double peakRssMb = 0;
+
+    double fps() const { return msMedian > 0 ? 1000.0 / msMedian : 0; }
+    /// Rays per second over the whole frame (evaluate + build + trace).
+    double mraysPerSecond() const { return msMedian > 0 ? double(rays.total()) / (msMedian * 1e3) : 0; }
+    /// Rays per second over the trace phase alone (the peers' usual figure).
+    double mraysPerSecondTrace() const { return msTrace > 0 ? double(rays.total()) / (msTrace * 1e3) : 0; }
+};
+
+/// Parses a generated scene (robots:N, spheres:N) with its camera at width x height.
+std::optional<LoadedScene> loadBenchScene(const BenchSceneSpec& spec, int width, int height);
+
+/// Runs the benchmark; `name` labels the result.
+BenchResult runBench(const SceneDesc& scene, const std::string& name, const Camera& camera,
+                     const BenchSettings& settings);
+
+
+/// Peak resident set of this process in MB (VmHWM, else ru_maxrss).
+double peakRssMb();
+/// Restarts the peak-RSS mark at the current RSS (Linux clear_refs); false if unsupported.
+bool resetPeakRss();
+
+/// One-line JSON object with every field of the result.
+std::string benchJson(const BenchResult& result);
+/// Human-readable summary.
+void printBench(std::ostream& out, const BenchResult& result);
+
+}  // namespace f2::cli

@@ -1,0 +1,152 @@
+#include "bench_study.h"
+
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace f2::cli {
+
+namespace {
+
+struct StudyPoint {
+    BenchShape shape;
+    int count;
+    BenchResult result;
+};
+
+std::string fixed(double v, int digits) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+    return buf;
+}
+
+const char* shapeName(BenchShape shape) { return shape == BenchShape::Robots ? "robots" : "spheres"; }
+
+void printTable(std::ostream& out, const std::string& title, const char* column, BenchShape shape,
+                const std::vector<StudyPoint>& points) {
+    out << "\n### " << title << "\n\n"
+        << "| " << column
+        << " | Primitives | FPS | Frame, ms (median) | min..max, ms | Evaluate, ms | Build, ms "
+        << "| Trace, ms | Mrays/s | Peak RSS, MB |\n"
+        << "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    for (const StudyPoint& p : points) {
+        if (p.shape != shape) continue;
+        const BenchResult& r = p.result;
+        out << "| " << p.count << " | " << r.primitives << " | " << fixed(r.fps(), 1) << " | "
+            << fixed(r.msMedian, 2) << " | " << fixed(r.msMin, 2) << ".." << fixed(r.msMax, 2) << " | "
+            << fixed(r.msEval, 2) << " | " << fixed(r.msBuild, 2) << " | " << fixed(r.msTrace, 2) << " | "
+            << fixed(r.mraysPerSecond(), 1) << " | " << fixed(r.peakRssMb, 1) << " |\n";
+    }
+}
+
+bool writeCsv(const std::string& path, const std::vector<StudyPoint>& points) {
+    std::ofstream csv(path);
+    csv << "shape,count,primitives,width,height,threads,frame,frames,fps,ms_median,ms_min,ms_max,ms_p10,ms_"
+           "p90,"
+           "ms_eval,ms_build,ms_trace,primary_rays,shadow_rays,mrays_per_s,peak_rss_mb\n";
+    for (const StudyPoint& p : points) {
+        const BenchResult& r = p.result;
+        csv << shapeName(p.shape) << ',' << p.count << ',' << r.primitives << ',' << r.width << ','
+            << r.height << ',' << r.threads << ',' << r.frame << ',' << r.frames << ',' << fixed(r.fps(), 3)
+            << ',' << fixed(r.msMedian, 4) << ',' << fixed(r.msMin, 4) << ',' << fixed(r.msMax, 4) << ','
+            << fixed(r.msP10, 4) << ',' << fixed(r.msP90, 4) << ',' << fixed(r.msEval, 4) << ','
+            << fixed(r.msBuild, 4) << ',' << fixed(r.msTrace, 4) << ',' << r.rays.primary << ','
+            << r.rays.shadow << ',' << fixed(r.mraysPerSecond(), 3) << ',' << fixed(r.peakRssMb, 2) << '\n';
+    }
+    csv.flush();
+    return bool(csv);
+}
+
+/// A gnuplot single-quoted string: only the quote itself needs doubling.
+std::string gnuplotQuoted(const std::string& s) {
+    std::string out = "'";
+    for (char c : s) out += c == '\'' ? std::string("''") : std::string(1, c);
+    return out + "'";
+}
+
+/// Whether this gnuplot has the cairo PNG terminal (nicer text); else plain `png`.
+bool hasPngCairo() {
+    FILE* pipe = popen("gnuplot -e 'set terminal' 2>&1", "r");
+    if (!pipe) return false;
+    std::string text;
+    char buf[512];
+    while (std::fgets(buf, sizeof buf, pipe)) text += buf;
+    pclose(pipe);
+    return text.find("pngcairo") != std::string::npos;
+}
+
+bool writePlot(const std::string& path, const std::vector<StudyPoint>& points) {
+    const BenchResult& any = points.front().result;
+    std::ostringstream script;
+    script << "set terminal " << (hasPngCairo() ? "pngcairo size 900,600" : "png size 900,600") << '\n'
+           << "set output " << gnuplotQuoted(path) << '\n'
+           << "set title "
+           << gnuplotQuoted("f2 bench --study: whole frame (evaluate + build + trace), " +
+                            std::to_string(any.width) + "x" + std::to_string(any.height) + ", " +
+                            std::to_string(any.threads) + " threads")
+           << '\n'
+           << "set logscale x\nset xlabel 'N (robots or spheres)'\nset ylabel 'frames per second (median)'\n"
+           << "set yrange [0:*]\nset grid\nset key top right\n";
+    for (BenchShape shape : {BenchShape::Robots, BenchShape::Spheres}) {
+        script << '$' << shapeName(shape) << " << EOD\n";
+        for (const StudyPoint& p : points)
+            if (p.shape == shape) script << p.count << ' ' << fixed(p.result.fps(), 3) << '\n';
+        script << "EOD\n";
+    }
+    script << "plot $robots using 1:2 with linespoints lw 2 pt 7 title 'robots (table 4.1)', "
+              "$spheres using 1:2 with linespoints lw 2 pt 5 title 'spheres (table 4.2)'\n";
+    FILE* pipe = popen("gnuplot", "w");
+    if (!pipe) return false;
+    std::string text = script.str();
+    bool written = std::fwrite(text.data(), 1, text.size(), pipe) == text.size();
+    return pclose(pipe) == 0 && written;
+}
+
+}  // namespace
+
+int runStudy(const StudySettings& settings) {
+    std::vector<StudyPoint> points;
+    for (BenchShape shape : {BenchShape::Robots, BenchShape::Spheres}) {
+        for (int count : settings.counts) {
+            BenchSceneSpec spec{shape, count};
+            auto loaded = loadBenchScene(spec, settings.width, settings.height);
+            if (!loaded) return 1;
+            resetPeakRss();  // each point's own peak, as far as the kernel allows
+            Camera camera = Camera::fromDesc(loaded->scene.camera);
+            BenchResult result = runBench(loaded->scene, loaded->name, camera, settings.bench);
+            std::cerr << "f2 bench --study: " << result.scene << ": " << fixed(result.fps(), 1) << " FPS ("
+                      << fixed(result.msMedian, 2) << " ms, " << result.frames << " frames)\n";
+            points.push_back({shape, count, std::move(result)});
+        }
+    }
+    const BenchResult& first = points.front().result;
+    std::cout << "## f2 bench --study: FPS against the number of objects\n\n"
+              << "Whole frame (evaluate + build + trace + shade), " << first.width << "x" << first.height
+              << ", shadows on, " << first.threads << " threads, frame " << first.frame
+              << ", median of >= " << settings.bench.seconds << " s per point.\n";
+    printTable(std::cout, "Table 4.1. Frame rate with robots (robots:N)", "Robots", BenchShape::Robots,
+               points);
+    printTable(std::cout, "Table 4.2. Frame rate with spheres (spheres:N)", "Spheres", BenchShape::Spheres,
+               points);
+
+    int code = 0;
+    if (!writeCsv(settings.csvOut, points)) {
+        std::cerr << "f2 bench: cannot write " << settings.csvOut << '\n';
+        code = 1;
+    } else {
+        std::cerr << "f2 bench: wrote " << settings.csvOut << '\n';
+    }
+    if (!settings.plotOut.empty()) {
+        if (writePlot(settings.plotOut, points)) {
+            std::cerr << "f2 bench: wrote " << settings.plotOut << '\n';
+        } else {
+            std::cerr << "f2 bench: gnuplot could not write " << settings.plotOut
+                      << " (is gnuplot installed? the tables and CSV are complete)\n";
+            code = 1;
+        }
+    }
+    return code;
+}
+
+}  // namespace f2::cli

@@ -1,0 +1,168 @@
+#!/usr/bin/env bash
+# compare_peers.sh — f2 against the Embree peer and POV-Ray 3.7 on the same frames,
+# in the same run (docs/performance.md).
+#
+#   scripts/compare_peers.sh [--f2 PATH] [--threads N] [--frame T] [--seconds S]
+#                            [--scenes "default robots:1 ..."] [--pov-scenes "default ..."]
+#                            [--rebuild "low medium high refit"] [--no-embree] [--no-pov]
+#                            [--work DIR]
+#
+# For every scene: `f2 bench --json` times the whole frame (evaluate + build +
+# trace); `f2 export --prims` writes that very frame for the peer, which then
+# runs once per --rebuild mode (a BVH update every frame, as f2 does); the
+# table shows the best of those modes and the ratio f2 FPS / Embree FPS.
+# POV-Ray renders `f2 export --pov` of the frame with -A +WT2; its reported
+# "Trace Time" is divided by f2's median frame time.
+# Generated scenes (robots:N, spheres:N) reach export through
+# `f2 bench --scene X --write-scene FILE`.
+set -euo pipefail
+ROOT=$(cd "$(dirname "$0")/.." && pwd)
+
+F2=${F2:-}
+THREADS=2
+FRAME=0
+SECONDS_PER_RUN=3
+SCENES="default robots:1 robots:1000 robots:10000 spheres:1000"
+POV_SCENES="default"
+REBUILD_MODES="low medium high refit"
+RUN_EMBREE=1
+RUN_POV=1
+WORK=$ROOT/build/peers/work
+SIZE=800x600
+
+usage() { sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; }
+while [ $# -gt 0 ]; do
+  case $1 in
+    --f2) F2=$2; shift ;;
+    --threads) THREADS=$2; shift ;;
+    --frame) FRAME=$2; shift ;;
+    --seconds) SECONDS_PER_RUN=$2; shift ;;
+    --scenes) SCENES=$2; shift ;;
+    --pov-scenes) POV_SCENES=$2; shift ;;
+    --rebuild) REBUILD_MODES=$2; shift ;;
+    --no-embree) RUN_EMBREE=0 ;;
+    --no-pov) RUN_POV=0 ;;
+    --work) WORK=$2; shift ;;
+    -h|--help) usage; exit 0 ;;
+    *) echo "compare_peers: unknown option $1 (see --help)" >&2; exit 2 ;;
+  esac
+  shift
+done
+
+log() { echo "compare_peers: $*" >&2; }
+as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
+
+# --- f2: an existing optimised build, else build the headless preset ----------
+if [ -z "$F2" ]; then
+  for dir in build/release build/headless build/bench; do
+    if [ -x "$ROOT/$dir/apps/cli/f2" ]; then F2=$ROOT/$dir/apps/cli/f2; break; fi
+  done
+fi
+if [ -z "$F2" ]; then
+  log "no f2 binary found; building the headless preset"
+  (cd "$ROOT" && cmake --preset headless -G Ninja >/dev/null && cmake --build --preset headless --target f2)
+  F2=$ROOT/build/headless/apps/cli/f2
+fi
+"$F2" export --help >/dev/null 2>&1 || { log "$F2 has no 'export' command yet"; exit 1; }
+mkdir -p "$WORK"
+log "f2: $F2"
+
+# --- the Embree peer ------------------------------------------------------------
+PEER=$ROOT/build/peers/embree_f2
+PEER_SRC=${PEER_SRC:-/work/shared/peers/embree}
+if [ "$RUN_EMBREE" = 1 ]; then
+  if ! [ -x "$PEER" ] || [ "$PEER_SRC/embree_f2.cpp" -nt "$PEER" ]; then
+    if ! dpkg -s libembree-dev libtbb-dev libpng-dev >/dev/null 2>&1; then
+      log "installing libembree-dev libtbb-dev libpng-dev"
+      as_root apt-get install -y libembree-dev libtbb-dev libpng-dev >&2
+    fi
+    mkdir -p "$(dirname "$PEER")"
+    sh "$PEER_SRC/build.sh" "$PEER" >&2
+  fi
+fi
+
+# value KEY JSON|RESULT-line: the number after "KEY": or KEY=
+json_value() { sed -n "s/.*\"$1\": \([-0-9.e+]*\).*/\1/p" <<<"$2"; }
+result_value() { tr ' ' '\n' <<<"$2" | sed -n "s/^$1=//p"; }
+ratio() { awk -v a="$1" -v b="$2" 'BEGIN { if (b > 0) printf "%.2f", a / b; else print "n/a" }'; }
+
+# scene_file SCENE: the scene as a file export can read ("" = the default scene)
+scene_file() {
+  case $1 in
+    default) echo "" ;;
+    robots:*|spheres:*)
+      local file="$WORK/${1/:/_}.f2"
+      "$F2" bench --scene "$1" --size "$SIZE" --write-scene "$file" 2>/dev/null
+      echo "$file" ;;
+    *) echo "$1" ;;
+  esac
+}
+
+# f2_bench SCENE: JSON of f2 bench on it
+f2_bench() {
+  case $1 in
+    default) "$F2" bench --frame "$FRAME" --size "$SIZE" --threads "$THREADS" --seconds "$SECONDS_PER_RUN" --json ;;
+    robots:*|spheres:*) "$F2" bench --scene "$1" --frame "$FRAME" --size "$SIZE" --threads "$THREADS" \
+                          --seconds "$SECONDS_PER_RUN" --json ;;
+    *) "$F2" bench "$1" --frame "$FRAME" --size "$SIZE" --threads "$THREADS" --seconds "$SECONDS_PER_RUN" --json ;;
+  esac
+}
+
+echo "## f2 vs peers, $SIZE, $THREADS threads, frame $FRAME"
+echo
+echo "$(date -u +%Y-%m-%dT%H:%MZ), $(nproc) cores, load average $(cut -d' ' -f1 /proc/loadavg), f2 = $F2"
+echo
+
+if [ "$RUN_EMBREE" = 1 ]; then
+  echo "### Embree peer (whole frame, BVH updated every frame; best of --rebuild $REBUILD_MODES)"
+  echo
+  echo "| Scene | Primitives | f2 FPS | f2 ms (eval / build / trace) | Embree FPS | Embree mode | Embree static FPS | f2 / Embree |"
+  echo "|---|---:|---:|---|---:|---|---:|---:|"
+  for scene in $SCENES; do
+    file=$(scene_file "$scene")
+    prims=$WORK/${scene/:/_}.prims
+    "$F2" export ${file:+"$file"} --frame "$FRAME" --size "$SIZE" --prims -o "$prims" 2>/dev/null
+    log "$scene: f2 bench"
+    json=$(f2_bench "$scene")
+    f2_fps=$(json_value fps "$json")
+    split="$(json_value ms_median "$json") ($(json_value ms_eval "$json") / $(json_value ms_build "$json") / $(json_value ms_trace "$json"))"
+    best_fps=0 best_mode=none
+    for mode in $REBUILD_MODES; do
+      log "$scene: embree_f2 --rebuild $mode"
+      line=$("$PEER" "$prims" --threads "$THREADS" --rebuild "$mode" | grep '^RESULT')
+      fps=$(result_value total_fps "$line")
+      if awk -v a="$fps" -v b="$best_fps" 'BEGIN { exit !(a > b) }'; then best_fps=$fps best_mode=$mode; fi
+    done
+    # Render-only yardstick: static BVH built once (not what an animation can do).
+    static=$(result_value fps "$("$PEER" "$prims" --threads "$THREADS" | grep '^RESULT')")
+    echo "| $scene | $(json_value primitives "$json") | $f2_fps | $split | $best_fps | $best_mode | $static | $(ratio "$f2_fps" "$best_fps") |"
+  done
+  echo
+fi
+
+if [ "$RUN_POV" = 1 ]; then
+  if ! command -v povray >/dev/null; then
+    log "povray not found (apt-get install povray); skipping the POV-Ray comparison"
+  else
+    echo "### POV-Ray 3.7 (povray -A +WT2, its reported Trace Time) vs f2's whole frame"
+    echo
+    echo "| Scene | POV-Ray trace ms | f2 frame ms | POV-Ray / f2 |"
+    echo "|---|---:|---:|---:|"
+    for scene in $POV_SCENES; do
+      file=$(scene_file "$scene")
+      pov=$WORK/${scene/:/_}.pov
+      "$F2" export ${file:+"$file"} --frame "$FRAME" --size "$SIZE" --pov -o "$pov" 2>/dev/null
+      log "$scene: povray"
+      w=${SIZE%x*} h=${SIZE#*x}
+      err=$( (cd "$WORK" && povray +I"$pov" +O"$WORK/pov_out.png" +W"$w" +H"$h" -A +WT2 +FN -D) 2>&1 >/dev/null) || true
+      # "  Trace Time:       0 hours  0 minutes  0 seconds (0.171 seconds)"
+      pov_s=$(sed -n 's/.*Trace Time:.*(\([0-9.]*\) seconds).*/\1/p' <<<"$err" | tail -1)
+      if [ -z "$pov_s" ]; then log "$scene: no 'Trace Time' in povray's output"; continue; fi
+      pov_ms=$(awk -v s="$pov_s" 'BEGIN { printf "%.1f", s * 1000 }')
+      log "$scene: f2 bench"
+      f2_ms=$(json_value ms_median "$(f2_bench "$scene")")
+      echo "| $scene | $pov_ms | $f2_ms | $(ratio "$pov_ms" "$f2_ms") |"
+    done
+    echo
+  fi
+fi
