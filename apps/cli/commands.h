@@ -14,5 +14,7 @@ struct Command {
 Command addRenderCommand(CLI::App& app);
 Command addCheckCommand(CLI::App& app);
 Command addInfoCommand(CLI::App& app);
+Command addExportCommand(CLI::App& app);
+Command addBenchCommand(CLI::App& app);
 
 }  // namespace f2::cli

@@ -17,6 +17,8 @@ int main(int argc, char** argv) {
         f2::cli::addRenderCommand(app),
         f2::cli::addCheckCommand(app),
         f2::cli::addInfoCommand(app),
+        f2::cli::addExportCommand(app),
+        f2::cli::addBenchCommand(app),
     };
     // CLI11 would only say "a subcommand is required"; name the unknown word.
     if (argc > 1 && argv[1][0] != '-') {

@@ -25,6 +25,14 @@ void forChunks(ThreadPool* pool, std::uint32_t chunks, Body&& body) {
     }
 }
 
+/// Bin of a centroid coordinate. Written so that coordinates near the float
+/// limit (infinite or NaN offsets) still land in a valid bin.
+inline int binOf(float coordinate, float lo, float scale) {
+    float f = (coordinate - lo) * scale;
+    if (!(f >= 0)) return 0;
+    return f < float(kBinCount) ? int(f) : kBinCount - 1;
+}
+
 struct BuildTask {
     std::uint32_t node, begin, end, depth;
 };
@@ -90,7 +98,7 @@ void Bvh::build(std::span<const Primitive> primitives, ThreadPool* pool) {
                 float scale = kBinCount / extent[axis];
                 for (std::uint32_t i = task.begin; i < task.end; ++i) {
                     std::uint32_t p = indices_[i];
-                    int b = std::min(kBinCount - 1, int((centroids_[p][axis] - centroidBounds.lo[axis]) * scale));
+                    int b = binOf(centroids_[p][axis], centroidBounds.lo[axis], scale);
                     binBounds[b].grow(primBounds_[p]);
                     ++binCount[b];
                 }
@@ -142,7 +150,7 @@ void Bvh::build(std::span<const Primitive> primitives, ThreadPool* pool) {
             float scale = kBinCount / extent[bestAxis];
             float lo = centroidBounds.lo[bestAxis];
             middle = std::partition(first, last, [&](std::uint32_t p) {
-                return std::min(kBinCount - 1, int((centroids_[p][bestAxis] - lo) * scale)) <= bestBin;
+                return binOf(centroids_[p][bestAxis], lo, scale) <= bestBin;
             });
         } else {
             // No SAH split (too deep, or all centroids equal): object median on the widest axis.

@@ -35,7 +35,7 @@ struct Bounds {
 
     void grow(const Bounds& b) { lo = vmin(lo, b.lo); hi = vmax(hi, b.hi); }
     void grow(Vec3 p) { lo = vmin(lo, p); hi = vmax(hi, p); }
-    Vec3 centroid() const { return (lo + hi) * 0.5f; }
+    Vec3 centroid() const { return lo * 0.5f + hi * 0.5f; }  // no overflow near the float limit
     float halfArea() const {
         Vec3 e = hi - lo;
         return e.x * e.y + e.y * e.z + e.z * e.x;

@@ -12,10 +12,18 @@ struct ColorP {
     Float r, g, b;
 };
 
-/// Colours (0..1, unclamped) of the `active` lanes of a packet of primary rays.
-inline ColorP tracePacket(const FrameScene& frame, const RayPacket& rays, Mask active) {
+/// Rays traced, counted as they are cast.
+struct RayCounts {
+    std::uint64_t primary = 0, shadow = 0;
+    std::uint64_t total() const { return primary + shadow; }
+};
+
+/// Colours (0..1, unclamped) of the `active` lanes of a packet of primary rays
+/// leaving the eye `eye`.
+inline ColorP tracePacket(const FrameScene& frame, Vec3 eye, const RayPacket& rays, Mask active, RayCounts& counts) {
+    counts.primary += std::uint64_t(__builtin_popcount(simd::bits(active)));
     PacketHit hit;
-    frame.bvh.intersect(rays, active, Float(0.0f), hit);
+    frame.bvh.intersect(rays, active, Float(primaryRayStart(eye)), hit);
     Mask hitLanes = active & (hit.t < Float(kInfinity));
 
     ColorP out{Float(frame.background.x), Float(frame.background.y), Float(frame.background.z)};
@@ -40,7 +48,10 @@ inline ColorP tracePacket(const FrameScene& frame, const RayPacket& rays, Mask a
         ks = simd::select(same, Float(s.material.ks), ks);
         shininess = simd::select(same, Float(s.material.n), shininess);
     }
-    n = select(dot(n, rays.direction) > Float(0.0f), -n, n);  // face the viewer
+    Mask inside = dot(n, rays.direction) > Float(0.0f);  // seen from within the primitive
+    n = select(inside, -n, n);                           // face the viewer
+    // As in shadeHit(): shadow rays skip their own primitive only from its outside.
+    Int skip = simd::select(inside, Int(-1), hit.primitive);
     Vec3P toEye = -rays.direction;
     Float offset = Float(kShadowBias) *
                    (Float(1.0f) + simd::max(simd::max(simd::abs(p.x), simd::abs(p.y)), simd::abs(p.z)));
@@ -53,8 +64,9 @@ inline ColorP tracePacket(const FrameScene& frame, const RayPacket& rays, Mask a
         Float nDotL = dot(n, toLight);
         Mask lit = hitLanes & (nDotL > Float(0.0f));
         if (simd::none(lit)) continue;
+        counts.shadow += std::uint64_t(__builtin_popcount(simd::bits(lit)));
         lit = simd::andNot(lit, frame.bvh.occluded(RayPacket(shadowOrigin, toLight), lit, Float(0.0f),
-                                                    Float(kInfinity), hit.primitive));
+                                                    Float(kInfinity), skip));
         if (simd::none(lit)) continue;
         Float intensity(light.intensity);
         diffuse = simd::select(lit, diffuse + intensity * kd * nDotL, diffuse);

@@ -59,12 +59,12 @@ ColorP clamped(const ColorP& c) {
 
 /// Renders one block of pixels with its top-left corner at (x0, y0).
 void renderBlock(const FrameScene& frame, const Camera& camera, int aa, const LaneOffsets& lanes, int x0, int y0,
-                 Image& out) {
+                 Image& out, RayCounts& counts) {
     Float px = Float(float(x0)) + lanes.x, py = Float(float(y0)) + lanes.y;
     Mask inside = (px < Float(float(camera.width))) & (py < Float(float(camera.height)));
     ColorP c;
     if (aa == 1) {
-        c = tracePacket(frame, primaryRays(camera, px + Float(0.5f), py + Float(0.5f)), inside);
+        c = tracePacket(frame, camera.eye, primaryRays(camera, px + Float(0.5f), py + Float(0.5f)), inside, counts);
     } else {
         // Stratified: the centre of each of the N x N sub-cells, clamped per sample
         // so the result is the average of displayed values.
@@ -72,7 +72,7 @@ void renderBlock(const FrameScene& frame, const Camera& camera, int aa, const La
         for (int sy = 0; sy < aa; ++sy) {
             for (int sx = 0; sx < aa; ++sx) {
                 Float ox((float(sx) + 0.5f) / float(aa)), oy((float(sy) + 0.5f) / float(aa));
-                ColorP s = clamped(tracePacket(frame, primaryRays(camera, px + ox, py + oy), inside));
+                ColorP s = clamped(tracePacket(frame, camera.eye, primaryRays(camera, px + ox, py + oy), inside, counts));
                 c = {c.r + s.r, c.g + s.g, c.b + s.b};
             }
         }
@@ -95,13 +95,14 @@ void renderBlock(const FrameScene& frame, const Camera& camera, int aa, const La
 }  // namespace
 
 bool Renderer::trace(const FrameScene& frame, const Camera& camera, Image& out, const RenderOptions& options,
-                     const std::atomic<bool>* cancel) {
+                     const std::atomic<bool>* cancel, RayCounts* rays) {
     out.resize(camera.width, camera.height);
     const int tilesX = (camera.width + kTileSize - 1) / kTileSize;
     const int tilesY = (camera.height + kTileSize - 1) / kTileSize;
     const int aa = options.antialias < 1 ? 1 : options.antialias;
     static const LaneOffsets lanes;
     std::atomic<bool> cancelled{false};
+    std::atomic<std::uint64_t> primaryRays{0}, shadowRays{0};
 
     pool_.parallelFor(std::uint32_t(tilesX * tilesY), [&](std::uint32_t tile) {
         if (cancel && cancel->load(std::memory_order_relaxed)) {
@@ -112,9 +113,13 @@ bool Renderer::trace(const FrameScene& frame, const Camera& camera, Image& out, 
         const int y0 = int(tile / std::uint32_t(tilesX)) * kTileSize;
         const int x1 = std::min(x0 + kTileSize, camera.width);
         const int y1 = std::min(y0 + kTileSize, camera.height);
+        RayCounts tileRays;
         for (int y = y0; y < y1; y += kBlockHeight)
-            for (int x = x0; x < x1; x += kBlockWidth) renderBlock(frame, camera, aa, lanes, x, y, out);
+            for (int x = x0; x < x1; x += kBlockWidth) renderBlock(frame, camera, aa, lanes, x, y, out, tileRays);
+        primaryRays.fetch_add(tileRays.primary, std::memory_order_relaxed);
+        shadowRays.fetch_add(tileRays.shadow, std::memory_order_relaxed);
     });
+    if (rays) *rays = {primaryRays.load(), shadowRays.load()};
     return !cancelled.load();
 }
 
@@ -140,7 +145,7 @@ FrameTimings Renderer::render(const SceneDesc& scene, double t, const Camera& ca
     timings.buildMs = millisecondsSince(start);
 
     start = Clock::now();
-    trace(frame_, camera, out, options, cancel);
+    timings.complete = trace(frame_, camera, out, options, cancel, &timings.rays);
     timings.traceMs = millisecondsSince(start);
     return timings;
 }

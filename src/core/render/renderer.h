@@ -6,6 +6,7 @@
 #include "core/anim/frame_scene.h"
 #include "core/render/camera.h"
 #include "core/render/image.h"
+#include "core/render/packet_shading.h"
 #include "core/render/thread_pool.h"
 
 namespace f2 {
@@ -14,9 +15,11 @@ struct RenderOptions {
     int antialias = 1;  ///< N: N x N stratified samples per pixel; 1 = pixel centre (SPEC 2)
 };
 
-/// Wall-clock split of one frame, in milliseconds.
+/// Wall-clock split of one frame, in milliseconds, and the rays it cast.
 struct FrameTimings {
     double evaluateMs = 0, buildMs = 0, traceMs = 0;
+    RayCounts rays;
+    bool complete = true;  ///< false when cancelled: the image is partial
     double totalMs() const { return evaluateMs + buildMs + traceMs; }
 };
 
@@ -30,7 +33,7 @@ public:
     /// Traces a prepared frame (its BVH built) into `out` at the camera's size.
     /// Returns false if `cancel` was raised (the image is then incomplete).
     bool trace(const FrameScene& frame, const Camera& camera, Image& out, const RenderOptions& options = {},
-               const std::atomic<bool>* cancel = nullptr);
+               const std::atomic<bool>* cancel = nullptr, RayCounts* rays = nullptr);
 
     /// The whole frame: evaluate `scene` at time `t` (frames), build, trace.
     /// Reuses this renderer's frame buffers, so steady-state frames do not allocate.
