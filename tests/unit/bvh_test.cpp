@@ -1,0 +1,347 @@
+// Bvh against brute force: the tree must return exactly what testing every
+// primitive returns (nearest hit and any-hit), for random scenes and for the
+// degenerate layouts a per-frame rebuild can meet (empty, one primitive,
+// coincident primitives, an exponentially stretched line).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <iostream>
+#include <random>
+#include <utility>
+#include <vector>
+
+#include "core/geometry/bvh.h"
+
+namespace f2 {
+namespace {
+
+std::uint32_t testSeed(std::uint32_t fallback) {
+    std::uint32_t seed = fallback;
+    if (const char* s = std::getenv("F2_TEST_SEED")) seed = std::uint32_t(std::strtoul(s, nullptr, 10));
+    std::cout << "[   SEED   ] F2_TEST_SEED=" << seed << '\n';
+    return seed;
+}
+
+struct Brute {
+    bool found = false;
+    float t = kInfinity;
+    std::uint32_t primitive = 0;
+};
+
+/// Nearest hit by testing every primitive with the caller's (tMin, tMax).
+Brute bruteNearest(const std::vector<Primitive>& prims, const Ray& ray, float tMin, float tMax) {
+    Brute b;
+    for (std::uint32_t i = 0; i < prims.size(); ++i) {
+        float t;
+        Face face;
+        if (intersectPrimitive(prims[i], ray, tMin, tMax, t, face) && t < b.t) b = {true, t, i};
+    }
+    return b;
+}
+
+bool bruteAny(const std::vector<Primitive>& prims, const Ray& ray, float tMin, float tMax) {
+    for (const Primitive& p : prims) {
+        float t;
+        Face face;
+        if (intersectPrimitive(p, ray, tMin, tMax, t, face)) return true;
+    }
+    return false;
+}
+
+/// Depth of the deepest leaf (root = 1) and the number of primitives in leaves;
+/// also checks that each inner node's box contains its children's boxes.
+std::pair<int, std::uint64_t> inspectTree(const Bvh& bvh) {
+    auto nodes = bvh.nodes();
+    int maxDepth = 0;
+    std::uint64_t leafPrims = 0;
+    if (nodes.empty()) return {0, 0};
+    std::vector<std::pair<std::uint32_t, int>> stack{{0u, 1}};
+    while (!stack.empty()) {
+        auto [i, depth] = stack.back();
+        stack.pop_back();
+        EXPECT_LT(i, nodes.size());
+        if (i >= nodes.size()) break;
+        maxDepth = std::max(maxDepth, depth);
+        const Bvh::Node& n = nodes[i];
+        if (n.count > 0) {
+            leafPrims += n.count;
+            continue;
+        }
+        for (std::uint32_t c : {n.first, n.first + 1}) {
+            EXPECT_LT(c, nodes.size());
+            if (c >= nodes.size()) continue;
+            const Bounds& b = nodes[c].bounds;
+            for (int a = 0; a < 3; ++a) {
+                EXPECT_LE(n.bounds.lo[a], b.lo[a]);
+                EXPECT_GE(n.bounds.hi[a], b.hi[a]);
+            }
+            stack.push_back({c, depth + 1});
+        }
+    }
+    return {maxDepth, leafPrims};
+}
+
+/// Compares one ray's Bvh::intersect with brute force; true when they agree.
+::testing::AssertionResult agrees(const std::vector<Primitive>& prims, const Bvh& bvh, const Ray& ray, float tMin,
+                                  float tMax) {
+    Brute b = bruteNearest(prims, ray, tMin, tMax);
+    HitRecord hit;
+    bool found = bvh.intersect(ray, tMin, tMax, hit);
+    auto describe = [&] {
+        return ::testing::Message() << " ray " << ray.origin << " dir " << ray.direction << " tMin " << tMin
+                                    << " tMax " << tMax << "; brute " << b.found << " prim " << b.primitive << " t "
+                                    << b.t << "; bvh " << found << " prim " << hit.primitive << " t " << hit.t;
+    };
+    if (found != b.found) return ::testing::AssertionFailure() << "hit/miss differs" << describe();
+    if (!found) return ::testing::AssertionSuccess();
+    if (std::fabs(hit.t - b.t) > 1e-4f * std::max(1.0f, b.t))
+        return ::testing::AssertionFailure() << "distance differs" << describe();
+    if (hit.primitive != b.primitive) {
+        // Only a genuine tie may pick another primitive: the BVH's one must be hit at the same t.
+        float t;
+        Face face;
+        if (hit.primitive >= prims.size() ||
+            !intersectPrimitive(prims[hit.primitive], ray, tMin, tMax, t, face) || t != b.t)
+            return ::testing::AssertionFailure() << "primitive differs" << describe();
+    }
+    if (!(hit.t > tMin && hit.t < tMax)) return ::testing::AssertionFailure() << "t out of range" << describe();
+    return ::testing::AssertionSuccess();
+}
+
+std::vector<Primitive> randomScene(std::mt19937& rng, int count, float spread) {
+    std::uniform_real_distribution<float> u01(0.0f, 1.0f), angle(-180.0f, 180.0f), coord(-spread, spread);
+    auto dim = [&] { return 0.5f + 14.5f * u01(rng); };
+    std::vector<Primitive> prims;
+    for (int i = 0; i < count; ++i) {
+        ShapeKind kind = ShapeKind(int(u01(rng) * 3) % 3);
+        Vec3 size = kind == ShapeKind::Sphere     ? Vec3{dim(), 0, 0}
+                    : kind == ShapeKind::Cylinder ? Vec3{dim(), 2 * dim(), 0}
+                                                  : Vec3{2 * dim(), 2 * dim(), 2 * dim()};
+        // A fifth of them unrotated, so axis-aligned faces meet axis-aligned rays.
+        Vec3 rot = u01(rng) < 0.2f ? Vec3{} : Vec3{angle(rng), angle(rng), angle(rng)};
+        prims.push_back(makePrimitive(kind, size, Transform::fromPose({coord(rng), coord(rng), coord(rng)}, rot)));
+    }
+    return prims;
+}
+
+Vec3 randomUnit(std::mt19937& rng) {
+    std::uniform_real_distribution<float> u01(0.0f, 1.0f);
+    float z = 2 * u01(rng) - 1, phi = float(2 * kPi) * u01(rng), s = std::sqrt(std::max(0.0f, 1 - z * z));
+    return {s * std::cos(phi), s * std::sin(phi), z};
+}
+
+/// Random rays over the scene: half aimed at a primitive's centre (so many hit),
+/// a tenth along a coordinate axis (infinite inverse components in the slab test).
+Ray randomRay(std::mt19937& rng, const std::vector<Primitive>& prims, float spread) {
+    std::uniform_real_distribution<float> u01(0.0f, 1.0f), coord(-1.5f * spread, 1.5f * spread);
+    Vec3 origin{coord(rng), coord(rng), coord(rng)};
+    float kind = u01(rng);
+    Vec3 dir;
+    if (kind < 0.5f && !prims.empty()) {
+        Vec3 target = prims[std::size_t(u01(rng) * prims.size()) % prims.size()].centre;
+        dir = normalize(target - origin);
+    } else if (kind < 0.6f) {
+        int axis = int(u01(rng) * 3) % 3;
+        dir[axis] = u01(rng) < 0.5f ? -1.0f : 1.0f;
+    } else if (kind < 0.7f) {
+        // One zero component: parallel to a coordinate plane.
+        Vec3 d = randomUnit(rng);
+        d[int(u01(rng) * 3) % 3] = 0;
+        dir = normalize(d);
+    } else {
+        dir = randomUnit(rng);
+    }
+    return {origin, dir};
+}
+
+TEST(Bvh, EmptyScene) {
+    Bvh bvh;
+    bvh.build({});
+    HitRecord hit;
+    Ray ray{{0, 0, 0}, {0, 0, 1}};
+    EXPECT_FALSE(bvh.intersect(ray, 0, kInfinity, hit));
+    EXPECT_FALSE(bvh.occluded(ray, 0, kInfinity));
+    EXPECT_TRUE(bvh.nodes().empty());
+    // Rebuilding over nothing after a real scene forgets the old one.
+    std::vector<Primitive> one{makePrimitive(ShapeKind::Sphere, {1, 0, 0}, Transform::fromPose({0, 0, 5}, {}))};
+    bvh.build(one);
+    EXPECT_TRUE(bvh.intersect(ray, 0, kInfinity, hit));
+    bvh.build({});
+    EXPECT_FALSE(bvh.intersect(ray, 0, kInfinity, hit));
+    EXPECT_FALSE(bvh.occluded(ray, 0, kInfinity));
+}
+
+TEST(Bvh, SinglePrimitive) {
+    // Box 2x2x2 at (0,0,10): the ray along +z from the origin enters z=9 at t=9.
+    std::vector<Primitive> prims{makePrimitive(ShapeKind::Box, {2, 2, 2}, Transform::fromPose({0, 0, 10}, {}))};
+    Bvh bvh;
+    bvh.build(prims);
+    Ray ray{{0, 0, 0}, {0, 0, 1}};
+    HitRecord hit;
+    ASSERT_TRUE(bvh.intersect(ray, 0, kInfinity, hit));
+    EXPECT_EQ(hit.primitive, 0u);
+    EXPECT_NEAR(hit.t, 9.0f, 1e-5f);
+    EXPECT_EQ(hit.face, Face::SlabZ);
+    EXPECT_TRUE(bvh.occluded(ray, 0, kInfinity));
+    // tMax before the box: nothing; tMin past the entry: the exit z=11.
+    EXPECT_FALSE(bvh.intersect(ray, 0, 8.5f, hit));
+    EXPECT_FALSE(bvh.occluded(ray, 0, 8.5f));
+    ASSERT_TRUE(bvh.intersect(ray, 9.5f, kInfinity, hit));
+    EXPECT_NEAR(hit.t, 11.0f, 1e-5f);
+    // Off to the side: x=1.5 > 1.
+    EXPECT_FALSE(bvh.intersect({{1.5f, 0, 0}, {0, 0, 1}}, 0, kInfinity, hit));
+    EXPECT_FALSE(bvh.occluded({{1.5f, 0, 0}, {0, 0, 1}}, 0, kInfinity));
+}
+
+TEST(Bvh, NearestOfTwoInALine) {
+    // Spheres r=1 at z=10 and z=20 on the ray's line: the nearer (index 1) at t=9,
+    // whatever the order of the input.
+    std::vector<Primitive> prims{makePrimitive(ShapeKind::Sphere, {1, 0, 0}, Transform::fromPose({0, 0, 20}, {})),
+                                 makePrimitive(ShapeKind::Sphere, {1, 0, 0}, Transform::fromPose({0, 0, 10}, {}))};
+    Bvh bvh;
+    bvh.build(prims);
+    HitRecord hit;
+    ASSERT_TRUE(bvh.intersect({{0, 0, 0}, {0, 0, 1}}, 0, kInfinity, hit));
+    EXPECT_EQ(hit.primitive, 1u);
+    EXPECT_NEAR(hit.t, 9.0f, 1e-5f);
+    // Looking back from z=30: the z=20 sphere at t = 30-21 = 9.
+    ASSERT_TRUE(bvh.intersect({{0, 0, 30}, {0, 0, -1}}, 0, kInfinity, hit));
+    EXPECT_EQ(hit.primitive, 0u);
+    EXPECT_NEAR(hit.t, 9.0f, 1e-5f);
+}
+
+TEST(BvhProperty, MatchesBruteForceOnRandomScenes) {
+    const std::uint32_t seed = testSeed(8675309u);
+    SCOPED_TRACE(::testing::Message() << "seed " << seed);
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> u01(0.0f, 1.0f);
+    int hits = 0, rays = 0;
+    Bvh bvh;  // reused across scenes, as the renderer does per frame
+    for (int count : {2, 5, 17, 100, 600}) {
+        const float spread = 100;
+        std::vector<Primitive> prims = randomScene(rng, count, spread);
+        bvh.build(prims);
+        auto [depth, leafPrims] = inspectTree(bvh);
+        EXPECT_EQ(leafPrims, std::uint64_t(count)) << "every primitive in exactly one leaf";
+        EXPECT_GT(depth, 0);
+        for (int n = 0; n < 3000; ++n, ++rays) {
+            Ray ray = randomRay(rng, prims, spread);
+            float tMin = u01(rng) < 0.5f ? 0.0f : 1e-3f;
+            float tMax = u01(rng) < 0.5f ? kInfinity : 1 + 300 * u01(rng);
+            ASSERT_TRUE(agrees(prims, bvh, ray, tMin, tMax)) << "scene of " << count << ", ray " << n;
+            ASSERT_EQ(bvh.occluded(ray, tMin, tMax), bruteAny(prims, ray, tMin, tMax))
+                << "scene of " << count << ", ray " << n << " origin " << ray.origin << " dir " << ray.direction
+                << " tMax " << tMax;
+            hits += bruteNearest(prims, ray, tMin, tMax).found;
+        }
+    }
+    // The comparison is not vacuous: a good share of rays hit something.
+    EXPECT_GT(hits, rays / 4);
+}
+
+TEST(BvhProperty, OriginsInsidePrimitives) {
+    // Rays starting inside (overlapping) primitives: the nearest crossing may be an exit.
+    const std::uint32_t seed = testSeed(55555u);
+    SCOPED_TRACE(::testing::Message() << "seed " << seed);
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> u01(0.0f, 1.0f);
+    std::vector<Primitive> prims = randomScene(rng, 300, 30);  // dense: much overlap
+    Bvh bvh;
+    bvh.build(prims);
+    for (int n = 0; n < 3000; ++n) {
+        const Primitive& p = prims[std::size_t(u01(rng) * prims.size()) % prims.size()];
+        Ray ray{p.centre, randomUnit(rng)};
+        ASSERT_TRUE(agrees(prims, bvh, ray, 0, kInfinity)) << "ray " << n;
+        ASSERT_TRUE(bvh.occluded(ray, 0, kInfinity)) << "ray " << n << " starts inside a primitive";
+    }
+}
+
+TEST(Bvh, CoincidentPrimitives) {
+    // 1000 identical spheres r=1 at (3,4,5): no split separates equal centroids.
+    std::vector<Primitive> prims(
+        1000, makePrimitive(ShapeKind::Sphere, {1, 0, 0}, Transform::fromPose({3, 4, 5}, {})));
+    Bvh bvh;
+    bvh.build(prims);
+    auto [depth, leafPrims] = inspectTree(bvh);
+    EXPECT_EQ(leafPrims, 1000u);
+    // Halving 1000 down to small leaves takes ~10 levels; anything near the
+    // traversal stack's size would mean an unbalanced (linear) tree.
+    std::cout << "[   INFO   ] coincident: " << bvh.nodes().size() << " nodes, depth " << depth << '\n';
+    EXPECT_LE(depth, 32);
+    HitRecord hit;
+    // From (3,4,-10) along +z: the sphere's near point z = 5-1 = 4, t = 14.
+    ASSERT_TRUE(bvh.intersect({{3, 4, -10}, {0, 0, 1}}, 0, kInfinity, hit));
+    EXPECT_NEAR(hit.t, 14.0f, 1e-5f);
+    EXPECT_LT(hit.primitive, 1000u);
+    EXPECT_TRUE(bvh.occluded({{3, 4, -10}, {0, 0, 1}}, 0, kInfinity));
+    EXPECT_FALSE(bvh.occluded({{3, 4, -10}, {0, 0, 1}}, 0, 13.5f));
+    EXPECT_FALSE(bvh.intersect({{3, 5.5f, -10}, {0, 0, 1}}, 0, kInfinity, hit));
+}
+
+TEST(Bvh, HostileExponentialLine) {
+    // 100000 spheres r=1e-4 on the x axis at x_i = exp(0.0008 i): from 1 to e^80 ~ 5.5e34.
+    // Neighbours are 0.0008 x_i apart (>= 8e-4 > 2r), so the spheres never overlap, while
+    // the centroid spread defeats uniform binning and overflows surface areas.
+    const int n = 100000;
+    const float r = 1e-4f;
+    std::vector<Primitive> prims;
+    prims.reserve(n);
+    for (int i = 0; i < n; ++i)
+        prims.push_back(makePrimitive(ShapeKind::Sphere, {r, 0, 0},
+                                      Transform::fromPose({float(std::exp(0.0008 * i)), 0, 0}, {})));
+    Bvh bvh;
+    bvh.build(prims);
+    auto [depth, leafPrims] = inspectTree(bvh);
+    EXPECT_EQ(leafPrims, std::uint64_t(n));
+    // The traversal uses a fixed stack; the depth must stay far from unbounded.
+    std::cout << "[   INFO   ] exponential line: " << bvh.nodes().size() << " nodes, depth " << depth << '\n';
+    EXPECT_LE(depth, 100);
+
+    const std::uint32_t seed = testSeed(4242u);
+    SCOPED_TRACE(::testing::Message() << "seed " << seed);
+    std::mt19937 rng(seed);
+    std::uniform_int_distribution<int> pick(0, n - 1);
+    HitRecord hit;
+    for (int k = 0; k < 2000; ++k) {
+        // Straight down onto sphere i from 10 above its centre: t = 10 - r, index i.
+        int i = pick(rng);
+        Ray down{{prims[i].centre.x, 10, 0}, {0, -1, 0}};
+        ASSERT_TRUE(bvh.intersect(down, 0, kInfinity, hit)) << "sphere " << i;
+        EXPECT_EQ(hit.primitive, std::uint32_t(i));
+        EXPECT_NEAR(hit.t, 10 - r, 1e-5f);
+        ASSERT_TRUE(bvh.occluded(down, 0, kInfinity)) << "sphere " << i;
+        // Along +x from midway between spheres i and i+1: sphere i+1 at x_{i+1} - r.
+        if (i + 1 < n) {
+            float xa = prims[i].centre.x, xb = prims[i + 1].centre.x;
+            float mid = xa + (xb - xa) / 2;
+            Ray along{{mid, 0, 0}, {1, 0, 0}};
+            ASSERT_TRUE(bvh.intersect(along, 0, kInfinity, hit)) << "after sphere " << i;
+            EXPECT_EQ(hit.primitive, std::uint32_t(i + 1));
+            EXPECT_NEAR(hit.t, (xb - mid) - r, 1e-4f * (xb - mid));
+        }
+        if (HasFailure()) return;
+    }
+    // From the origin along +x: sphere 0 (x=1) at t = 1 - r.
+    ASSERT_TRUE(bvh.intersect({{0, 0, 0}, {1, 0, 0}}, 0, kInfinity, hit));
+    EXPECT_EQ(hit.primitive, 0u);
+    EXPECT_NEAR(hit.t, 1 - r, 1e-6f);
+    // Back along -x from past the last sphere: the last one.
+    float last = prims[n - 1].centre.x;
+    ASSERT_TRUE(bvh.intersect({{last * 2, 0, 0}, {-1, 0, 0}}, 0, kInfinity, hit));
+    EXPECT_EQ(hit.primitive, std::uint32_t(n - 1));
+    // Brute force on a subset of random rays (mostly misses, a few aimed).
+    for (int k = 0; k < 100; ++k) {
+        int i = pick(rng);
+        Vec3 c = prims[i].centre;
+        Vec3 from = c + randomUnit(rng) * (0.5f + std::fabs(c.x) * 1e-3f);
+        Ray ray{from, normalize(c - from)};
+        ASSERT_TRUE(agrees(prims, bvh, ray, 0, kInfinity)) << "aimed ray " << k;
+        ASSERT_EQ(bvh.occluded(ray, 0, kInfinity), bruteAny(prims, ray, 0, kInfinity)) << "aimed ray " << k;
+    }
+}
+
+}  // namespace
+}  // namespace f2
