@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <iostream>
+
 #include "core/parse/parser.h"
 
 namespace f2::test {
@@ -18,5 +21,12 @@ SceneDesc unwrap(ParseResult result) {
 SceneDesc sceneFromText(std::string_view text) { return unwrap(parseScene(text, "test.f2")); }
 SceneDesc sceneFromRepo(const std::string& name) { return unwrap(parseSceneFile(sourcePath("scenes/" + name))); }
 std::string sourcePath(const std::string& relative) { return std::string(F2_SOURCE_DIR) + "/" + relative; }
+
+std::uint32_t testSeed(std::uint32_t fallback) {
+    std::uint32_t seed = fallback;
+    if (const char* s = std::getenv("F2_TEST_SEED")) seed = std::uint32_t(std::strtoul(s, nullptr, 10));
+    std::cout << "[   SEED   ] F2_TEST_SEED=" << seed << '\n';
+    return seed;
+}
 
 }  // namespace f2::test

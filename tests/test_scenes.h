@@ -1,9 +1,23 @@
 #pragma once
-/// Helpers shared by tests: parse a scene from text or from scenes/, fail loudly.
+/// Helpers shared by tests: parse a scene from text or from scenes/, fail
+/// loudly; compare vectors; seed property tests reproducibly.
+#include <gtest/gtest.h>
+
+#include <cstdint>
 #include <string>
 #include <string_view>
 
+#include "core/math/vec3.h"
 #include "core/scene/scene_desc.h"
+
+/// Each component of `actual` within `tol` of `expected`, printing both vectors.
+#define EXPECT_VEC_NEAR(actual, expected, tol)                            \
+    do {                                                                  \
+        const ::f2::Vec3 a_ = (actual), e_ = (expected);                  \
+        EXPECT_NEAR(a_.x, e_.x, (tol)) << "got " << a_ << " want " << e_; \
+        EXPECT_NEAR(a_.y, e_.y, (tol)) << "got " << a_ << " want " << e_; \
+        EXPECT_NEAR(a_.z, e_.z, (tol)) << "got " << a_ << " want " << e_; \
+    } while (0)
 
 namespace f2::test {
 
@@ -13,5 +27,8 @@ SceneDesc sceneFromText(std::string_view text);
 SceneDesc sceneFromRepo(const std::string& name);
 /// Absolute path of a file in the source tree.
 std::string sourcePath(const std::string& relative);
+/// Seed of a property test: `fallback`, or F2_TEST_SEED when set; printed so a
+/// failure can be replayed.
+std::uint32_t testSeed(std::uint32_t fallback);
 
 }  // namespace f2::test

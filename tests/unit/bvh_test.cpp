@@ -14,16 +14,10 @@
 #include <vector>
 
 #include "core/geometry/bvh.h"
+#include "test_scenes.h"
 
 namespace f2 {
 namespace {
-
-std::uint32_t testSeed(std::uint32_t fallback) {
-    std::uint32_t seed = fallback;
-    if (const char* s = std::getenv("F2_TEST_SEED")) seed = std::uint32_t(std::strtoul(s, nullptr, 10));
-    std::cout << "[   SEED   ] F2_TEST_SEED=" << seed << '\n';
-    return seed;
-}
 
 struct Brute {
     bool found = false;
@@ -214,7 +208,7 @@ TEST(Bvh, NearestOfTwoInALine) {
 }
 
 TEST(BvhProperty, MatchesBruteForceOnRandomScenes) {
-    const std::uint32_t seed = testSeed(8675309u);
+    const std::uint32_t seed = test::testSeed(8675309u);
     SCOPED_TRACE(::testing::Message() << "seed " << seed);
     std::mt19937 rng(seed);
     std::uniform_real_distribution<float> u01(0.0f, 1.0f);
@@ -244,7 +238,7 @@ TEST(BvhProperty, MatchesBruteForceOnRandomScenes) {
 
 TEST(BvhProperty, OriginsInsidePrimitives) {
     // Rays starting inside (overlapping) primitives: the nearest crossing may be an exit.
-    const std::uint32_t seed = testSeed(55555u);
+    const std::uint32_t seed = test::testSeed(55555u);
     SCOPED_TRACE(::testing::Message() << "seed " << seed);
     std::mt19937 rng(seed);
     std::uniform_real_distribution<float> u01(0.0f, 1.0f);
@@ -300,7 +294,7 @@ TEST(Bvh, HostileExponentialLine) {
     std::cout << "[   INFO   ] exponential line: " << bvh.nodes().size() << " nodes, depth " << depth << '\n';
     EXPECT_LE(depth, 100);
 
-    const std::uint32_t seed = testSeed(4242u);
+    const std::uint32_t seed = test::testSeed(4242u);
     SCOPED_TRACE(::testing::Message() << "seed " << seed);
     std::mt19937 rng(seed);
     std::uniform_int_distribution<int> pick(0, n - 1);

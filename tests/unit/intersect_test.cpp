@@ -13,27 +13,13 @@
 #include <random>
 
 #include "core/geometry/intersect.h"
+#include "test_scenes.h"
 
 namespace f2 {
 namespace {
 
 const float kSqrtHalf = std::sqrt(0.5f);
 const float kSqrt2 = std::sqrt(2.0f);
-
-#define EXPECT_VEC_NEAR(actual, expected, tol)                            \
-    do {                                                                  \
-        const ::f2::Vec3 a_ = (actual), e_ = (expected);                  \
-        EXPECT_NEAR(a_.x, e_.x, (tol)) << "got " << a_ << " want " << e_; \
-        EXPECT_NEAR(a_.y, e_.y, (tol)) << "got " << a_ << " want " << e_; \
-        EXPECT_NEAR(a_.z, e_.z, (tol)) << "got " << a_ << " want " << e_; \
-    } while (0)
-
-std::uint32_t testSeed(std::uint32_t fallback) {
-    std::uint32_t seed = fallback;
-    if (const char* s = std::getenv("F2_TEST_SEED")) seed = std::uint32_t(std::strtoul(s, nullptr, 10));
-    std::cout << "[   SEED   ] F2_TEST_SEED=" << seed << '\n';
-    return seed;
-}
 
 Primitive sphere(float r, Vec3 pos = {}, Vec3 rot = {}) {
     return makePrimitive(ShapeKind::Sphere, {r, 0, 0}, Transform::fromPose(pos, rot));
@@ -470,7 +456,7 @@ const char* kindName(ShapeKind k) {
 }
 
 TEST(IntersectProperty, RaysTowardSurfacePointsHitThem) {
-    const std::uint32_t seed = testSeed(1234567u);
+    const std::uint32_t seed = test::testSeed(1234567u);
     SCOPED_TRACE(::testing::Message() << "seed " << seed);
     std::mt19937 rng(seed);
     std::uniform_real_distribution<float> u01(0.0f, 1.0f);
@@ -537,7 +523,7 @@ TEST(IntersectProperty, RaysTowardSurfacePointsHitThem) {
 }
 
 TEST(IntersectProperty, RaysFromInsideHitTheExit) {
-    const std::uint32_t seed = testSeed(424242u);
+    const std::uint32_t seed = test::testSeed(424242u);
     SCOPED_TRACE(::testing::Message() << "seed " << seed);
     std::mt19937 rng(seed);
     std::uniform_real_distribution<float> u01(0.0f, 1.0f);
@@ -565,7 +551,7 @@ TEST(IntersectProperty, RaysFromInsideHitTheExit) {
 }
 
 TEST(IntersectProperty, LinesOutsideTheBoundingSphereMiss) {
-    const std::uint32_t seed = testSeed(31337u);
+    const std::uint32_t seed = test::testSeed(31337u);
     SCOPED_TRACE(::testing::Message() << "seed " << seed);
     std::mt19937 rng(seed);
     std::uniform_real_distribution<float> u01(0.0f, 1.0f);
@@ -591,7 +577,7 @@ TEST(IntersectProperty, LinesOutsideTheBoundingSphereMiss) {
 
 TEST(IntersectProperty, IntervalContainsOnlyInsidePoints) {
     // primitiveInterval: points strictly between enter and exit are inside the solid.
-    const std::uint32_t seed = testSeed(2718u);
+    const std::uint32_t seed = test::testSeed(2718u);
     SCOPED_TRACE(::testing::Message() << "seed " << seed);
     std::mt19937 rng(seed);
     std::uniform_real_distribution<float> u01(0.0f, 1.0f);

@@ -16,6 +16,7 @@
 #include <string>
 
 #include "core/math/transform.h"
+#include "test_scenes.h"
 
 namespace f2 {
 namespace {
@@ -23,22 +24,6 @@ namespace {
 constexpr float kTol = 1e-5f;
 const float kSqrtHalf = std::sqrt(0.5f);  // sin 45 = cos 45
 const float kSqrt3Half = std::sqrt(3.0f) / 2.0f;  // cos 30 = sin 60
-
-#define EXPECT_VEC_NEAR(actual, expected, tol)              \
-    do {                                                    \
-        const ::f2::Vec3 a_ = (actual), e_ = (expected);    \
-        EXPECT_NEAR(a_.x, e_.x, (tol)) << "got " << a_ << " want " << e_; \
-        EXPECT_NEAR(a_.y, e_.y, (tol)) << "got " << a_ << " want " << e_; \
-        EXPECT_NEAR(a_.z, e_.z, (tol)) << "got " << a_ << " want " << e_; \
-    } while (0)
-
-/// Seed of the property tests: fixed for reproducibility, F2_TEST_SEED overrides it.
-std::uint32_t testSeed(std::uint32_t fallback) {
-    std::uint32_t seed = fallback;
-    if (const char* s = std::getenv("F2_TEST_SEED")) seed = std::uint32_t(std::strtoul(s, nullptr, 10));
-    std::cout << "[   SEED   ] F2_TEST_SEED=" << seed << '\n';
-    return seed;
-}
 
 Mat3 identity() { return Mat3{}; }
 
@@ -191,7 +176,7 @@ TEST(TransformCompose, ParentThenChild) {
 // --- Properties over random angles --------------------------------------------
 
 TEST(RotationProperty, OrthonormalAndProperForRandomAngles) {
-    const std::uint32_t seed = testSeed(20240531u);
+    const std::uint32_t seed = test::testSeed(20240531u);
     SCOPED_TRACE(::testing::Message() << "seed " << seed);
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> angle(-720.0, 720.0);
@@ -212,7 +197,7 @@ TEST(RotationProperty, OrthonormalAndProperForRandomAngles) {
 }
 
 TEST(RotationProperty, SingleAxisMatchesSpecFormula) {
-    const std::uint32_t seed = testSeed(7u);
+    const std::uint32_t seed = test::testSeed(7u);
     SCOPED_TRACE(::testing::Message() << "seed " << seed);
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> angle(-360.0, 360.0);
@@ -230,7 +215,7 @@ TEST(RotationProperty, SingleAxisMatchesSpecFormula) {
 }
 
 TEST(TransformProperty, InverseRigidRoundTrips) {
-    const std::uint32_t seed = testSeed(99u);
+    const std::uint32_t seed = test::testSeed(99u);
     SCOPED_TRACE(::testing::Message() << "seed " << seed);
     std::mt19937 rng(seed);
     std::uniform_real_distribution<float> angle(-180.0f, 180.0f), coord(-100.0f, 100.0f);
