@@ -258,8 +258,8 @@ int runRender(const RenderArgs& args) {
 Command addRenderCommand(CLI::App& app) {
     auto args = std::make_shared<RenderArgs>();
     CLI::App* sub = app.add_subcommand(
-        "render",
-        "Render a frame to a PNG, or the animation to a PNG sequence or a video.\n"
+        "render", "Render a frame to a PNG, or the animation to a PNG sequence or a video (mp4, webm, gif)");
+    sub->footer(
         "The output name decides: -o f.png = one image; -o frames/f_%04d.png = one file per frame "
         "(%d, %4d or %04d = frame number; the directory is created); -o out.mp4 | out.webm | out.gif "
         "= a video, encoded by the ffmpeg program. Ctrl+C stops cleanly: no partial file is left.");
