@@ -99,14 +99,14 @@ double largestCoordinate(const f2::SceneDesc& scene) {
     return m;
 }
 
-/// Scenes with larger coordinates are parsed but not rendered. Known core bug
-/// (tests/data/fuzz/core_bvh_nan_centroid.f2): coordinates near FLT_MAX overflow
-/// to inf/NaN in world space and Bvh::build indexes its bins with int(NaN).
-/// Set F2_FUZZ_RENDER_MAX_COORD=inf to fuzz them too once that is fixed.
+/// Scenes with larger coordinates are parsed but not rendered; no limit by
+/// default. Sessions 1-2 used 1e15 while core finding F1 was open
+/// (tests/data/fuzz/core_bvh_nan_centroid.f2: coordinates near FLT_MAX made
+/// Bvh::build index its bins with int(NaN); fixed in 3d8ca4f).
 double renderMaxCoordinate() {
     static const double limit = [] {
         const char* env = std::getenv("F2_FUZZ_RENDER_MAX_COORD");
-        return env ? std::strtod(env, nullptr) : 1e15;
+        return env ? std::strtod(env, nullptr) : HUGE_VAL;
     }();
     return limit;
 }

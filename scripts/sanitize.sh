@@ -7,8 +7,8 @@
 #
 # Environment:
 #   F2_SANITIZE_EXCLUDE  ctest -E regex of tests to leave out (default: none;
-#                        e.g. 'KnownCoreBugs|SeesOnlyAmbientLight|SurfaceThroughTheEye'
-#                        to skip the known core bugs listed in docs/robustness.md)
+#                        e.g. 'MillionObjects' to drop the slowest test
+#                        when time is short)
 #   F2_SANITIZE_JOBS     parallel build and test jobs (default 2)
 set -uo pipefail
 cd "$(dirname "$0")/.."

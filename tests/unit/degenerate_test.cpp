@@ -119,13 +119,12 @@ TEST(Degenerate, CameraInsideASphereBoxOrCylinderIsFiniteAndSmooth) {
     }
 }
 
-// KNOWN CORE BUG (reported, not fixed here: src/core/render is being rewritten).
+// Regression for core finding F2 (docs/robustness.md; fixed in 3d8ca4f).
 // SPEC 3: s_j = 0 if a shadow ray from the hit point toward the light hits any
 // object. From inside a closed sphere, box or cylinder the shadow ray always
 // hits the object itself, so the inside is lit by ambient light only: one
-// uniform colour. Since commit fd01a06 ("Faster frames") shadeHit() passes
-// hit.primitive as `skip` to Bvh::occluded(), so a primitive never shadows
-// itself and the inside is lit by the directional light (a gradient).
+// uniform colour. After fd01a06 shadeHit() skipped the hit primitive in every
+// shadow ray, so the inside was lit by the directional light (a gradient).
 // Input: kInsideShapes + insideScene() above, e.g.
 //   /camera 64 48 0.5 / /sphere o 10 0 0 0 / /paint o 100 100 100 /
 //   /material o 1 1 0 1 / /amb_light 0.5 / /dir_light 1 0.3 -1 0.7
@@ -201,11 +200,10 @@ TEST(Degenerate, ObjectsNearOrCuttingTheEye) {
     }
 }
 
-// KNOWN CORE BUG (reported, not fixed here). The eye exactly on a surface:
-// every primary ray starts on the object, and whether the root t ~ 0 counts
-// as a hit (tMin = 0) depends on rounding, so the image is salt-and-pepper
-// noise (hundreds of isolated pixels for the sphere). A consistent answer
-// (e.g. a primary-ray tMin relative to the eye's magnitude) gives a clean image.
+// Regression for core finding F3 (docs/robustness.md; fixed in 3d8ca4f). The
+// eye exactly on a surface: every primary ray starts on the object, and
+// whether the root t ~ 0 counted as a hit (tMin = 0) depended on rounding, so
+// the image was salt-and-pepper noise (~230 isolated pixels for the sphere).
 // Input: /camera 64 48 0.5 / /sphere o 1 0 0 1 / /material o 1 1 0 1 /
 //        /amb_light 0.3 / /dir_light 0.7 0.1 -0.2 1
 TEST(Degenerate, SurfaceThroughTheEyeHasNoSpeckles) {

@@ -474,14 +474,13 @@ TEST(FuzzRegression, ReplayEveryKeptInput) {
     for (const fs::path& file : files) replay(file);
 }
 
-// KNOWN CORE BUGS (reported, not fixed here: geometry/ and render/ are being
-// rewritten). tests/data/fuzz/core_*.f2 are fuzzer findings outside the
-// parser; this test fails (under UBSan: aborts) until they are fixed.
-// core_bvh_nan_centroid.f2: spheres at x = +3.4e38 and -3.4e38 (each a valid
-// number) make the centroid extent overflow to inf; Bvh::build then computes
-// int(NaN) as a bin index (bvh.cpp, binned SAH) -> UB, and in a Release build
-// an out-of-bounds write: `f2 render` crashes with SIGSEGV.
-TEST(FuzzRegression, KnownCoreBugs) {
+// Core findings of the fuzzer (tests/data/fuzz/core_*.f2), outside the parser;
+// reported, fixed by the core's owners, kept as regressions.
+// core_bvh_nan_centroid.f2 (F1 in docs/robustness.md): spheres at x = +3.4e38
+// and -3.4e38 (each a valid number) made the centroid extent overflow to inf;
+// Bvh::build then used int(NaN) as a bin index (UBSan report; in Release an
+// out-of-bounds write, `f2 render` crashed with SIGSEGV). Fixed in 3d8ca4f.
+TEST(FuzzRegression, CoreFindings) {
     const std::vector<fs::path> files = keptInputs(true);
     for (const fs::path& file : files) replay(file);
 }
