@@ -20,7 +20,4 @@ Transform objectFrame(const SceneObject& object, double t);
 /// frame.bvh.update(frame.primitives) after.
 void evaluateFrame(const SceneDesc& scene, double t, FrameScene& frame, ThreadPool* pool = nullptr);
 
-/// Time in frames for playback time `seconds` at the scene's fps.
-inline double frameAtSeconds(const SceneDesc& scene, double seconds) { return seconds * scene.fps; }
-
 }  // namespace f2

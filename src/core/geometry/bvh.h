@@ -59,7 +59,6 @@ public:
     /// Primitives in leaf order, and each one's index in the frame.
     std::span<const Primitive> orderedPrimitives() const { return ordered_; }
     std::span<const std::uint32_t> originalIndices() const { return original_; }
-    Bounds bounds() const { return nodes_.empty() ? Bounds{} : nodes_[0].bounds; }
 
 private:
     std::vector<Node> nodes_;

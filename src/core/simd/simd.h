@@ -63,7 +63,6 @@ inline bool none(Mask a) { return a.m == 0; }
 inline int firstLane(Mask a) { return __builtin_ctz(a.m); }
 inline std::uint32_t bits(Mask a) { return a.m; }
 inline Mask allLanes() { return {0xFFFF}; }
-inline Mask lanesBelow(int n) { return {__mmask16((1u << n) - 1u)}; }
 
 /// mask ? a : b
 inline Float select(Mask m, Float a, Float b) { return _mm512_mask_blend_ps(m.m, b.v, a.v); }
@@ -130,9 +129,6 @@ inline bool any(Mask a) { return bits(a) != 0; }
 inline bool none(Mask a) { return bits(a) == 0; }
 inline int firstLane(Mask a) { return __builtin_ctz(bits(a)); }
 inline Mask allLanes() { return {_mm256_castsi256_ps(_mm256_set1_epi32(-1))}; }
-inline Mask lanesBelow(int n) {
-    return {_mm256_castsi256_ps(_mm256_cmpgt_epi32(_mm256_set1_epi32(n), _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7)))};
-}
 
 inline Float select(Mask m, Float a, Float b) { return _mm256_blendv_ps(b.v, a.v, m.m); }
 inline Int select(Mask m, Int a, Int b) {
@@ -198,7 +194,6 @@ inline bool none(Mask a) { return !a.m; }
 inline int firstLane(Mask) { return 0; }
 inline std::uint32_t bits(Mask a) { return a.m ? 1u : 0u; }
 inline Mask allLanes() { return {true}; }
-inline Mask lanesBelow(int n) { return {n > 0}; }
 
 inline Float select(Mask m, Float a, Float b) { return m.m ? a : b; }
 inline Int select(Mask m, Int a, Int b) { return m.m ? a : b; }
@@ -218,8 +213,6 @@ inline Int shiftLeft23(Int a) { return std::int32_t(std::uint32_t(a.v) << 23); }
 inline Int shiftRight23(Int a) { return std::int32_t(std::uint32_t(a.v) >> 23); }
 
 #endif
-
-inline Mask operator!(Mask a) { return andNot(allLanes(), a); }
 
 /// Lane i of a value (tests, debugging; not for hot loops).
 inline float lane(Float a, int i) {
