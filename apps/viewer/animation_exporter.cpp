@@ -62,7 +62,8 @@ void AnimationExporter::run(ExportJob job) {
     report(true, tr("Exported %1 frames to %2").arg(total).arg(job.sink->destination()));
 }
 
-void exportWithProgress(QWidget* parent, ExportJob job, std::function<void(bool, QString)> done) {
+void exportWithProgress(QWidget* parent, ExportJob job,
+                        std::function<void(bool ok, bool cancelled, const QString& message)> done) {
     const int total = job.lastFrame - job.firstFrame + 1;
     auto* dialog =
         new QProgressDialog(QObject::tr("Rendering frames…"), QObject::tr("Cancel"), 0, total, parent);
@@ -75,9 +76,10 @@ void exportWithProgress(QWidget* parent, ExportJob job, std::function<void(bool,
     QObject::connect(dialog, &QProgressDialog::canceled, exporter, &AnimationExporter::cancel);
     QObject::connect(exporter, &AnimationExporter::finished, dialog,
                      [dialog, done](bool ok, const QString& m) {
+                         const bool cancelled = dialog->wasCanceled();
                          dialog->close();
                          dialog->deleteLater();  // also deletes the (already joined) exporter
-                         if (done) done(ok, m);
+                         if (done) done(ok, cancelled, m);
                      });
     dialog->setValue(0);
     exporter->start(std::move(job));

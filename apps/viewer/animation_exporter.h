@@ -55,7 +55,9 @@ class AnimationExporter : public QObject {
 };
 
 /// Runs `job` behind a cancellable QProgressDialog over `parent`; the dialog
-/// and the exporter delete themselves when done. `done` gets the result.
-void exportWithProgress(QWidget* parent, ExportJob job, std::function<void(bool, QString)> done);
+/// and the exporter delete themselves when done. `done` gets the result and
+/// whether the user cancelled.
+void exportWithProgress(QWidget* parent, ExportJob job,
+                        std::function<void(bool ok, bool cancelled, const QString& message)> done);
 
 }  // namespace f2::viewer

@@ -33,4 +33,26 @@ bool PngSequenceSink::finish(bool, std::string&) { return true; }  // frames wri
 
 QString PngSequenceSink::destination() const { return QDir(directory_).filePath(stem_ + "_*.png"); }
 
+VideoSink::VideoSink(QString path, Rgb8 padColor) : path_(std::move(path)), padColor_(padColor) {}
+
+bool VideoSink::begin(int width, int height, int fps, int, std::string& error) {
+    const std::string path = QFile::encodeName(path_).toStdString();
+    const auto format = videoFormatForPath(path);
+    if (!format) {
+        error = QStringLiteral("%1: unknown video format (use .mp4, .webm or .gif)").arg(path_).toStdString();
+        return false;
+    }
+    return encoder_.open(VideoSettings{*format, width, height, fps, padColor_}, path, error);
+}
+
+bool VideoSink::write(const Image& image, int, std::string& error) { return encoder_.write(image, error); }
+
+bool VideoSink::finish(bool cancelled, std::string& error) {
+    if (cancelled) {
+        encoder_.abort();  // no partial file
+        return true;
+    }
+    return encoder_.finish(error);
+}
+
 }  // namespace f2::viewer

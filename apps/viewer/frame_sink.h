@@ -1,12 +1,11 @@
 #pragma once
-/// Where exported frames go. The PNG sequence is the one sink today; video
-/// export will be another FrameSink (fed by the CLI's encoder in f2::io when
-/// it lands) and plugs into AnimationExporter without other changes: add the
-/// sink, then enable MainWindow's "Export Video…" action (see docs/viewer.md).
+/// Where exported frames go: a PNG sequence or a video file (through the
+/// CLI's ffmpeg-based f2::VideoEncoder). AnimationExporter drives either.
 #include <QString>
 #include <string>
 
 #include "core/render/image.h"
+#include "io/video_encoder.h"
 
 namespace f2::viewer {
 
@@ -38,6 +37,24 @@ class PngSequenceSink : public FrameSink {
     QString directory_;
     QString stem_;
     int digits_ = 4;
+};
+
+/// One video file (.mp4, .webm or .gif, chosen by the extension) encoded by
+/// f2::VideoEncoder. The file appears only when finish() succeeds; a cancel
+/// or an error aborts ffmpeg and removes the temporary file.
+class VideoSink : public FrameSink {
+   public:
+    /// `padColor` fills the extra row/column H.264 needs for odd sizes.
+    explicit VideoSink(QString path, Rgb8 padColor = {});
+    bool begin(int width, int height, int fps, int frameCount, std::string& error) override;
+    bool write(const Image& image, int index, std::string& error) override;
+    bool finish(bool cancelled, std::string& error) override;
+    QString destination() const override { return path_; }
+
+   private:
+    QString path_;
+    Rgb8 padColor_;
+    VideoEncoder encoder_;
 };
 
 }  // namespace f2::viewer

@@ -110,11 +110,7 @@ void MainWindow::createActions() {
     file->addSeparator();
     file->addAction(tr("&Save Frame as PNG…"), QKeySequence::Save, this, &MainWindow::saveFrame);
     file->addAction(tr("&Export PNG Sequence…"), this, &MainWindow::exportPngSequence);
-    // Hook: video export comes from the CLI's encoder; it will be a FrameSink
-    // (frame_sink.h) run through exportWithProgress, like the PNG sequence.
-    QAction* video = file->addAction(tr("Export &Video…"));
-    video->setEnabled(false);
-    video->setToolTip(tr("Not yet: video export will come with the command-line encoder"));
+    file->addAction(tr("Export &Video…"), this, &MainWindow::exportVideo);
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, qApp, &QApplication::closeAllWindows);
     rebuildRecentMenu();
@@ -264,14 +260,45 @@ void MainWindow::exportPngSequence() {
     const QString dir = QFileDialog::getExistingDirectory(this, tr("Export PNG Sequence to Folder"));
     if (dir.isEmpty()) return;
     const QString stem = QFileInfo(document_->displayName()).completeBaseName().remove('<').remove('>');
+    runExport(std::move(scene), std::make_unique<PngSequenceSink>(dir, stem));
+}
+
+void MainWindow::exportVideo() {
+    auto scene = document_->scene();
+    if (!scene) return;
+    playback_->pause();
+    const QString stem = QFileInfo(document_->displayName()).completeBaseName().remove('<').remove('>');
+    QFileDialog dialog(this, tr("Export Video"), stem + ".mp4",
+                       tr("MP4 video (*.mp4);;WebM video (*.webm);;GIF animation (*.gif)"));
+    dialog.setAcceptMode(QFileDialog::AcceptSave);
+    dialog.setDefaultSuffix("mp4");
+    if (dialog.exec() != QDialog::Accepted || dialog.selectedFiles().isEmpty()) return;
+    const QString path = dialog.selectedFiles().first();
+    if (!videoFormatForPath(QFile::encodeName(path).toStdString())) {
+        QMessageBox::warning(this, tr("Export Video"), tr("Use a .mp4, .webm or .gif file name."));
+        return;
+    }
+    if (!document_->path().isEmpty() && QFileInfo(path) == QFileInfo(document_->path())) {
+        QMessageBox::warning(this, tr("Export Video"), tr("Refusing to overwrite the scene file."));
+        return;
+    }
+    const Color8 bg = scene->background;
+    runExport(std::move(scene), std::make_unique<VideoSink>(path, Rgb8{bg.r, bg.g, bg.b}));
+}
+
+void MainWindow::runExport(std::shared_ptr<const SceneDesc> scene, std::unique_ptr<FrameSink> sink) {
     ExportJob job;
     // Like `f2 render`: the scene's /camera size, seen from the current view.
     job.camera = viewport_->viewCamera(QSize(scene->camera.width, scene->camera.height));
     job.scene = std::move(scene);
     job.lastFrame = job.scene->lastFrame();
-    job.sink = std::make_unique<PngSequenceSink>(dir, stem);
-    exportWithProgress(this, std::move(job),
-                       [this](bool, const QString& message) { statusBar()->showMessage(message, 10000); });
+    job.sink = std::move(sink);
+    exportWithProgress(this, std::move(job), [this](bool ok, bool cancelled, const QString& message) {
+        if (ok || cancelled)
+            statusBar()->showMessage(message, 10000);
+        else
+            QMessageBox::warning(this, tr("Export"), message);
+    });
 }
 
 void MainWindow::addRecentFile(const QString& path) {

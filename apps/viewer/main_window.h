@@ -13,8 +13,13 @@ class QMenu;
 class QPlainTextEdit;
 class QDockWidget;
 
+namespace f2 {
+struct SceneDesc;
+}
+
 namespace f2::viewer {
 
+class FrameSink;
 class Playback;
 class SceneDocument;
 class TimelineWidget;
@@ -66,6 +71,11 @@ class MainWindow : public QMainWindow {
     void openDialog();
     void saveFrame();
     void exportPngSequence();
+    void exportVideo();
+    /// The export flow shared by both: renders frames 0..last of `scene` at its
+    /// /camera size from the current view into `sink`, with progress; errors
+    /// go to a message box.
+    void runExport(std::shared_ptr<const SceneDesc> scene, std::unique_ptr<FrameSink> sink);
     void addRecentFile(const QString& path);
     void rebuildRecentMenu();
 

@@ -5,12 +5,18 @@
 #include <QElapsedTimer>
 #include <QFile>
 #include <QPlainTextEdit>
+#include <QProcess>
+#include <QProgressDialog>
+#include <QPushButton>
+#include <QStandardPaths>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
 #include <QWheelEvent>
+#include <atomic>
+#include <thread>
 
 #include "animation_exporter.h"
 #include "core/parse/parser.h"
@@ -105,7 +111,52 @@ class ViewerTest : public QObject {
     void windowRespondsDuringSlowFrame();
     void latestRequestWins();
     void exportWritesPngSequence();
+    void exportWritesVideo();
+    void cancelledVideoExportLeavesNoFile();
 };
+
+namespace {
+
+/// An export of frames 0..`lastFrame` of the seed example at `width`x`height`
+/// into `sink`, as MainWindow's export actions build it.
+ExportJob seedExportJob(int width, int height, int lastFrame, std::unique_ptr<FrameSink> sink) {
+    const ParseResult parsed = parseSceneFile(F2_SOURCE_DIR "/scenes/seed_example.f2");
+    if (!parsed.ok()) return {};
+    ExportJob job;
+    job.scene = std::make_shared<const SceneDesc>(*parsed.scene);
+    job.camera = Camera::fromDesc(job.scene->camera).resized(width, height);
+    job.lastFrame = lastFrame;
+    job.sink = std::move(sink);
+    return job;
+}
+
+/// Files in `dir` whose name contains ".tmp-" (the encoder's temporary files).
+QStringList tempFiles(const QString& dir) {
+    return QDir(dir).entryList({"*.tmp-*"}, QDir::Files | QDir::Hidden);
+}
+
+/// Forwards to a VideoSink, but holds frame 1 until `release` is raised, so a
+/// test can cancel while the export is certainly in the middle.
+class GatedSink : public FrameSink {
+   public:
+    GatedSink(QString path, std::shared_ptr<std::atomic<bool>> release)
+        : video_(std::move(path)), release_(std::move(release)) {}
+    bool begin(int w, int h, int fps, int count, std::string& error) override {
+        return video_.begin(w, h, fps, count, error);
+    }
+    bool write(const Image& image, int index, std::string& error) override {
+        while (index == 1 && !release_->load()) std::this_thread::sleep_for(5ms);
+        return video_.write(image, index, error);
+    }
+    bool finish(bool cancelled, std::string& error) override { return video_.finish(cancelled, error); }
+    QString destination() const override { return video_.destination(); }
+
+   private:
+    VideoSink video_;
+    std::shared_ptr<std::atomic<bool>> release_;
+};
+
+}  // namespace
 
 void ViewerTest::initTestCase() {
     // Settings (recent files, scale) go to the test's XDG_CONFIG_HOME, not the user's.
@@ -446,6 +497,71 @@ void ViewerTest::exportWritesPngSequence() {
     QVERIFY(finished2.wait(kWaitMs));
     QCOMPARE(finished2.at(0).at(0).toBool(), false);
     QVERIFY(finished2.at(0).at(1).toString().contains("cancelled"));
+}
+
+void ViewerTest::exportWritesVideo() {
+    if (QStandardPaths::findExecutable("ffmpeg").isEmpty()) QSKIP("ffmpeg is not on PATH");
+    QTemporaryDir dir;
+    const QString path = dir.filePath("seed.mp4");
+    ExportJob job = seedExportJob(80, 60, 5, std::make_unique<VideoSink>(path));
+    QVERIFY(job.scene);
+
+    // The path the Export Video action takes: exportWithProgress with a VideoSink.
+    bool called = false, ok = false, cancelled = true;
+    QString message;
+    exportWithProgress(nullptr, std::move(job), [&](bool o, bool c, const QString& m) {
+        called = true, ok = o, cancelled = c, message = m;
+    });
+    QTRY_VERIFY_WITH_TIMEOUT(called, kWaitMs * 3);
+    QVERIFY2(ok, qPrintable(message));
+    QVERIFY(!cancelled);
+    QVERIFY(message.contains("6 frames"));
+    QVERIFY(QFileInfo(path).isFile());
+    QVERIFY(QFileInfo(path).size() > 0);
+    QVERIFY2(tempFiles(dir.path()).isEmpty(), qPrintable(tempFiles(dir.path()).join(' ')));
+
+    const QString ffprobe = QStandardPaths::findExecutable("ffprobe");
+    if (ffprobe.isEmpty()) return;
+    QProcess probe;
+    probe.start(ffprobe, {"-v", "error", "-select_streams", "v:0", "-count_frames", "-show_entries",
+                          "stream=width,height,nb_read_frames", "-of", "default=noprint_wrappers=1", path});
+    QVERIFY(probe.waitForFinished(kWaitMs));
+    QCOMPARE(probe.exitCode(), 0);
+    const QString out = QString::fromUtf8(probe.readAllStandardOutput());
+    QVERIFY2(out.contains("width=80"), qPrintable(out));
+    QVERIFY2(out.contains("height=60"), qPrintable(out));
+    QVERIFY2(out.contains("nb_read_frames=6"), qPrintable(out));
+}
+
+void ViewerTest::cancelledVideoExportLeavesNoFile() {
+    if (QStandardPaths::findExecutable("ffmpeg").isEmpty()) QSKIP("ffmpeg is not on PATH");
+    QTemporaryDir dir;
+    const QString path = dir.filePath("cancelled.mp4");
+    auto release = std::make_shared<std::atomic<bool>>(false);
+    ExportJob job = seedExportJob(160, 120, 15, std::make_unique<GatedSink>(path, release));
+    QVERIFY(job.scene);
+    bool called = false, ok = true, cancelled = false;
+    exportWithProgress(nullptr, std::move(job), [&](bool o, bool c, const QString&) {
+        called = true, ok = o, cancelled = c;
+    });
+    QProgressDialog* dialog = nullptr;
+    for (QWidget* w : QApplication::topLevelWidgets())
+        if (auto* d = qobject_cast<QProgressDialog*>(w)) dialog = d;
+    QVERIFY(dialog);
+    // Mid-export: frame 0 has gone to ffmpeg, which is writing its temporary
+    // file; frame 1 is held until after the cancel.
+    QTRY_VERIFY_WITH_TIMEOUT(dialog->value() >= 1, kWaitMs * 3);
+    QTRY_VERIFY_WITH_TIMEOUT(!tempFiles(dir.path()).isEmpty(), kWaitMs);
+    QVERIFY(!called);
+    auto* cancelButton = dialog->findChild<QPushButton*>();
+    QVERIFY(cancelButton);
+    cancelButton->click();
+    release->store(true);
+    QTRY_VERIFY_WITH_TIMEOUT(called, kWaitMs);
+    QVERIFY(!ok);
+    QVERIFY(cancelled);
+    QVERIFY(!QFileInfo::exists(path));
+    QVERIFY2(tempFiles(dir.path()).isEmpty(), qPrintable(tempFiles(dir.path()).join(' ')));
 }
 
 QTEST_MAIN(ViewerTest)
