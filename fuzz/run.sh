@@ -15,7 +15,7 @@ shift || true
 jobs=${F2_FUZZ_JOBS:-1}
 
 if [[ "${F2_FUZZ_NOBUILD:-0}" != 1 ]]; then
-  cmake --preset fuzz -G Ninja >/dev/null
+  cmake --preset fuzz >/dev/null
   cmake --build --preset fuzz
 fi
 

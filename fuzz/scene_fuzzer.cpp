@@ -9,7 +9,7 @@
 //  - the number of kept diagnostics respects maxErrors / maxWarnings;
 //  - every traced sample is finite (no NaN or infinity reaches a pixel).
 //
-// Build: cmake --preset fuzz -G Ninja && cmake --build --preset fuzz
+// Build: cmake --preset fuzz && cmake --build --preset fuzz
 // Run:   fuzz/run.sh SECONDS
 #include <algorithm>
 #include <cmath>

@@ -60,7 +60,7 @@ if [ -z "$F2" ]; then
 fi
 if [ -z "$F2" ]; then
   log "no f2 binary found; building the headless preset"
-  (cd "$ROOT" && cmake --preset headless -G Ninja >/dev/null && cmake --build --preset headless --target f2)
+  (cd "$ROOT" && cmake --preset headless >/dev/null && cmake --build --preset headless --target f2)
   F2=$ROOT/build/headless/apps/cli/f2
 fi
 "$F2" export --help >/dev/null 2>&1 || { log "$F2 has no 'export' command yet"; exit 1; }

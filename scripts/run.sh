@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
-cmake --preset release -G Ninja
+cmake --preset release
 cmake --build --preset release
 if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ] && [ -x build/release/apps/viewer/f2-viewer ]; then
   exec build/release/apps/viewer/f2-viewer "$@"

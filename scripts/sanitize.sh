@@ -27,7 +27,7 @@ summary=()
 now() { date +%s; }
 for preset in "${presets[@]}"; do
   t0=$(now)
-  if ! cmake --preset "$preset" -G Ninja >/dev/null; then
+  if ! cmake --preset "$preset" >/dev/null; then
     summary+=("$preset: configure FAILED"); status=1; continue
   fi
   if ! cmake --build --preset "$preset" -j "$jobs"; then

@@ -3,6 +3,6 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
-cmake --preset release -G Ninja
+cmake --preset release
 cmake --build --preset release
 ctest --preset release "$@"
