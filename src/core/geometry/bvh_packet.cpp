@@ -60,7 +60,7 @@ void Bvh::intersect(const RayPacket& rays, Mask active, Float tMin, PacketHit& h
 }
 
 Mask Bvh::occluded(const RayPacket& rays, Mask active, Float tMin, Float tMax, Int skip) const {
-    Mask blocked{};
+    Mask blocked = simd::noLanes();
     if (nodes_.empty() || simd::none(active)) return blocked;
     VisitOrder order(rays, active);  // the nearer occluder first ends a lane sooner
     std::uint32_t stack[kStackSize];

@@ -129,15 +129,15 @@ inline Mask primitiveIntervalP(const Primitive& prim, const RayPacket& ray, Floa
             return valid;
         }
     }
-    return {};
+    return simd::noLanes();
 }
 
 /// Lanes of `active` whose nearest crossing of the primitive lies in (tMin, tMax);
 /// writes that distance and face into those lanes of tHit and face.
 inline Mask intersectPrimitiveP(const Primitive& prim, const RayPacket& ray, Mask active, Float tMin, Float tMax,
                                 Float& tHit, Int& face) {
-    Float enter, exit;
-    Int enterFace, exitFace;
+    Float enter(0.0f), exit(0.0f);  // initialised: GCC cannot see every kind sets them
+    Int enterFace(0), exitFace(0);
     Mask valid = primitiveIntervalP(prim, ray, enter, exit, enterFace, exitFace) & active;
     if (simd::none(valid)) return valid;
     Mask fromOutside = enter > tMin;

@@ -63,6 +63,7 @@ inline bool none(Mask a) { return a.m == 0; }
 inline int firstLane(Mask a) { return __builtin_ctz(a.m); }
 inline std::uint32_t bits(Mask a) { return a.m; }
 inline Mask allLanes() { return {0xFFFF}; }
+inline Mask noLanes() { return {0}; }
 
 /// mask ? a : b
 inline Float select(Mask m, Float a, Float b) { return _mm512_mask_blend_ps(m.m, b.v, a.v); }
@@ -129,6 +130,7 @@ inline bool any(Mask a) { return bits(a) != 0; }
 inline bool none(Mask a) { return bits(a) == 0; }
 inline int firstLane(Mask a) { return __builtin_ctz(bits(a)); }
 inline Mask allLanes() { return {_mm256_castsi256_ps(_mm256_set1_epi32(-1))}; }
+inline Mask noLanes() { return {_mm256_setzero_ps()}; }
 
 inline Float select(Mask m, Float a, Float b) { return _mm256_blendv_ps(b.v, a.v, m.m); }
 inline Int select(Mask m, Int a, Int b) {
@@ -194,6 +196,7 @@ inline bool none(Mask a) { return !a.m; }
 inline int firstLane(Mask) { return 0; }
 inline std::uint32_t bits(Mask a) { return a.m ? 1u : 0u; }
 inline Mask allLanes() { return {true}; }
+inline Mask noLanes() { return {false}; }
 
 inline Float select(Mask m, Float a, Float b) { return m.m ? a : b; }
 inline Int select(Mask m, Int a, Int b) { return m.m ? a : b; }
