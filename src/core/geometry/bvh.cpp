@@ -13,7 +13,10 @@ constexpr float kTraversalCost = 1.0f;  // relative to one primitive test
 // hostile layout cannot make the tree deeper than the traversal stack.
 constexpr std::uint32_t kMaxSahDepth = 64;
 constexpr int kStackSize = 128;
-constexpr std::uint32_t kRefitChunk = 1024;  // primitives or leaves per parallel work item
+constexpr std::uint32_t kRefitChunk = 1024;  // primitives per parallel work item of a build
+// Depth of the subtrees refitted in parallel: up to 2^6 = 64 work items,
+// enough to share unequal subtrees between threads.
+constexpr std::uint32_t kRefitDepth = 6;
 
 /// body(chunk) for chunk in [0, chunks), on the pool when there is one.
 template <class Body>
@@ -54,7 +57,8 @@ inline Vec3 inverseDirection(Vec3 d) { return {1.0f / d.x, 1.0f / d.y, 1.0f / d.
 void Bvh::build(std::span<const Primitive> primitives, ThreadPool* pool) {
     const std::uint32_t n = std::uint32_t(primitives.size());
     nodes_.clear();
-    leaves_.clear();
+    subtrees_.clear();
+    topNodes_.clear();
     primBounds_.resize(n);
     centroids_.resize(n);
     indices_.resize(n);
@@ -68,6 +72,7 @@ void Bvh::build(std::span<const Primitive> primitives, ThreadPool* pool) {
     forChunks(pool, (n + kRefitChunk - 1) / kRefitChunk, boundChunk);
     ordered_.resize(n);
     original_.resize(n);
+    position_.resize(n);
     if (n == 0) return;
 
     nodes_.reserve(2 * n);
@@ -134,10 +139,10 @@ void Bvh::build(std::span<const Primitive> primitives, ThreadPool* pool) {
         if (makeLeaf) {
             node.first = task.begin;
             node.count = std::uint16_t(count);
-            leaves_.push_back(task.node);
             for (std::uint32_t i = task.begin; i < task.end; ++i) {
                 ordered_[i] = primitives[indices_[i]];
                 original_[i] = indices_[i];
+                position_[indices_[i]] = i;
             }
             continue;
         }
@@ -171,6 +176,7 @@ void Bvh::build(std::span<const Primitive> primitives, ThreadPool* pool) {
         stack[top++] = {left, task.begin, mid, task.depth + 1};
     }
     costAtBuild_ = sahCost();
+    planRefit();
 }
 
 float Bvh::sahCost() const {
@@ -181,30 +187,78 @@ float Bvh::sahCost() const {
     return root > 0 ? sum / root : 0;
 }
 
-float Bvh::refit(std::span<const Primitive> primitives, ThreadPool* pool) {
-    // Leaves are independent: refresh their primitives and bounds in parallel.
-    const std::uint32_t leafCount = std::uint32_t(leaves_.size());
-    forChunks(pool, (leafCount + kRefitChunk - 1) / kRefitChunk, [&](std::uint32_t chunk) {
-        for (std::uint32_t k = chunk * kRefitChunk; k < std::min(leafCount, (chunk + 1) * kRefitChunk); ++k) {
-            Node& leaf = nodes_[leaves_[k]];
-            Bounds b;
-            for (std::uint32_t i = leaf.first; i < leaf.first + leaf.count; ++i) {
-                ordered_[i] = primitives[original_[i]];
-                b.grow(primitiveBounds(ordered_[i]));
-            }
-            leaf.bounds = b;
+std::uint32_t Bvh::lastDescendant(std::uint32_t node) const {
+    // Depth first: a node's children are allocated together, then the whole
+    // left subtree, then the whole right one.
+    for (;;) {
+        const Node& n = nodes_[node];
+        if (n.count > 0) return node;
+        std::uint32_t right = n.first + 1;
+        if (nodes_[right].count == 0) {
+            node = right;
+            continue;
         }
-    });
-    // Children always come after their parent, so a backward sweep sees them first.
-    float sum = 0;
-    for (std::size_t k = nodes_.size(); k-- > 0;) {
-        Node& node = nodes_[k];
-        if (node.count == 0) {
-            node.bounds = nodes_[node.first].bounds;
-            node.bounds.grow(nodes_[node.first + 1].bounds);
-        }
-        sum += node.bounds.halfArea() * (node.count > 0 ? float(node.count) : kTraversalCost);
+        return std::max(right, lastDescendant(n.first));
     }
+}
+
+void Bvh::planRefit() {
+    subtrees_.clear();
+    topNodes_.clear();
+    struct Item {
+        std::uint32_t node, depth;
+    };
+    Item stack[kStackSize];
+    int top = 0;
+    stack[top++] = {0, 0};
+    while (top > 0) {
+        Item item = stack[--top];
+        const Node& node = nodes_[item.node];
+        if (node.count == 0 && item.depth == kRefitDepth) {
+            subtrees_.push_back({item.node, node.first, lastDescendant(item.node)});
+            continue;
+        }
+        topNodes_.push_back(item.node);  // leaves above the depth included
+        if (node.count == 0) {
+            stack[top++] = {node.first, item.depth + 1};
+            stack[top++] = {node.first + 1, item.depth + 1};
+        }
+    }
+    std::sort(topNodes_.begin(), topNodes_.end(), std::greater<>());  // children have larger indices
+    subtreeCost_.assign(subtrees_.size(), 0.0f);
+}
+
+float Bvh::refitNode(std::uint32_t index) {
+    Node& node = nodes_[index];
+    if (node.count > 0) {
+        Bounds b;
+        for (std::uint32_t i = node.first; i < node.first + node.count; ++i) b.grow(primitiveBounds(ordered_[i]));
+        node.bounds = b;
+        return b.halfArea() * float(node.count);
+    }
+    node.bounds = nodes_[node.first].bounds;
+    node.bounds.grow(nodes_[node.first + 1].bounds);
+    return node.bounds.halfArea() * kTraversalCost;
+}
+
+float Bvh::refit(std::span<const Primitive> primitives, ThreadPool* pool) {
+    // Copy the moved primitives into leaf order: reading the frame in order and
+    // scattering the writes keeps the loads sequential (they would miss cache
+    // gathered in leaf order).
+    const std::uint32_t n = std::uint32_t(primitives.size());
+    forChunks(pool, (n + kRefitChunk - 1) / kRefitChunk, [&](std::uint32_t chunk) {
+        for (std::uint32_t i = chunk * kRefitChunk; i < std::min(n, (chunk + 1) * kRefitChunk); ++i)
+            ordered_[position_[i]] = primitives[i];
+    });
+    forChunks(pool, std::uint32_t(subtrees_.size()), [&](std::uint32_t k) {
+        const Subtree& subtree = subtrees_[k];
+        float sum = 0;
+        for (std::uint32_t i = subtree.last + 1; i-- > subtree.first;) sum += refitNode(i);
+        subtreeCost_[k] = sum + refitNode(subtree.root);
+    });
+    float sum = 0;
+    for (float cost : subtreeCost_) sum += cost;
+    for (std::uint32_t index : topNodes_) sum += refitNode(index);
     float root = nodes_[0].bounds.halfArea();
     return root > 0 ? sum / root : 0;
 }

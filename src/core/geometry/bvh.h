@@ -64,12 +64,27 @@ private:
     std::vector<Node> nodes_;
     std::vector<Primitive> ordered_;        ///< primitives in leaf order
     std::vector<std::uint32_t> original_;   ///< ordered index -> frame index
+    std::vector<std::uint32_t> position_;   ///< frame index -> ordered index
     // Build scratch, kept to avoid per-frame allocation.
     std::vector<Bounds> primBounds_;
     std::vector<Vec3> centroids_;
     std::vector<std::uint32_t> indices_;
-    std::vector<std::uint32_t> leaves_;  ///< indices of the leaf nodes
-    float costAtBuild_ = 0;              ///< sahCost() right after the last full build
+    float costAtBuild_ = 0;  ///< sahCost() right after the last full build
+
+    /// Refit work, planned after each build: the subtrees below kRefitDepth
+    /// are refitted in parallel, each a contiguous run of nodes (the builder
+    /// lays a subtree out depth first), then the few nodes above them in turn.
+    struct Subtree {
+        std::uint32_t root, first, last;  ///< its descendants are nodes first..last
+    };
+    std::vector<Subtree> subtrees_;
+    std::vector<std::uint32_t> topNodes_;  ///< nodes above the subtrees, children before parents
+    std::vector<float> subtreeCost_;       ///< each subtree's share of the SAH sum, per refit
+    void planRefit();
+    std::uint32_t lastDescendant(std::uint32_t node) const;
+    /// Recomputes one node: a leaf from its (already copied) primitives, an inner node from its children.
+    /// Returns its term of the SAH sum.
+    float refitNode(std::uint32_t index);
 
     /// Recomputes every node's bounds from `primitives` (same count as built); returns sahCost().
     float refit(std::span<const Primitive> primitives, ThreadPool* pool);

@@ -1,6 +1,33 @@
 #include "core/render/thread_pool.h"
 
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#endif
+
 namespace f2 {
+
+namespace {
+// About 50 microseconds of polling before a thread sleeps.
+constexpr int kSpinRounds = 4096;
+
+inline void cpuRelax() {
+#if defined(__x86_64__) || defined(__i386__)
+    _mm_pause();
+#else
+    std::this_thread::yield();
+#endif
+}
+
+/// Polls `ready` for a while; true when it became true without sleeping.
+template <class Ready>
+bool spinUntil(Ready&& ready) {
+    for (int i = 0; i < kSpinRounds; ++i) {
+        if (ready()) return true;
+        cpuRelax();
+    }
+    return ready();
+}
+}  // namespace
 
 int ThreadPool::hardwareThreads() {
     unsigned n = std::thread::hardware_concurrency();
@@ -39,27 +66,32 @@ void ThreadPool::run(std::uint32_t count, ItemFn fn, void* ctx) {
         ctx_ = ctx;
         count_ = count;
         next_.store(0, std::memory_order_relaxed);
-        busy_ = int(workers_.size());
-        ++generation_;
+        busy_.store(int(workers_.size()), std::memory_order_relaxed);
+        generation_.fetch_add(1, std::memory_order_release);
     }
     wake_.notify_all();
     drain();
+    auto finished = [this] { return busy_.load(std::memory_order_acquire) == 0; };
+    if (spinUntil(finished)) return;
     std::unique_lock lock(mutex_);
-    done_.wait(lock, [this] { return busy_ == 0; });
+    done_.wait(lock, finished);
 }
 
 void ThreadPool::workerLoop() {
     std::uint64_t seen = 0;
+    auto newLoop = [&] { return generation_.load(std::memory_order_acquire) != seen; };
     for (;;) {
-        {
+        if (!spinUntil(newLoop)) {
             std::unique_lock lock(mutex_);
-            wake_.wait(lock, [&] { return stop_ || generation_ != seen; });
+            wake_.wait(lock, [&] { return stop_ || newLoop(); });
             if (stop_) return;
-            seen = generation_;
         }
+        seen = generation_.load(std::memory_order_acquire);
         drain();
-        std::lock_guard lock(mutex_);
-        if (--busy_ == 0) done_.notify_one();
+        if (busy_.fetch_sub(1, std::memory_order_acq_rel) == 1) {
+            std::lock_guard lock(mutex_);  // the caller may be between its check and its wait
+            done_.notify_one();
+        }
     }
 }
 

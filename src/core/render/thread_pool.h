@@ -1,6 +1,9 @@
 #pragma once
 /// A small persistent pool: workers live as long as the pool and run one
-/// parallel loop at a time; the calling thread takes part in it.
+/// parallel loop at a time; the calling thread takes part in it. A frame runs
+/// several loops a millisecond apart (evaluate, refit, trace), so workers and
+/// the caller spin briefly before sleeping: waking a thread through the
+/// kernel costs tens of microseconds on a virtual machine.
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
@@ -40,8 +43,8 @@ private:
     std::vector<std::thread> workers_;
     std::mutex mutex_;
     std::condition_variable wake_, done_;
-    std::uint64_t generation_ = 0;
-    int busy_ = 0;  ///< workers still inside the current loop
+    std::atomic<std::uint64_t> generation_{0};  ///< bumped (under mutex_) for each loop
+    std::atomic<int> busy_{0};                  ///< workers still inside the current loop
     bool stop_ = false;
     // Current loop.
     ItemFn fn_ = nullptr;
