@@ -9,7 +9,6 @@ namespace f2 {
 namespace {
 Vec3 toUnitColor(Color8 c) { return Vec3{float(c.r), float(c.g), float(c.b)} / 255.0f; }
 
-Transform translation(Vec3 t) { return {Mat3{}, t}; }
 }  // namespace
 
 Transform objectFrame(const SceneObject& object, double t) {
@@ -26,8 +25,12 @@ std::array<Transform, kPartCount> modelPartFrames(const SceneObject& object, con
         Pose motion = evaluateTrack(object.partTracks[index], t, Pose{});
         const Transform& worldFromParent = part.parent < 0 ? worldFromRoot : worldFromPart[part.parent];
         // parent . translate(pivot + offset) . rotate(rotation)  (SPEC 5)
-        Transform parentFromPart{rotationFromEulerDegrees(motion.rotation), part.pivot + motion.position};
-        worldFromPart[index] = worldFromParent * parentFromPart;
+        Vec3 origin = part.pivot + motion.position;
+        if (motion.rotation == Vec3{}) {  // most parts of most frames: no matrix product
+            worldFromPart[index] = worldFromParent.translated(origin);
+        } else {
+            worldFromPart[index] = worldFromParent * Transform{rotationFromEulerDegrees(motion.rotation), origin};
+        }
     }
     return worldFromPart;
 }
@@ -45,7 +48,7 @@ void evaluateObject(const SceneObject& object, double t, Primitive* prims, Surfa
     auto worldFromPart = modelPartFrames(object, worldFromObject, t);
     for (const ModelShape& shape : modelOf(object.kind).shapes) {
         const Transform& partFrame = worldFromPart[int(shape.part)];
-        *prims++ = makePrimitive(shape.kind, shape.size, partFrame * translation(shape.centre));
+        *prims++ = makePrimitive(shape.kind, shape.size, partFrame.translated(shape.centre));
         const Appearance& look = object.appearance[int(shape.part)];
         *surfaces++ = {toUnitColor(shape.ownColor ? shape.color : look.color), look.material};
     }

@@ -5,21 +5,6 @@
 
 namespace f2 {
 
-Primitive makePrimitive(ShapeKind kind, Vec3 size, const Transform& worldFromLocal) {
-    Primitive p;
-    p.kind = kind;
-    p.centre = worldFromLocal.translation;
-    // Rows of localFromWorld are the columns of worldFromLocal.
-    for (int i = 0; i < 3; ++i) p.axes[i] = worldFromLocal.linear.column(i);
-    p.axisAligned = p.axes[0] == Vec3{1, 0, 0} && p.axes[1] == Vec3{0, 1, 0} && p.axes[2] == Vec3{0, 0, 1};
-    switch (kind) {
-        case ShapeKind::Sphere: p.half = {size.x, size.x, size.x}; break;
-        case ShapeKind::Cylinder: p.half = {size.x, size.y * 0.5f, size.x}; break;
-        case ShapeKind::Box: p.half = size * 0.5f; break;
-    }
-    return p;
-}
-
 Bounds primitiveBounds(const Primitive& prim) {
     Vec3 extent;
     switch (prim.kind) {

@@ -11,7 +11,7 @@ struct SinCos {
 // Exact values at multiples of 90 degrees keep axis-aligned scenes free of 1e-17 noise.
 SinCos sinCosDegrees(double deg) {
     if (deg == 0) return {0, 1};  // parts at rest: most angles of a frame
-    double r = std::fmod(deg, 360.0);
+    double r = deg > -360 && deg < 360 ? deg : std::fmod(deg, 360.0);  // fmod is slow and rarely needed
     if (r < 0) r += 360.0;
     if (r == 0) return {0, 1};
     if (r == 90) return {1, 0};

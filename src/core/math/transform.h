@@ -37,6 +37,8 @@ struct Transform {
     constexpr Transform operator*(const Transform& inner) const {
         return {linear * inner.linear, linear * inner.translation + translation};
     }
+    /// `this * (translation by offset)`, without multiplying by an identity matrix.
+    constexpr Transform translated(Vec3 offset) const { return {linear, applyToPoint(offset)}; }
     /// Inverse of a rigid transform (the linear part is a rotation).
     constexpr Transform inverseRigid() const {
         Mat3 t = linear.transposed();
