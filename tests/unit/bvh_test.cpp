@@ -236,6 +236,44 @@ TEST(BvhProperty, MatchesBruteForceOnRandomScenes) {
     EXPECT_GT(hits, rays / 4);
 }
 
+TEST(BvhProperty, RefitAfterMotionMatchesBruteForce) {
+    // Bvh::update refits the last tree (in parallel subtrees, on a pool) when
+    // the primitives move a little, and rebuilds when refitting degrades it;
+    // either way every query must still match brute force. 3000 primitives
+    // make a tree deep enough to have parallel refit subtrees below the top.
+    const std::uint32_t seed = test::testSeed(1234567u);
+    SCOPED_TRACE(::testing::Message() << "seed " << seed);
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> u01(0.0f, 1.0f), jitter(-3.0f, 3.0f), far(-400.0f, 400.0f);
+    const float spread = 300;
+    std::vector<Primitive> prims = randomScene(rng, 3000, spread);
+    ThreadPool pool(3);
+    Bvh bvh;
+    EXPECT_TRUE(bvh.update(prims, &pool)) << "the first update builds";
+    int refits = 0, rebuilds = 0;
+    for (int frame = 0; frame < 6; ++frame) {
+        // Frames 0-3 jiggle every primitive; frames 4-5 throw a third of them far away.
+        for (Primitive& p : prims) {
+            Vec3 move = frame < 4 ? Vec3{jitter(rng), jitter(rng), jitter(rng)}
+                                  : (u01(rng) < 0.33f ? Vec3{far(rng), far(rng), far(rng)} : Vec3{});
+            p.centre = p.centre + move;
+        }
+        bool rebuilt = bvh.update(prims, frame % 2 ? &pool : nullptr);
+        (rebuilt ? rebuilds : refits) += 1;
+        auto [depth, leafPrims] = inspectTree(bvh);  // also checks that parents contain children
+        EXPECT_EQ(leafPrims, prims.size());
+        EXPECT_GT(depth, 8);
+        for (int n = 0; n < 1500; ++n) {
+            Ray ray = randomRay(rng, prims, spread);
+            ASSERT_TRUE(agrees(prims, bvh, ray, 0, kInfinity)) << "frame " << frame << ", ray " << n;
+            ASSERT_EQ(bvh.occluded(ray, 0, kInfinity), bruteAny(prims, ray, 0, kInfinity))
+                << "frame " << frame << ", ray " << n;
+        }
+    }
+    EXPECT_GE(refits, 4) << "small motion refits instead of rebuilding";
+    std::cout << "[   INFO   ] refit test: " << refits << " refits, " << rebuilds << " rebuilds\n";
+}
+
 TEST(BvhProperty, OriginsInsidePrimitives) {
     // Rays starting inside (overlapping) primitives: the nearest crossing may be an exit.
     const std::uint32_t seed = test::testSeed(55555u);
