@@ -274,6 +274,41 @@ TEST(BvhProperty, RefitAfterMotionMatchesBruteForce) {
     std::cout << "[   INFO   ] refit test: " << refits << " refits, " << rebuilds << " rebuilds\n";
 }
 
+TEST(BvhProperty, ParallelBuildMakesTheSameTree) {
+    // With a pool, subtrees are built on its threads into their own arrays and
+    // appended: the splits must be those of the serial build (same leaves, same
+    // SAH cost), only laid out differently, and every query must still agree.
+    const std::uint32_t seed = test::testSeed(424242u);
+    SCOPED_TRACE(::testing::Message() << "seed " << seed);
+    std::mt19937 rng(seed);
+    const float spread = 600;
+    std::vector<Primitive> prims = randomScene(rng, 10000, spread);
+    Bvh serial, parallel;
+    serial.build(prims);
+    ThreadPool pool(4);
+    parallel.build(prims, &pool);
+    ASSERT_EQ(parallel.nodes().size(), serial.nodes().size());
+    EXPECT_NEAR(parallel.sahCost(), serial.sahCost(), 1e-4 * serial.sahCost());
+    auto [depthS, leafPrimsS] = inspectTree(serial);
+    auto [depthP, leafPrimsP] = inspectTree(parallel);
+    EXPECT_EQ(depthP, depthS);
+    EXPECT_EQ(leafPrimsP, prims.size());
+    // Same leaf order: the primitives end up in the same places.
+    ASSERT_EQ(parallel.originalIndices().size(), serial.originalIndices().size());
+    EXPECT_TRUE(std::equal(parallel.originalIndices().begin(), parallel.originalIndices().end(),
+                           serial.originalIndices().begin()));
+    for (int n = 0; n < 3000; ++n) {
+        Ray ray = randomRay(rng, prims, spread);
+        ASSERT_TRUE(agrees(prims, parallel, ray, 0, kInfinity)) << "ray " << n;
+        ASSERT_EQ(parallel.occluded(ray, 0, kInfinity), bruteAny(prims, ray, 0, kInfinity)) << "ray " << n;
+    }
+    // And it refits like any other tree.
+    for (Primitive& p : prims) p.centre = p.centre + Vec3{1, -2, 0.5f};
+    EXPECT_FALSE(parallel.update(prims, &pool));
+    for (int n = 0; n < 1000; ++n)
+        ASSERT_TRUE(agrees(prims, parallel, randomRay(rng, prims, spread), 0, kInfinity)) << "after refit, ray " << n;
+}
+
 TEST(BvhProperty, OriginsInsidePrimitives) {
     // Rays starting inside (overlapping) primitives: the nearest crossing may be an exit.
     const std::uint32_t seed = test::testSeed(55555u);

@@ -17,6 +17,11 @@ constexpr std::uint32_t kRefitChunk = 1024;  // primitives per parallel work ite
 // Depth of the subtrees refitted in parallel: up to 2^6 = 64 work items,
 // enough to share unequal subtrees between threads.
 constexpr std::uint32_t kRefitDepth = 6;
+// Parallel build, for trees of kParallelBuildMin primitives or more: subtrees
+// of fewer than n / (kPiecesPerThread * threads) primitives go to the pool.
+// Fewer, bigger pieces measured best: the part above them is serial.
+constexpr std::uint32_t kPiecesPerThread = 2;
+constexpr std::uint32_t kParallelBuildMin = 4096;
 
 /// body(chunk) for chunk in [0, chunks), on the pool when there is one.
 template <class Body>
@@ -36,10 +41,6 @@ inline int binOf(float coordinate, float lo, float scale) {
     return f < float(kBinCount) ? int(f) : kBinCount - 1;
 }
 
-struct BuildTask {
-    std::uint32_t node, begin, end, depth;
-};
-
 /// Slab test of a ray against a box; returns the entry distance or +inf.
 inline float boxEntry(const Bounds& b, Vec3 origin, Vec3 invDir, float tMin, float tMax) {
     float tx0 = (b.lo.x - origin.x) * invDir.x, tx1 = (b.hi.x - origin.x) * invDir.x;
@@ -54,40 +55,23 @@ inline float boxEntry(const Bounds& b, Vec3 origin, Vec3 invDir, float tMin, flo
 inline Vec3 inverseDirection(Vec3 d) { return {1.0f / d.x, 1.0f / d.y, 1.0f / d.z}; }
 }  // namespace
 
-void Bvh::build(std::span<const Primitive> primitives, ThreadPool* pool) {
-    const std::uint32_t n = std::uint32_t(primitives.size());
-    nodes_.clear();
-    subtrees_.clear();
-    topNodes_.clear();
-    primBounds_.resize(n);
-    centroids_.resize(n);
-    indices_.resize(n);
-    auto boundChunk = [&](std::uint32_t chunk) {
-        for (std::uint32_t i = chunk * kRefitChunk; i < std::min(n, (chunk + 1) * kRefitChunk); ++i) {
-            primBounds_[i] = primitiveBounds(primitives[i]);
-            centroids_[i] = primBounds_[i].centroid();
-            indices_[i] = i;
-        }
-    };
-    forChunks(pool, (n + kRefitChunk - 1) / kRefitChunk, boundChunk);
-    ordered_.resize(n);
-    original_.resize(n);
-    position_.resize(n);
-    if (n == 0) return;
-
-    nodes_.reserve(2 * n);
-    nodes_.push_back({});
+void Bvh::buildNodes(std::span<const Primitive> primitives, std::vector<Node>& out, BuildTask root,
+                     std::uint32_t deferBelow) {
     BuildTask stack[kStackSize];
     int top = 0;
-    stack[top++] = {0, 0, n, 0};
+    stack[top++] = root;
     while (top > 0) {
         BuildTask task = stack[--top];
+        if (task.end - task.begin < deferBelow && task.node != root.node) {
+            deferred_.push_back(task);
+            continue;
+        }
         Bounds bounds, centroidBounds;
         for (std::uint32_t i = task.begin; i < task.end; ++i) {
             bounds.grow(primBounds_[indices_[i]]);
             centroidBounds.grow(centroids_[indices_[i]]);
         }
-        Node& node = nodes_[task.node];
+        Node& node = out[task.node];
         node.bounds = bounds;
         std::uint32_t count = task.end - task.begin;
 
@@ -166,14 +150,67 @@ void Bvh::build(std::span<const Primitive> primitives, ThreadPool* pool) {
             });
         }
         std::uint32_t mid = std::uint32_t(middle - indices_.data());
-        std::uint32_t left = std::uint32_t(nodes_.size());
+        std::uint32_t left = std::uint32_t(out.size());
         node.first = left;
         node.count = 0;
         node.axis = std::uint16_t(splitAxis);
-        nodes_.push_back({});
-        nodes_.push_back({});
+        out.push_back({});
+        out.push_back({});
         stack[top++] = {left + 1, mid, task.end, task.depth + 1};
         stack[top++] = {left, task.begin, mid, task.depth + 1};
+    }
+}
+
+void Bvh::build(std::span<const Primitive> primitives, ThreadPool* pool) {
+    const std::uint32_t n = std::uint32_t(primitives.size());
+    nodes_.clear();
+    subtrees_.clear();
+    topNodes_.clear();
+    primBounds_.resize(n);
+    centroids_.resize(n);
+    indices_.resize(n);
+    auto boundChunk = [&](std::uint32_t chunk) {
+        for (std::uint32_t i = chunk * kRefitChunk; i < std::min(n, (chunk + 1) * kRefitChunk); ++i) {
+            primBounds_[i] = primitiveBounds(primitives[i]);
+            centroids_[i] = primBounds_[i].centroid();
+            indices_[i] = i;
+        }
+    };
+    forChunks(pool, (n + kRefitChunk - 1) / kRefitChunk, boundChunk);
+    ordered_.resize(n);
+    original_.resize(n);
+    position_.resize(n);
+    if (n == 0) return;
+
+    nodes_.reserve(2 * n);
+    nodes_.push_back({});
+    // The top of the tree here; with a pool, smaller subtrees are set aside
+    // and built on the pool's threads, each into its own array, then appended.
+    const bool parallel = pool && pool->threadCount() > 1 && n >= kParallelBuildMin;
+    deferred_.clear();
+    buildNodes(primitives, nodes_, {0, 0, n, 0},
+               parallel ? n / (kPiecesPerThread * std::uint32_t(pool->threadCount())) : 0);
+    if (!deferred_.empty()) {
+        if (subtreeNodes_.size() < deferred_.size()) subtreeNodes_.resize(deferred_.size());
+        pool->parallelFor(std::uint32_t(deferred_.size()), [&](std::uint32_t k) {
+            std::vector<Node>& local = subtreeNodes_[k];
+            local.assign(1, Node{});
+            BuildTask task = deferred_[k];
+            buildNodes(primitives, local, {0, task.begin, task.end, task.depth}, 0);
+        });
+        for (std::size_t k = 0; k < deferred_.size(); ++k) {
+            // Local node i > 0 lands at base + i - 1; local node 0 is the set-aside slot.
+            const std::vector<Node>& local = subtreeNodes_[k];
+            const std::uint32_t shift = std::uint32_t(nodes_.size()) - 1;
+            for (std::size_t i = 0; i < local.size(); ++i) {
+                Node node = local[i];
+                if (node.count == 0) node.first += shift;
+                if (i == 0)
+                    nodes_[deferred_[k].node] = node;
+                else
+                    nodes_.push_back(node);
+            }
+        }
     }
     costAtBuild_ = sahCost();
     planRefit();
@@ -187,41 +224,39 @@ float Bvh::sahCost() const {
     return root > 0 ? sum / root : 0;
 }
 
-std::uint32_t Bvh::lastDescendant(std::uint32_t node) const {
-    // Depth first: a node's children are allocated together, then the whole
-    // left subtree, then the whole right one.
-    for (;;) {
-        const Node& n = nodes_[node];
-        if (n.count > 0) return node;
-        std::uint32_t right = n.first + 1;
-        if (nodes_[right].count == 0) {
-            node = right;
-            continue;
-        }
-        return std::max(right, lastDescendant(n.first));
-    }
-}
-
 void Bvh::planRefit() {
     subtrees_.clear();
     topNodes_.clear();
-    struct Item {
-        std::uint32_t node, depth;
-    };
-    Item stack[kStackSize];
-    int top = 0;
-    stack[top++] = {0, 0};
-    while (top > 0) {
-        Item item = stack[--top];
+    refitOrder_.clear();
+    std::vector<PlanItem>& stack = planStack_;
+    stack.assign(1, {0, 0});
+    while (!stack.empty()) {
+        PlanItem item = stack.back();
+        stack.pop_back();
         const Node& node = nodes_[item.node];
         if (node.count == 0 && item.depth == kRefitDepth) {
-            subtrees_.push_back({item.node, node.first, lastDescendant(item.node)});
+            // Its descendants in pre-order: walked backwards, children come before parents.
+            std::uint32_t begin = std::uint32_t(refitOrder_.size());
+            std::size_t below = stack.size();
+            stack.push_back({node.first, 0});
+            stack.push_back({node.first + 1, 0});
+            while (stack.size() > below) {
+                std::uint32_t index = stack.back().node;
+                stack.pop_back();
+                refitOrder_.push_back(index);
+                const Node& child = nodes_[index];
+                if (child.count == 0) {
+                    stack.push_back({child.first, 0});
+                    stack.push_back({child.first + 1, 0});
+                }
+            }
+            subtrees_.push_back({item.node, begin, std::uint32_t(refitOrder_.size())});
             continue;
         }
         topNodes_.push_back(item.node);  // leaves above the depth included
         if (node.count == 0) {
-            stack[top++] = {node.first, item.depth + 1};
-            stack[top++] = {node.first + 1, item.depth + 1};
+            stack.push_back({node.first, item.depth + 1});
+            stack.push_back({node.first + 1, item.depth + 1});
         }
     }
     std::sort(topNodes_.begin(), topNodes_.end(), std::greater<>());  // children have larger indices
@@ -253,7 +288,7 @@ float Bvh::refit(std::span<const Primitive> primitives, ThreadPool* pool) {
     forChunks(pool, std::uint32_t(subtrees_.size()), [&](std::uint32_t k) {
         const Subtree& subtree = subtrees_[k];
         float sum = 0;
-        for (std::uint32_t i = subtree.last + 1; i-- > subtree.first;) sum += refitNode(i);
+        for (std::uint32_t i = subtree.end; i-- > subtree.begin;) sum += refitNode(refitOrder_[i]);
         subtreeCost_[k] = sum + refitNode(subtree.root);
     });
     float sum = 0;

@@ -71,17 +71,31 @@ private:
     std::vector<std::uint32_t> indices_;
     float costAtBuild_ = 0;  ///< sahCost() right after the last full build
 
+    /// Build: one task splits the primitives [begin, end) into the subtree at `node`.
+    struct BuildTask {
+        std::uint32_t node, begin, end, depth;
+    };
+    /// Splits `root` depth first, appending child pairs to `out`; tasks of fewer
+    /// than `deferBelow` primitives (other than the root) go to deferred_ instead.
+    void buildNodes(std::span<const Primitive> primitives, std::vector<Node>& out, BuildTask root,
+                    std::uint32_t deferBelow);
+    std::vector<BuildTask> deferred_;               ///< subtrees set aside for the pool
+    std::vector<std::vector<Node>> subtreeNodes_;  ///< their nodes, before they are appended
+
     /// Refit work, planned after each build: the subtrees below kRefitDepth
-    /// are refitted in parallel, each a contiguous run of nodes (the builder
-    /// lays a subtree out depth first), then the few nodes above them in turn.
+    /// are refitted in parallel, then the few nodes above them in turn.
     struct Subtree {
-        std::uint32_t root, first, last;  ///< its descendants are nodes first..last
+        std::uint32_t root, begin, end;  ///< its descendants: refitOrder_[begin, end), in pre-order
     };
     std::vector<Subtree> subtrees_;
+    std::vector<std::uint32_t> refitOrder_;
     std::vector<std::uint32_t> topNodes_;  ///< nodes above the subtrees, children before parents
     std::vector<float> subtreeCost_;       ///< each subtree's share of the SAH sum, per refit
+    struct PlanItem {
+        std::uint32_t node, depth;
+    };
+    std::vector<PlanItem> planStack_;
     void planRefit();
-    std::uint32_t lastDescendant(std::uint32_t node) const;
     /// Recomputes one node: a leaf from its (already copied) primitives, an inner node from its children.
     /// Returns its term of the SAH sum.
     float refitNode(std::uint32_t index);
