@@ -39,23 +39,27 @@ struct VisitOrder {
 void Bvh::intersect(const RayPacket& rays, Mask active, Float tMin, PacketHit& hit) const {
     if (nodes_.empty() || simd::none(active)) return;
     VisitOrder order(rays, active);
+    // The nearer child is visited next without a trip through the stack.
     std::uint32_t stack[kStackSize];
     int top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-        const Node& node = nodes_[stack[--top]];
+    std::uint32_t current = 0;
+    for (;;) {
+        const Node& node = nodes_[current];
         Mask lanes = crossesBox(node.bounds, rays, tMin, hit.t) & active;
-        if (simd::none(lanes)) continue;
-        if (node.count > 0) {
+        if (simd::any(lanes)) {
+            if (node.count == 0) {
+                bool upper = order.upperFirst[node.axis];
+                stack[top++] = node.first + (upper ? 0 : 1);  // far child waits
+                current = node.first + (upper ? 1 : 0);
+                continue;
+            }
             for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
                 Mask hitLanes = intersectPrimitiveP(ordered_[i], rays, lanes, tMin, hit.t, hit.t, hit.face);
                 hit.primitive = simd::select(hitLanes, Int(std::int32_t(original_[i])), hit.primitive);
             }
-        } else {
-            bool upper = order.upperFirst[node.axis];
-            stack[top++] = node.first + (upper ? 0 : 1);  // far child waits
-            stack[top++] = node.first + (upper ? 1 : 0);
         }
+        if (top == 0) return;
+        current = stack[--top];
     }
 }
 
@@ -65,13 +69,18 @@ Mask Bvh::occluded(const RayPacket& rays, Mask active, Float tMin, Float tMax, I
     VisitOrder order(rays, active);  // the nearer occluder first ends a lane sooner
     std::uint32_t stack[kStackSize];
     int top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-        const Node& node = nodes_[stack[--top]];
+    std::uint32_t current = 0;
+    for (;;) {
+        const Node& node = nodes_[current];
         Mask pending = simd::andNot(active, blocked);
         Mask lanes = crossesBox(node.bounds, rays, tMin, tMax) & pending;
-        if (simd::none(lanes)) continue;
-        if (node.count > 0) {
+        if (simd::any(lanes)) {
+            if (node.count == 0) {
+                bool upper = order.upperFirst[node.axis];
+                stack[top++] = node.first + (upper ? 0 : 1);
+                current = node.first + (upper ? 1 : 0);
+                continue;
+            }
             for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
                 Mask test = simd::andNot(lanes, skip == Int(std::int32_t(original_[i])));
                 if (simd::none(test)) continue;
@@ -82,13 +91,10 @@ Mask Bvh::occluded(const RayPacket& rays, Mask active, Float tMin, Float tMax, I
                 if (simd::none(lanes)) break;
             }
             if (simd::none(simd::andNot(active, blocked))) return blocked;  // every ray is in shadow
-        } else {
-            bool upper = order.upperFirst[node.axis];
-            stack[top++] = node.first + (upper ? 0 : 1);
-            stack[top++] = node.first + (upper ? 1 : 0);
         }
+        if (top == 0) return blocked;
+        current = stack[--top];
     }
-    return blocked;
 }
 
 }  // namespace f2
