@@ -49,10 +49,13 @@ public:
     static constexpr std::uint32_t kNoPrimitive = 0xFFFFFFFFu;
     bool occluded(const Ray& ray, float tMin, float tMax, std::uint32_t skip = kNoPrimitive) const;
 
-    /// Packet versions: the `active` lanes traverse together; results as above per lane.
+    /// Packet versions: the `active` lanes traverse together; results as above per lane,
+    /// except that primitives are named by their leaf-order index (orderedPrimitives()),
+    /// whose data the traversal has just brought into cache; originalIndices() maps back.
     /// intersect() narrows hit.t (the lanes' tMax on entry) and sets primitive and face.
     void intersect(const RayPacket& rays, Mask active, Float tMin, PacketHit& hit) const;
-    /// Lanes of `active` that hit something within (tMin, tMax) other than their `skip` primitive.
+    /// Lanes of `active` that hit something within (tMin, tMax) other than their `skip`
+    /// primitive (leaf order).
     Mask occluded(const RayPacket& rays, Mask active, Float tMin, Float tMax, Int skip) const;
 
     std::span<const Node> nodes() const { return nodes_; }

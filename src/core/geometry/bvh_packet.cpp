@@ -55,7 +55,7 @@ void Bvh::intersect(const RayPacket& rays, Mask active, Float tMin, PacketHit& h
             }
             for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
                 Mask hitLanes = intersectPrimitiveP(ordered_[i], rays, lanes, tMin, hit.t, hit.t, hit.face);
-                hit.primitive = simd::select(hitLanes, Int(std::int32_t(original_[i])), hit.primitive);
+                hit.primitive = simd::select(hitLanes, Int(std::int32_t(i)), hit.primitive);
             }
         }
         if (top == 0) return;
@@ -82,7 +82,7 @@ Mask Bvh::occluded(const RayPacket& rays, Mask active, Float tMin, Float tMax, I
                 continue;
             }
             for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
-                Mask test = simd::andNot(lanes, skip == Int(std::int32_t(original_[i])));
+                Mask test = simd::andNot(lanes, skip == Int(std::int32_t(i)));
                 if (simd::none(test)) continue;
                 Float t = tMax;
                 Int face;

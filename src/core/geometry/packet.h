@@ -37,7 +37,7 @@ struct RayPacket {
 /// Nearest hits of a packet; `t` starts as tMax.
 struct PacketHit {
     Float t{kInfinity};
-    Int primitive{0};
+    Int primitive{0};  ///< in leaf order: an index into Bvh::orderedPrimitives(), not the frame's
     Int face{0};
 };
 

@@ -30,7 +30,10 @@ inline ColorP tracePacket(const FrameScene& frame, Vec3 eye, const RayPacket& ra
     if (simd::none(hitLanes)) return out;
 
     // Gather each lane's surface: loop over the distinct primitives hit (few in a
-    // coherent packet), filling their lanes from broadcast values.
+    // coherent packet), filling their lanes from broadcast values. Hits name
+    // primitives in the BVH's leaf order, whose copy is still in cache.
+    const std::span<const Primitive> leafPrimitives = frame.bvh.orderedPrimitives();
+    const std::span<const std::uint32_t> frameIndex = frame.bvh.originalIndices();
     Vec3P p = rays.origin + rays.direction * hit.t;
     Vec3P n, color;
     Float ka, kd, ks, shininess;
@@ -40,8 +43,8 @@ inline ColorP tracePacket(const FrameScene& frame, Vec3 eye, const RayPacket& ra
         std::int32_t id = primIds[simd::firstLane(todo)];
         Mask same = todo & (hit.primitive == Int(id));
         todo = simd::andNot(todo, same);
-        const Surface& s = frame.surfaces[std::size_t(id)];
-        n = select(same, primitiveNormalP(frame.primitives[std::size_t(id)], p, hit.face), n);
+        const Surface& s = frame.surfaces[frameIndex[std::size_t(id)]];
+        n = select(same, primitiveNormalP(leafPrimitives[std::size_t(id)], p, hit.face), n);
         color = select(same, Vec3P(s.color), color);
         ka = simd::select(same, Float(s.material.ka), ka);
         kd = simd::select(same, Float(s.material.kd), kd);
