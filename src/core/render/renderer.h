@@ -23,7 +23,9 @@ struct FrameTimings {
     double totalMs() const { return evaluateMs + buildMs + traceMs; }
 };
 
-inline constexpr int kTileSize = 16;
+/// Square tiles handed to threads; 32 measured faster than 16 (+3 % robots:10000,
+/// +6 % robots:1000) and as fast as 64, which would balance worse on many cores.
+inline constexpr int kTileSize = 32;
 
 class Renderer {
 public:
