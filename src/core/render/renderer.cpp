@@ -57,9 +57,10 @@ ColorP clamped(const ColorP& c) {
     return {unit(c.r), unit(c.g), unit(c.b)};
 }
 
-/// Renders one block of pixels with its top-left corner at (x0, y0).
+/// Renders one block of pixels with its top-left corner at (x0, y0) into
+/// `dst` (that corner's pixel; rows `stride` pixels apart).
 void renderBlock(const FrameScene& frame, const Camera& camera, int aa, const LaneOffsets& lanes, int x0, int y0,
-                 Image& out, RayCounts& counts) {
+                 Rgb8* dst, int stride, RayCounts& counts) {
     Float px = Float(float(x0)) + lanes.x, py = Float(float(y0)) + lanes.y;
     Mask inside = (px < Float(float(camera.width))) & (py < Float(float(camera.height)));
     ColorP c;
@@ -84,8 +85,7 @@ void renderBlock(const FrameScene& frame, const Camera& camera, int aa, const La
     simd::store(g, toBytes(c.g));
     simd::store(b, toBytes(c.b));
     const int w = std::min(kBlockWidth, camera.width - x0), h = std::min(kBlockHeight, camera.height - y0);
-    for (int row = 0; row < h; ++row) {
-        Rgb8* dst = &out.at(x0, y0 + row);
+    for (int row = 0; row < h; ++row, dst += stride) {
         for (int col = 0; col < w; ++col) {
             int i = row * kBlockWidth + col;
             dst[col] = {std::uint8_t(r[i]), std::uint8_t(g[i]), std::uint8_t(b[i])};
@@ -113,9 +113,17 @@ bool Renderer::trace(const FrameScene& frame, const Camera& camera, Image& out, 
         const int y0 = int(tile / std::uint32_t(tilesX)) * kTileSize;
         const int x1 = std::min(x0 + kTileSize, camera.width);
         const int y1 = std::min(y0 + kTileSize, camera.height);
+        // The tile is rendered into a local buffer and copied out whole: the
+        // image rows of neighbouring tiles share cache lines, which two threads
+        // writing pixel by pixel would pass back and forth.
+        Rgb8 local[kTileSize * kTileSize];
         RayCounts tileRays;
         for (int y = y0; y < y1; y += kBlockHeight)
-            for (int x = x0; x < x1; x += kBlockWidth) renderBlock(frame, camera, aa, lanes, x, y, out, tileRays);
+            for (int x = x0; x < x1; x += kBlockWidth)
+                renderBlock(frame, camera, aa, lanes, x, y, &local[(y - y0) * kTileSize + (x - x0)], kTileSize,
+                            tileRays);
+        for (int y = y0; y < y1; ++y)
+            std::copy_n(&local[(y - y0) * kTileSize], x1 - x0, &out.at(x0, y));
         primaryRays.fetch_add(tileRays.primary, std::memory_order_relaxed);
         shadowRays.fetch_add(tileRays.shadow, std::memory_order_relaxed);
     });
