@@ -4,13 +4,17 @@
 #
 #   scripts/compare_peers.sh [--f2 PATH] [--threads N] [--frame T] [--seconds S]
 #                            [--scenes "default robots:1 ..."] [--pov-scenes "default ..."]
-#                            [--rebuild "low medium high refit"] [--no-embree] [--no-pov]
+#                            [--rebuild "low medium high refit"] [--rounds R] [--no-embree] [--no-pov]
 #                            [--work DIR]
 #
 # For every scene: `f2 bench --json` times the whole frame (evaluate + build +
 # trace); `f2 export --prims` writes that very frame for the peer, which then
 # runs once per --rebuild mode (a BVH update every frame, as f2 does); the
 # table shows the best of those modes and the ratio f2 FPS / Embree FPS.
+# --rounds R (default 1) then runs f2 and the peer's best mode R-1 more times,
+# one after the other, and shows the medians and the range of the R ratios: on
+# a shared machine whose speed drifts for a minute at a time, the ratio of two
+# back-to-back runs is steadier than either figure alone.
 # POV-Ray renders `f2 export --pov` of the frame with -A +WT2; its reported
 # "Trace Time" is divided by f2's median frame time.
 # Generated scenes (robots:N, spheres:N) reach export through
@@ -25,6 +29,7 @@ SECONDS_PER_RUN=3
 SCENES="default robots:1 robots:1000 robots:10000 spheres:1000"
 POV_SCENES="default"
 REBUILD_MODES="low medium high refit"
+ROUNDS=1
 RUN_EMBREE=1
 RUN_POV=1
 WORK=$ROOT/build/peers/work
@@ -40,6 +45,7 @@ while [ $# -gt 0 ]; do
     --scenes) SCENES=$2; shift ;;
     --pov-scenes) POV_SCENES=$2; shift ;;
     --rebuild) REBUILD_MODES=$2; shift ;;
+    --rounds) ROUNDS=$2; shift ;;
     --no-embree) RUN_EMBREE=0 ;;
     --no-pov) RUN_POV=0 ;;
     --work) WORK=$2; shift ;;
@@ -85,6 +91,8 @@ fi
 json_value() { sed -n "s/.*\"$1\": \([-0-9.e+]*\).*/\1/p" <<<"$2"; }
 result_value() { tr ' ' '\n' <<<"$2" | sed -n "s/^$1=//p"; }
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN { if (b > 0) printf "%.2f", a / b; else print "n/a" }'; }
+# median of the numbers on stdin (one per line)
+median() { sort -g | awk '{ v[NR] = $1 } END { if (NR == 0) print "n/a"; else if (NR % 2) print v[(NR + 1) / 2]; else printf "%.2f\n", (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 
 # scene_file SCENE: the scene as a file export can read ("" = the default scene)
 scene_file() {
@@ -116,8 +124,9 @@ echo
 if [ "$RUN_EMBREE" = 1 ]; then
   echo "### Embree peer (whole frame, BVH updated every frame; best of --rebuild $REBUILD_MODES)"
   echo
-  echo "| Scene | Primitives | f2 FPS | f2 ms (eval / build / trace) | Embree FPS | Embree mode | Embree static FPS | f2 / Embree |"
-  echo "|---|---:|---:|---|---:|---|---:|---:|"
+  [ "$ROUNDS" -gt 1 ] && echo "Medians of $ROUNDS rounds (f2, then Embree in its best mode); the f2 split and the static figure are the first round's; last column: the rounds' ratios, lowest to highest." && echo
+  echo "| Scene | Primitives | f2 FPS | f2 ms (eval / build / trace) | Embree FPS | Embree mode | Embree static FPS | f2 / Embree |$([ "$ROUNDS" -gt 1 ] && echo " ratios |")"
+  echo "|---|---:|---:|---|---:|---|---:|---:|$([ "$ROUNDS" -gt 1 ] && echo "---|")"
   for scene in $SCENES; do
     file=$(scene_file "$scene")
     prims=$WORK/${scene/:/_}.prims
@@ -135,7 +144,16 @@ if [ "$RUN_EMBREE" = 1 ]; then
     done
     # Render-only yardstick: static BVH built once (not what an animation can do).
     static=$(result_value fps "$("$PEER" "$prims" --threads "$THREADS" | grep '^RESULT')")
-    echo "| $scene | $(json_value primitives "$json") | $f2_fps | $split | $best_fps | $best_mode | $static | $(ratio "$f2_fps" "$best_fps") |"
+    f2_all=$f2_fps embree_all=$best_fps ratios=$(ratio "$f2_fps" "$best_fps")
+    for ((round = 2; round <= ROUNDS; ++round)); do
+      log "$scene: round $round of $ROUNDS"
+      f=$(json_value fps "$(f2_bench "$scene")")
+      e=$(result_value total_fps "$("$PEER" "$prims" --threads "$THREADS" --rebuild "$best_mode" | grep '^RESULT')")
+      f2_all+=$'\n'$f embree_all+=$'\n'$e ratios+=$'\n'$(ratio "$f" "$e")
+    done
+    row="| $scene | $(json_value primitives "$json") | $(median <<<"$f2_all") | $split | $(median <<<"$embree_all") | $best_mode | $static | $(median <<<"$ratios") |"
+    [ "$ROUNDS" -gt 1 ] && row+=" $(sort -g <<<"$ratios" | paste -sd' ') |"
+    echo "$row"
   done
   echo
 fi
