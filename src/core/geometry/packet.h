@@ -91,8 +91,8 @@ inline Mask clipSlabP(Float o, Float d, Float inv, Float h, Face face, Float& en
 /// Lane version of primitiveInterval(): where each ray is inside the primitive.
 /// Forced inline: as a call it made the traversal loops spill and reload their
 /// packet registers around every primitive test (robots:10000 +1 to 1.6 %).
-[[gnu::always_inline]] inline Mask primitiveIntervalP(const Primitive& prim, const RayPacket& ray, Float& enter, Float& exit,
-                               Int& enterFace, Int& exitFace) {
+[[gnu::always_inline]] inline Mask primitiveIntervalP(const Primitive& prim, const RayPacket& ray, Float& enter,
+                                                     Float& exit, Int& enterFace, Int& exitFace) {
     Vec3P oc = ray.origin - Vec3P(prim.centre);
     switch (prim.kind) {
         case ShapeKind::Sphere:
