@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/geometry/bvh.h"
+#include "core/render/camera.h"
 #include "test_scenes.h"
 
 namespace f2 {
@@ -307,6 +308,70 @@ TEST(BvhProperty, ParallelBuildMakesTheSameTree) {
     EXPECT_FALSE(parallel.update(prims, &pool));
     for (int n = 0; n < 1000; ++n)
         ASSERT_TRUE(agrees(prims, parallel, randomRay(rng, prims, spread), 0, kInfinity)) << "after refit, ray " << n;
+}
+
+TEST(BvhProperty, EntryNodesOfATileLoseNoHit) {
+    // A tile's packets start from Bvh::entryNodes() of its frustum instead of
+    // the root: for random cameras and tiles, every ray through the tile must
+    // find with the packet traversal from those nodes exactly what the
+    // single-ray traversal from the root finds.
+    const std::uint32_t seed = test::testSeed(31337u);
+    SCOPED_TRACE(::testing::Message() << "seed " << seed);
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> u01(0.0f, 1.0f), angle(-180.0f, 180.0f);
+    const float spread = 300;
+    std::vector<Primitive> prims = randomScene(rng, 3000, spread);
+    Bvh bvh;
+    bvh.build(prims);
+    int hits = 0, rays = 0, trimmed = 0;
+    for (int view = 0; view < 40; ++view) {
+        Camera camera;
+        camera.width = 160;
+        camera.height = 120;
+        // From outside the scene looking in, and from inside it.
+        float r = view % 2 ? 2.5f * spread : 0.3f * spread;
+        Vec3 dir = randomUnit(rng);
+        camera.eye = dir * r;
+        camera.worldFromCamera = rotationFromEulerDegrees(angle(rng) * 0.25f, angle(rng), angle(rng) * 0.1f);
+        for (int tile = 0; tile < 12; ++tile) {
+            int size = 4 << (tile % 3);  // 4, 8, 16 pixels
+            int x0 = int(u01(rng) * float(camera.width - size)), y0 = int(u01(rng) * float(camera.height - size));
+            std::uint32_t store[8];
+            std::size_t count = bvh.entryNodes(camera.pixelFrustum(x0, y0, x0 + size, y0 + size), camera.eye, store);
+            trimmed += count != 1 || store[0] != 0;
+            std::span<const std::uint32_t> entry(store, count);
+            for (int packet = 0; packet < 4; ++packet) {
+                alignas(64) float dx[simd::kWidth], dy[simd::kWidth], dz[simd::kWidth];
+                std::vector<Ray> lanes;
+                for (int i = 0; i < simd::kWidth; ++i) {
+                    Ray ray = camera.rayThrough(float(x0) + u01(rng) * float(size), float(y0) + u01(rng) * float(size));
+                    dx[i] = ray.direction.x, dy[i] = ray.direction.y, dz[i] = ray.direction.z;
+                    lanes.push_back(ray);
+                }
+                RayPacket packetRays(Vec3P(camera.eye), Vec3P(simd::load(dx), simd::load(dy), simd::load(dz)));
+                PacketHit hit;
+                bvh.intersect(packetRays, simd::allLanes(), Float(0.0f), hit, entry);
+                alignas(64) float t[simd::kWidth];
+                alignas(64) std::int32_t prim[simd::kWidth];
+                simd::store(t, hit.t);
+                simd::store(prim, hit.primitive);
+                for (int i = 0; i < simd::kWidth; ++i, ++rays) {
+                    HitRecord expected;
+                    bool found = bvh.intersect(lanes[std::size_t(i)], 0, kInfinity, expected);
+                    ASSERT_EQ(t[i] < kInfinity, found) << "view " << view << " tile " << tile << " lane " << i;
+                    if (!found) continue;
+                    ++hits;
+                    EXPECT_EQ(t[i], expected.t) << "view " << view << " tile " << tile << " lane " << i;
+                    EXPECT_EQ(bvh.originalIndices()[std::size_t(prim[i])], expected.primitive);
+                }
+            }
+        }
+    }
+    // Not vacuous: many rays hit, and many tiles start below the root.
+    EXPECT_GT(hits, rays / 5);
+    EXPECT_GT(trimmed, 40);
+    std::cout << "[   INFO   ] entry nodes: " << hits << " of " << rays << " rays hit; " << trimmed
+              << " of 480 tiles start below the root\n";
 }
 
 TEST(BvhProperty, OriginsInsidePrimitives) {

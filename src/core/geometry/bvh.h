@@ -54,6 +54,16 @@ public:
     /// whose data the traversal has just brought into cache; originalIndices() maps back.
     /// intersect() narrows hit.t (the lanes' tMax on entry) and sets primitive and face.
     void intersect(const RayPacket& rays, Mask active, Float tMin, PacketHit& hit) const;
+    /// The same, for rays inside `frustum` only: the traversal starts from `roots`,
+    /// as found by entryNodes() for that frustum, instead of the root.
+    void intersect(const RayPacket& rays, Mask active, Float tMin, PacketHit& hit,
+                   std::span<const std::uint32_t> roots) const;
+    /// Up to out.size() nodes whose subtrees hold every primitive that a ray
+    /// inside `frustum` can reach, nearest to `eye` first; returns how many.
+    /// From the root, the node with the largest box is replaced by those of its
+    /// children the frustum does not exclude, while they fit: a tile's packets
+    /// then skip the top of the tree, which every one of them would walk alike.
+    std::size_t entryNodes(const Frustum& frustum, Vec3 eye, std::span<std::uint32_t> out) const;
     /// Lanes of `active` that hit something within (tMin, tMax) other than their `skip`
     /// primitive (leaf order).
     Mask occluded(const RayPacket& rays, Mask active, Float tMin, Float tMax, Int skip) const;

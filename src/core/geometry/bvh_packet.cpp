@@ -5,10 +5,12 @@
 // test serves many rays.
 #include "core/geometry/bvh.h"
 
+#include <algorithm>
+
 namespace f2 {
 
 namespace {
-constexpr int kStackSize = 128;  // deeper than any tree the builder makes
+constexpr int kStackSize = 160;  // deeper than any tree the builder makes, plus entry nodes
 
 /// Lanes whose ray crosses the box within (tMin, tMax); as boxEntry() in bvh.cpp.
 inline Mask crossesBox(const Bounds& b, const RayPacket& r, Float tMin, Float tMax) {
@@ -37,12 +39,19 @@ struct VisitOrder {
 }  // namespace
 
 void Bvh::intersect(const RayPacket& rays, Mask active, Float tMin, PacketHit& hit) const {
-    if (nodes_.empty() || simd::none(active)) return;
+    const std::uint32_t root = 0;
+    intersect(rays, active, tMin, hit, {&root, 1});
+}
+
+void Bvh::intersect(const RayPacket& rays, Mask active, Float tMin, PacketHit& hit,
+                    std::span<const std::uint32_t> roots) const {
+    if (nodes_.empty() || roots.empty() || simd::none(active)) return;
     VisitOrder order(rays, active);
     // The nearer child is visited next without a trip through the stack.
     std::uint32_t stack[kStackSize];
     int top = 0;
-    std::uint32_t current = 0;
+    for (std::size_t k = roots.size(); k-- > 1;) stack[top++] = roots[k];  // nearest root first
+    std::uint32_t current = roots[0];
     for (;;) {
         const Node& node = nodes_[current];
         Mask lanes = crossesBox(node.bounds, rays, tMin, hit.t) & active;
@@ -95,6 +104,48 @@ Mask Bvh::occluded(const RayPacket& rays, Mask active, Float tMin, Float tMax, I
         if (top == 0) return blocked;
         current = stack[--top];
     }
+}
+
+std::size_t Bvh::entryNodes(const Frustum& frustum, Vec3 eye, std::span<std::uint32_t> out) const {
+    if (nodes_.empty() || out.empty() || frustum.excludes(nodes_[0].bounds)) return 0;
+    std::size_t count = 1;
+    out[0] = 0;
+    for (;;) {
+        // The inner node with the largest box is the one most packets would enter.
+        std::size_t widest = count;
+        float widestArea = -1;
+        for (std::size_t k = 0; k < count; ++k) {
+            const Node& node = nodes_[out[k]];
+            if (node.count == 0 && node.bounds.halfArea() > widestArea) {
+                widest = k;
+                widestArea = node.bounds.halfArea();
+            }
+        }
+        if (widest == count) break;  // only leaves left
+        const Node& node = nodes_[out[widest]];
+        std::uint32_t kept[2];
+        std::size_t keptCount = 0;
+        for (std::uint32_t child : {node.first, node.first + 1})
+            if (!frustum.excludes(nodes_[child].bounds)) kept[keptCount++] = child;
+        if (count - 1 + keptCount > out.size()) break;
+        if (keptCount == 0) {
+            out[widest] = out[--count];  // nothing of it is in view
+            if (count == 0) return 0;
+        } else {
+            out[widest] = kept[0];
+            if (keptCount == 2) out[count++] = kept[1];
+        }
+    }
+    // Nearest first, by the distance from the eye to each box.
+    auto distance = [&](std::uint32_t index) {
+        const Bounds& b = nodes_[index].bounds;
+        Vec3 nearest = vmin(vmax(eye, b.lo), b.hi);
+        Vec3 d = nearest - eye;
+        return dot(d, d);
+    };
+    std::sort(out.begin(), out.begin() + std::ptrdiff_t(count),
+              [&](std::uint32_t a, std::uint32_t b) { return distance(a) < distance(b); });
+    return count;
 }
 
 }  // namespace f2

@@ -42,6 +42,22 @@ struct Bounds {
     }
 };
 
+/// A convex region bounded by planes, dot(normal, p) + offset >= 0 inside:
+/// the pyramid of one tile's primary rays.
+struct Frustum {
+    Vec3 normal[4];
+    float offset[4];
+    /// True when no point of the box is inside (tested against each plane alone: conservative).
+    bool excludes(const Bounds& b) const {
+        for (int i = 0; i < 4; ++i) {
+            Vec3 n = normal[i];
+            Vec3 far{n.x >= 0 ? b.hi.x : b.lo.x, n.y >= 0 ? b.hi.y : b.lo.y, n.z >= 0 ? b.hi.z : b.lo.z};
+            if (dot(n, far) + offset[i] < 0) return true;
+        }
+        return false;
+    }
+};
+
 Bounds primitiveBounds(const Primitive& prim);
 
 /// Builds a primitive from its kind, SceneObject-style size and world transform.

@@ -32,6 +32,24 @@ struct Camera {
         return {eye, worldFromCamera * normalize(Vec3{x, y, distance})};
     }
 
+    /// The pyramid from the eye through the pixel rectangle [x0, x1] x [y0, y1]
+    /// (pixel coordinates as rayThrough), widened by a pixel on every side so
+    /// that rounding cannot leave one of its rays outside.
+    Frustum pixelFrustum(int x0, int y0, int x1, int y1) const {
+        const float left = float(x0 - 1), right = float(x1 + 1), top = float(y0 - 1), bottom = float(y1 + 1);
+        const Vec3 corner[4] = {rayThrough(left, top).direction, rayThrough(right, top).direction,
+                                rayThrough(right, bottom).direction, rayThrough(left, bottom).direction};
+        const Vec3 centre = rayThrough(0.5f * (left + right), 0.5f * (top + bottom)).direction;
+        Frustum f;
+        for (int i = 0; i < 4; ++i) {
+            Vec3 n = cross(corner[i], corner[(i + 1) % 4]);
+            if (dot(n, centre) < 0) n = -n;  // inside is where the rays are
+            f.normal[i] = n;
+            f.offset[i] = -dot(n, eye);
+        }
+        return f;
+    }
+
     // Reciprocals, so the per-ray work multiplies instead of divides (the packet
     // path uses the same three numbers, which keeps both paths bit-identical).
     float inverseWidth() const { return 1.0f / float(width); }

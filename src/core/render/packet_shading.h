@@ -19,11 +19,12 @@ struct RayCounts {
 };
 
 /// Colours (0..1, unclamped) of the `active` lanes of a packet of primary rays
-/// leaving the eye `eye`.
-inline ColorP tracePacket(const FrameScene& frame, Vec3 eye, const RayPacket& rays, Mask active, RayCounts& counts) {
+/// leaving the eye `eye`, all inside the frustum whose Bvh::entryNodes() are `entry`.
+inline ColorP tracePacket(const FrameScene& frame, Vec3 eye, const RayPacket& rays, Mask active,
+                          std::span<const std::uint32_t> entry, RayCounts& counts) {
     counts.primary += std::uint64_t(__builtin_popcount(simd::bits(active)));
     PacketHit hit;
-    frame.bvh.intersect(rays, active, Float(primaryRayStart(eye)), hit);
+    frame.bvh.intersect(rays, active, Float(primaryRayStart(eye)), hit, entry);
     Mask hitLanes = active & (hit.t < Float(kInfinity));
 
     ColorP out{Float(frame.background.x), Float(frame.background.y), Float(frame.background.z)};

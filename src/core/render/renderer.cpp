@@ -28,6 +28,9 @@ constexpr int kBlockWidth = simd::kWidth >= 4 ? 4 : 1;
 constexpr int kBlockHeight = simd::kWidth / kBlockWidth;
 static_assert(kTileSize % kBlockWidth == 0 && kTileSize % kBlockHeight == 0);
 
+// Entry nodes per tile (Bvh::entryNodes): each costs every packet one box test.
+constexpr std::size_t kEntryNodes = 8;
+
 struct LaneOffsets {
     Float x, y;
     LaneOffsets() {
@@ -60,12 +63,13 @@ ColorP clamped(const ColorP& c) {
 /// Renders one block of pixels with its top-left corner at (x0, y0) into
 /// `dst` (that corner's pixel; rows `stride` pixels apart).
 void renderBlock(const FrameScene& frame, const Camera& camera, int aa, const LaneOffsets& lanes, int x0, int y0,
-                 Rgb8* dst, int stride, RayCounts& counts) {
+                 std::span<const std::uint32_t> entry, Rgb8* dst, int stride, RayCounts& counts) {
     Float px = Float(float(x0)) + lanes.x, py = Float(float(y0)) + lanes.y;
     Mask inside = (px < Float(float(camera.width))) & (py < Float(float(camera.height)));
     ColorP c;
     if (aa == 1) {
-        c = tracePacket(frame, camera.eye, primaryRays(camera, px + Float(0.5f), py + Float(0.5f)), inside, counts);
+        c = tracePacket(frame, camera.eye, primaryRays(camera, px + Float(0.5f), py + Float(0.5f)), inside, entry,
+                        counts);
     } else {
         // Stratified: the centre of each of the N x N sub-cells, clamped per sample
         // so the result is the average of displayed values.
@@ -73,7 +77,8 @@ void renderBlock(const FrameScene& frame, const Camera& camera, int aa, const La
         for (int sy = 0; sy < aa; ++sy) {
             for (int sx = 0; sx < aa; ++sx) {
                 Float ox((float(sx) + 0.5f) / float(aa)), oy((float(sy) + 0.5f) / float(aa));
-                ColorP s = clamped(tracePacket(frame, camera.eye, primaryRays(camera, px + ox, py + oy), inside, counts));
+                ColorP s =
+                    clamped(tracePacket(frame, camera.eye, primaryRays(camera, px + ox, py + oy), inside, entry, counts));
                 c = {c.r + s.r, c.g + s.g, c.b + s.b};
             }
         }
@@ -117,11 +122,15 @@ bool Renderer::trace(const FrameScene& frame, const Camera& camera, Image& out, 
         // image rows of neighbouring tiles share cache lines, which two threads
         // writing pixel by pixel would pass back and forth.
         Rgb8 local[kTileSize * kTileSize];
+        // The tile's packets start below the top of the tree, at the nodes its frustum reaches.
+        std::uint32_t entryStore[kEntryNodes];
+        std::span<const std::uint32_t> entry(
+            entryStore, frame.bvh.entryNodes(camera.pixelFrustum(x0, y0, x1, y1), camera.eye, entryStore));
         RayCounts tileRays;
         for (int y = y0; y < y1; y += kBlockHeight)
             for (int x = x0; x < x1; x += kBlockWidth)
-                renderBlock(frame, camera, aa, lanes, x, y, &local[(y - y0) * kTileSize + (x - x0)], kTileSize,
-                            tileRays);
+                renderBlock(frame, camera, aa, lanes, x, y, entry, &local[(y - y0) * kTileSize + (x - x0)],
+                            kTileSize, tileRays);
         for (int y = y0; y < y1; ++y)
             std::copy_n(&local[(y - y0) * kTileSize], x1 - x0, &out.at(x0, y));
         primaryRays.fetch_add(tileRays.primary, std::memory_order_relaxed);
