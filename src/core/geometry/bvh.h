@@ -54,8 +54,8 @@ public:
     /// whose data the traversal has just brought into cache; originalIndices() maps back.
     /// intersect() narrows hit.t (the lanes' tMax on entry) and sets primitive and face.
     void intersect(const RayPacket& rays, Mask active, Float tMin, PacketHit& hit) const;
-    /// The same, for rays inside `frustum` only: the traversal starts from `roots`,
-    /// as found by entryNodes() for that frustum, instead of the root.
+    /// The same, for rays that all lie inside one frustum: the traversal starts
+    /// from `roots`, the entryNodes() of that frustum, instead of the root.
     void intersect(const RayPacket& rays, Mask active, Float tMin, PacketHit& hit,
                    std::span<const std::uint32_t> roots) const;
     /// Up to out.size() nodes whose subtrees hold every primitive that a ray
