@@ -127,6 +127,7 @@ if [ "$RUN_EMBREE" = 1 ]; then
   [ "$ROUNDS" -gt 1 ] && echo "Medians of $ROUNDS rounds (f2, then Embree in its best mode); the f2 split and the static figure are the first round's; last column: the rounds' ratios, lowest to highest." && echo
   echo "| Scene | Primitives | f2 FPS | f2 ms (eval / build / trace) | Embree FPS | Embree mode | Embree static FPS | f2 / Embree |$([ "$ROUNDS" -gt 1 ] && echo " ratios |")"
   echo "|---|---:|---:|---|---:|---|---:|---:|$([ "$ROUNDS" -gt 1 ] && echo "---|")"
+  declare -A f2_median embree_median
   for scene in $SCENES; do
     file=$(scene_file "$scene")
     prims=$WORK/${scene/:/_}.prims
@@ -151,11 +152,21 @@ if [ "$RUN_EMBREE" = 1 ]; then
       e=$(result_value total_fps "$("$PEER" "$prims" --threads "$THREADS" --rebuild "$best_mode" | grep '^RESULT')")
       f2_all+=$'\n'$f embree_all+=$'\n'$e ratios+=$'\n'$(ratio "$f" "$e")
     done
-    row="| $scene | $(json_value primitives "$json") | $(median <<<"$f2_all") | $split | $(median <<<"$embree_all") | $best_mode | $static | $(median <<<"$ratios") |"
+    f2_median[$scene]=$(median <<<"$f2_all") embree_median[$scene]=$(median <<<"$embree_all")
+    row="| $scene | $(json_value primitives "$json") | ${f2_median[$scene]} | $split | ${embree_median[$scene]} | $best_mode | $static | $(median <<<"$ratios") |"
     [ "$ROUNDS" -gt 1 ] && row+=" $(sort -g <<<"$ratios" | paste -sd' ') |"
     echo "$row"
   done
   echo
+  # Issue 4's scaling target: N robots within 2.5x the frame time of one robot.
+  if [ -n "${f2_median[robots:1]:-}" ]; then
+    for scene in $SCENES; do
+      case $scene in robots:1|robots:*[!0-9]*) continue ;; robots:*) ;; *) continue ;; esac
+      [ -n "${f2_median[$scene]:-}" ] || continue
+      echo "Scaling, frame time of $scene / robots:1 (target <= 2.5): f2 $(ratio "${f2_median[robots:1]}" "${f2_median[$scene]}"), Embree $(ratio "${embree_median[robots:1]}" "${embree_median[$scene]}")"
+    done
+    echo
+  fi
 fi
 
 if [ "$RUN_POV" = 1 ]; then

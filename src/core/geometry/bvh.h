@@ -53,10 +53,10 @@ public:
     /// except that primitives are named by their leaf-order index (orderedPrimitives()),
     /// whose data the traversal has just brought into cache; originalIndices() maps back.
     /// intersect() narrows hit.t (the lanes' tMax on entry) and sets primitive and face.
-    void intersect(const RayPacket& rays, Mask active, Float tMin, PacketHit& hit) const;
+    void intersect(const EyeRays& rays, Mask active, Float tMin, PacketHit& hit) const;
     /// The same, for rays that all lie inside one frustum: the traversal starts
     /// from `roots`, the entryNodes() of that frustum, instead of the root.
-    void intersect(const RayPacket& rays, Mask active, Float tMin, PacketHit& hit,
+    void intersect(const EyeRays& rays, Mask active, Float tMin, PacketHit& hit,
                    std::span<const std::uint32_t> roots) const;
     /// Up to out.size() nodes whose subtrees hold every primitive that a ray
     /// inside `frustum` can reach, nearest to `eye` first; returns how many.
@@ -66,7 +66,7 @@ public:
     std::size_t entryNodes(const Frustum& frustum, Vec3 eye, std::span<std::uint32_t> out) const;
     /// Lanes of `active` that hit something within (tMin, tMax) other than their `skip`
     /// primitive (leaf order).
-    Mask occluded(const RayPacket& rays, Mask active, Float tMin, Float tMax, Int skip) const;
+    Mask occluded(const ParallelRays& rays, Mask active, Float tMin, Float tMax, Int skip) const;
 
     std::span<const Node> nodes() const { return nodes_; }
     /// Primitives in leaf order, and each one's index in the frame.

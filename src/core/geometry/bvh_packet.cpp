@@ -13,37 +13,58 @@ namespace {
 constexpr int kStackSize = 160;  // deeper than any tree the builder makes, plus entry nodes
 
 /// Lanes whose ray crosses the box within (tMin, tMax); as boxEntry() in bvh.cpp.
-inline Mask crossesBox(const Bounds& b, const RayPacket& r, Float tMin, Float tMax) {
-    Float tx0 = (Float(b.lo.x) - r.origin.x) * r.inverseDirection.x;
-    Float tx1 = (Float(b.hi.x) - r.origin.x) * r.inverseDirection.x;
-    Float ty0 = (Float(b.lo.y) - r.origin.y) * r.inverseDirection.y;
-    Float ty1 = (Float(b.hi.y) - r.origin.y) * r.inverseDirection.y;
-    Float tz0 = (Float(b.lo.z) - r.origin.z) * r.inverseDirection.z;
-    Float tz1 = (Float(b.hi.z) - r.origin.z) * r.inverseDirection.z;
+/// With a shared origin (primary rays) the differences are one scalar each.
+template <class Origin, class Direction>
+inline Mask crossesBox(const Bounds& b, const Rays<Origin, Direction>& r, Float tMin, Float tMax) {
+    Float tx0 = (b.lo.x - r.origin.x) * r.inverseDirection.x;
+    Float tx1 = (b.hi.x - r.origin.x) * r.inverseDirection.x;
+    Float ty0 = (b.lo.y - r.origin.y) * r.inverseDirection.y;
+    Float ty1 = (b.hi.y - r.origin.y) * r.inverseDirection.y;
+    Float tz0 = (b.lo.z - r.origin.z) * r.inverseDirection.z;
+    Float tz1 = (b.hi.z - r.origin.z) * r.inverseDirection.z;
     Float enter = simd::max(simd::max(simd::min(tx0, tx1), simd::min(ty0, ty1)), simd::max(simd::min(tz0, tz1), tMin));
     Float exit = simd::min(simd::min(simd::max(tx0, tx1), simd::max(ty0, ty1)), simd::min(simd::max(tz0, tz1), tMax));
     return enter <= exit;
+}
+
+/// The same for rays with one direction: which plane of each slab they meet
+/// first is known once, so no lane needs a min and a max per axis.
+inline Mask crossesBox(const Bounds& b, const ParallelRays& r, Float tMin, Float tMax) {
+    const Vec3 inv = r.inverseDirection;
+    Vec3 entry{inv.x >= 0 ? b.lo.x : b.hi.x, inv.y >= 0 ? b.lo.y : b.hi.y, inv.z >= 0 ? b.lo.z : b.hi.z};
+    Vec3 exit{inv.x >= 0 ? b.hi.x : b.lo.x, inv.y >= 0 ? b.hi.y : b.lo.y, inv.z >= 0 ? b.hi.z : b.lo.z};
+    Float enterX = (entry.x - r.origin.x) * inv.x, exitX = (exit.x - r.origin.x) * inv.x;
+    Float enterY = (entry.y - r.origin.y) * inv.y, exitY = (exit.y - r.origin.y) * inv.y;
+    Float enterZ = (entry.z - r.origin.z) * inv.z, exitZ = (exit.z - r.origin.z) * inv.z;
+    // 0 * inf = NaN for an origin on the plane of a slab the rays run along:
+    // min and max return their second argument then, so that slab is ignored.
+    // That is only conservative: primitiveBounds() pads every box, so such an
+    // origin lies outside every primitive the box holds.
+    Float enter = simd::max(enterX, simd::max(enterY, simd::max(enterZ, tMin)));
+    Float leave = simd::min(exitX, simd::min(exitY, simd::min(exitZ, tMax)));
+    return enter <= leave;
 }
 
 /// Per axis, whether the packet's first active ray goes toward negative
 /// coordinates: then the right (upper) child is visited first.
 struct VisitOrder {
     bool upperFirst[3];
-    VisitOrder(const RayPacket& r, Mask active) {
+    template <class Origin, class Direction>
+    VisitOrder(const Rays<Origin, Direction>& r, Mask active) {
         int lane = simd::firstLane(active);
-        upperFirst[0] = simd::lane(r.direction.x, lane) < 0;
-        upperFirst[1] = simd::lane(r.direction.y, lane) < 0;
-        upperFirst[2] = simd::lane(r.direction.z, lane) < 0;
+        upperFirst[0] = laneOf(r.direction.x, lane) < 0;
+        upperFirst[1] = laneOf(r.direction.y, lane) < 0;
+        upperFirst[2] = laneOf(r.direction.z, lane) < 0;
     }
 };
 }  // namespace
 
-void Bvh::intersect(const RayPacket& rays, Mask active, Float tMin, PacketHit& hit) const {
+void Bvh::intersect(const EyeRays& rays, Mask active, Float tMin, PacketHit& hit) const {
     const std::uint32_t root = 0;
     intersect(rays, active, tMin, hit, {&root, 1});
 }
 
-void Bvh::intersect(const RayPacket& rays, Mask active, Float tMin, PacketHit& hit,
+void Bvh::intersect(const EyeRays& rays, Mask active, Float tMin, PacketHit& hit,
                     std::span<const std::uint32_t> roots) const {
     if (nodes_.empty() || roots.empty() || simd::none(active)) return;
     VisitOrder order(rays, active);
@@ -72,7 +93,7 @@ void Bvh::intersect(const RayPacket& rays, Mask active, Float tMin, PacketHit& h
     }
 }
 
-Mask Bvh::occluded(const RayPacket& rays, Mask active, Float tMin, Float tMax, Int skip) const {
+Mask Bvh::occluded(const ParallelRays& rays, Mask active, Float tMin, Float tMax, Int skip) const {
     Mask blocked = simd::noLanes();
     if (nodes_.empty() || simd::none(active)) return blocked;
     VisitOrder order(rays, active);  // the nearer occluder first ends a lane sooner

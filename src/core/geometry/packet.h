@@ -27,12 +27,41 @@ inline Vec3P select(Mask m, const Vec3P& a, const Vec3P& b) {
     return {simd::select(m, a.x, b.x), simd::select(m, a.y, b.y), simd::select(m, a.z, b.z)};
 }
 
-struct RayPacket {
-    Vec3P origin, direction, inverseDirection;
+// Mixed forms: a Vec3 shared by every lane meets a Vec3P. Each broadcasts the
+// shared value and then does the lane operation, so the bits are the same.
+inline Vec3P operator+(Vec3 a, const Vec3P& b) { return Vec3P(a) + b; }
+inline Vec3P operator+(const Vec3P& a, Vec3 b) { return a + Vec3P(b); }
+inline Vec3P operator-(Vec3 a, const Vec3P& b) { return Vec3P(a) - b; }
+inline Vec3P operator-(const Vec3P& a, Vec3 b) { return a - Vec3P(b); }
+inline Vec3P operator*(Vec3 a, Float s) { return Vec3P(a) * s; }
+inline Float dot(const Vec3P& a, Vec3 b) { return dot(a, Vec3P(b)); }
+inline Float dot(Vec3 a, const Vec3P& b) { return dot(Vec3P(a), b); }
 
-    RayPacket(const Vec3P& o, const Vec3P& d)
-        : origin(o), direction(d), inverseDirection(Float(1.0f) / d.x, Float(1.0f) / d.y, Float(1.0f) / d.z) {}
+inline Float component(const Vec3P& v, int axis) { return axis == 0 ? v.x : (axis == 1 ? v.y : v.z); }
+inline float component(Vec3 v, int axis) { return v[axis]; }
+inline float laneOf(float shared, int) { return shared; }
+inline float laneOf(Float v, int lane) { return simd::lane(v, lane); }
+/// Every lane or none, for a condition on a value the lanes share.
+inline Mask lanesWhere(bool all) { return all ? simd::allLanes() : simd::noLanes(); }
+inline Mask lanesWhere(Mask m) { return m; }
+
+inline Vec3 reciprocal(Vec3 d) { return {1.0f / d.x, 1.0f / d.y, 1.0f / d.z}; }
+inline Vec3P reciprocal(const Vec3P& d) { return {Float(1.0f) / d.x, Float(1.0f) / d.y, Float(1.0f) / d.z}; }
+
+/// simd::kWidth rays traced together, one per lane. Origin and Direction are
+/// each Vec3P (one per lane) or Vec3 (one for the whole packet): primary rays
+/// share the eye and shadow rays share the light's direction, and whatever
+/// depends only on a shared value is then worked out once per box or
+/// primitive instead of in every lane, with the same result.
+template <class Origin, class Direction>
+struct Rays {
+    Origin origin;
+    Direction direction, inverseDirection;
+
+    Rays(const Origin& o, const Direction& d) : origin(o), direction(d), inverseDirection(reciprocal(d)) {}
 };
+using EyeRays = Rays<Vec3, Vec3P>;       ///< primary rays: every lane leaves the eye
+using ParallelRays = Rays<Vec3P, Vec3>;  ///< shadow rays toward a directional light
 
 /// Nearest hits of a packet; `t` starts as tMax.
 struct PacketHit {
@@ -44,11 +73,12 @@ struct PacketHit {
 namespace detail {
 
 /// Lane version of quadraticInterval() in intersect.h.
-inline Mask quadraticIntervalP(const Vec3P& perp, const Vec3P& dperp, Float r, Float& t0, Float& t1) {
-    Float a = dot(dperp, dperp);
-    Float c = dot(perp, perp) - r * r;
-    Mask parallel = a <= Float(1e-20f);
-    Float inverseA = Float(1.0f) / a;
+template <class Perp, class DPerp>
+inline Mask quadraticIntervalP(const Perp& perp, const DPerp& dperp, float r, Float& t0, Float& t1) {
+    auto a = dot(dperp, dperp);
+    auto c = dot(perp, perp) - r * r;
+    Mask parallel = lanesWhere(a <= decltype(a)(1e-20f));
+    auto inverseA = decltype(a)(1.0f) / a;
     Float b = dot(perp, dperp);
     Vec3P closest = perp - dperp * (b * inverseA);
     Float disc = r * r - dot(closest, closest);
@@ -56,11 +86,12 @@ inline Mask quadraticIntervalP(const Vec3P& perp, const Vec3P& dperp, Float r, F
     t0 = simd::select(parallel, Float(-kInfinity), (-b - s) * inverseA);
     t1 = simd::select(parallel, Float(kInfinity), (-b + s) * inverseA);
     // Parallel to the axis: inside for all t or never; otherwise real roots.
-    return (parallel & (c <= Float(0.0f))) | simd::andNot(disc >= Float(0.0f), parallel);
+    return (parallel & lanesWhere(c <= decltype(c)(0.0f))) | simd::andNot(disc >= Float(0.0f), parallel);
 }
 
 /// Lane version of sphereInterval().
-inline Mask sphereIntervalP(const Vec3P& oc, const Vec3P& d, Float r, Float& t0, Float& t1) {
+template <class Origin, class Direction>
+inline Mask sphereIntervalP(const Origin& oc, const Direction& d, float r, Float& t0, Float& t1) {
     Float b = dot(oc, d);
     Vec3P closest = oc - d * b;
     Float disc = r * r - dot(closest, closest);
@@ -71,9 +102,10 @@ inline Mask sphereIntervalP(const Vec3P& oc, const Vec3P& d, Float r, Float& t0,
 }
 
 /// Lane version of clipSlab(): narrows [enter, exit] by |o + t d| <= h.
-inline Mask clipSlabP(Float o, Float d, Float inv, Float h, Face face, Float& enter, Float& exit, Int& enterFace,
+template <class O, class D>
+inline Mask clipSlabP(O o, D d, D inv, float h, Face face, Float& enter, Float& exit, Int& enterFace,
                       Int& exitFace) {
-    Mask flat = d == Float(0.0f);
+    Mask flat = lanesWhere(d == D(0.0f));
     Float a = (-h - o) * inv, b = (h - o) * inv;
     Mask swapped = a > b;
     Float tNear = simd::select(swapped, b, a), tFar = simd::select(swapped, a, b);
@@ -83,7 +115,7 @@ inline Mask clipSlabP(Float o, Float d, Float inv, Float h, Face face, Float& en
     enterFace = simd::select(nearer, Int(int(face)), enterFace);
     exit = simd::select(farther, tFar, exit);
     exitFace = simd::select(farther, Int(int(face)), exitFace);
-    return (flat & (simd::abs(o) <= h)) | simd::andNot(enter <= exit, flat);
+    return (flat & (simd::abs(Float(o)) <= Float(h))) | simd::andNot(enter <= exit, flat);
 }
 
 }  // namespace detail
@@ -91,20 +123,22 @@ inline Mask clipSlabP(Float o, Float d, Float inv, Float h, Face face, Float& en
 /// Lane version of primitiveInterval(): where each ray is inside the primitive.
 /// Forced inline: as a call it made the traversal loops spill and reload their
 /// packet registers around every primitive test (robots:10000 +1 to 1.6 %).
-[[gnu::always_inline]] inline Mask primitiveIntervalP(const Primitive& prim, const RayPacket& ray, Float& enter,
-                                                     Float& exit, Int& enterFace, Int& exitFace) {
-    Vec3P oc = ray.origin - Vec3P(prim.centre);
+template <class Origin, class Direction>
+[[gnu::always_inline]] inline Mask primitiveIntervalP(const Primitive& prim, const Rays<Origin, Direction>& ray,
+                                                     Float& enter, Float& exit, Int& enterFace, Int& exitFace) {
+    auto oc = ray.origin - prim.centre;
     switch (prim.kind) {
         case ShapeKind::Sphere:
             enterFace = exitFace = Int(int(Face::Curved));
-            return detail::sphereIntervalP(oc, ray.direction, Float(prim.half.x), enter, exit);
+            return detail::sphereIntervalP(oc, ray.direction, prim.half.x, enter, exit);
         case ShapeKind::Cylinder: {
-            Vec3P axis(prim.axes[1]);
-            Float oa = dot(oc, axis), da = dot(ray.direction, axis);
-            Mask valid = detail::quadraticIntervalP(oc - axis * oa, ray.direction - axis * da, Float(prim.half.x),
-                                                    enter, exit);
+            Vec3 axis = prim.axes[1];
+            auto oa = dot(oc, axis);
+            auto da = dot(ray.direction, axis);
+            Mask valid =
+                detail::quadraticIntervalP(oc - axis * oa, ray.direction - axis * da, prim.half.x, enter, exit);
             enterFace = exitFace = Int(int(Face::Curved));
-            return valid & detail::clipSlabP(oa, da, Float(1.0f) / da, Float(prim.half.y), Face::Cap, enter, exit,
+            return valid & detail::clipSlabP(oa, da, decltype(da)(1.0f) / da, prim.half.y, Face::Cap, enter, exit,
                                              enterFace, exitFace);
         }
         case ShapeKind::Box: {
@@ -114,18 +148,16 @@ inline Mask clipSlabP(Float o, Float d, Float inv, Float h, Face face, Float& en
             Mask valid = simd::allLanes();
             if (prim.axisAligned) {
                 // Local axes are the world axes: the packet's reciprocals serve as they are.
-                const Float* o[3] = {&oc.x, &oc.y, &oc.z};
-                const Float* d[3] = {&ray.direction.x, &ray.direction.y, &ray.direction.z};
-                const Float* inv[3] = {&ray.inverseDirection.x, &ray.inverseDirection.y, &ray.inverseDirection.z};
                 for (int i = 0; i < 3; ++i)
-                    valid = valid & detail::clipSlabP(*o[i], *d[i], *inv[i], Float(prim.half[i]),
+                    valid = valid & detail::clipSlabP(component(oc, i), component(ray.direction, i),
+                                                      component(ray.inverseDirection, i), prim.half[i],
                                                       Face(int(Face::SlabX) + i), enter, exit, enterFace, exitFace);
                 return valid;
             }
             for (int i = 0; i < 3; ++i) {
-                Vec3P axis(prim.axes[i]);
-                Float d = dot(ray.direction, axis);
-                valid = valid & detail::clipSlabP(dot(oc, axis), d, Float(1.0f) / d, Float(prim.half[i]),
+                Vec3 axis = prim.axes[i];
+                auto d = dot(ray.direction, axis);
+                valid = valid & detail::clipSlabP(dot(oc, axis), d, decltype(d)(1.0f) / d, prim.half[i],
                                                   Face(int(Face::SlabX) + i), enter, exit, enterFace, exitFace);
             }
             return valid;
@@ -136,8 +168,9 @@ inline Mask clipSlabP(Float o, Float d, Float inv, Float h, Face face, Float& en
 
 /// Lanes of `active` whose nearest crossing of the primitive lies in (tMin, tMax);
 /// writes that distance and face into those lanes of tHit and face.
-inline Mask intersectPrimitiveP(const Primitive& prim, const RayPacket& ray, Mask active, Float tMin, Float tMax,
-                                Float& tHit, Int& face) {
+template <class Origin, class Direction>
+inline Mask intersectPrimitiveP(const Primitive& prim, const Rays<Origin, Direction>& ray, Mask active, Float tMin,
+                                Float tMax, Float& tHit, Int& face) {
     Float enter(0.0f), exit(0.0f);  // initialised: GCC cannot see every kind sets them
     Int enterFace(0), exitFace(0);
     Mask valid = primitiveIntervalP(prim, ray, enter, exit, enterFace, exitFace) & active;

@@ -20,7 +20,7 @@ struct RayCounts {
 
 /// Colours (0..1, unclamped) of the `active` lanes of a packet of primary rays
 /// leaving the eye `eye`, all inside the frustum whose Bvh::entryNodes() are `entry`.
-inline ColorP tracePacket(const FrameScene& frame, Vec3 eye, const RayPacket& rays, Mask active,
+inline ColorP tracePacket(const FrameScene& frame, Vec3 eye, const EyeRays& rays, Mask active,
                           std::span<const std::uint32_t> entry, RayCounts& counts) {
     counts.primary += std::uint64_t(__builtin_popcount(simd::bits(active)));
     PacketHit hit;
@@ -69,7 +69,7 @@ inline ColorP tracePacket(const FrameScene& frame, Vec3 eye, const RayPacket& ra
         Mask lit = hitLanes & (nDotL > Float(0.0f));
         if (simd::none(lit)) continue;
         counts.shadow += std::uint64_t(__builtin_popcount(simd::bits(lit)));
-        lit = simd::andNot(lit, frame.bvh.occluded(RayPacket(shadowOrigin, toLight), lit, Float(0.0f),
+        lit = simd::andNot(lit, frame.bvh.occluded(ParallelRays(shadowOrigin, light.toLight), lit, Float(0.0f),
                                                     Float(kInfinity), skip));
         if (simd::none(lit)) continue;
         Float intensity(light.intensity);

@@ -45,14 +45,14 @@ struct LaneOffsets {
 };
 
 /// Primary rays through image points (px, py); the lane version of Camera::rayThrough.
-RayPacket primaryRays(const Camera& camera, Float px, Float py) {
+EyeRays primaryRays(const Camera& camera, Float px, Float py) {
     Float x = px * Float(camera.inverseWidth()) - Float(0.5f);
     Float y = (Float(0.5f) - py * Float(camera.inverseHeight())) * Float(camera.aspect());
     Vec3P v(x, y, Float(camera.distance));
     v = v * (Float(1.0f) / simd::sqrt(dot(v, v)));
     const Mat3& m = camera.worldFromCamera;
     Vec3P d(dot(Vec3P(m.row[0]), v), dot(Vec3P(m.row[1]), v), dot(Vec3P(m.row[2]), v));
-    return RayPacket(Vec3P(camera.eye), d);
+    return EyeRays(camera.eye, d);
 }
 
 ColorP clamped(const ColorP& c) {
