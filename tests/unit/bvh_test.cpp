@@ -417,6 +417,52 @@ TEST(BvhProperty, ShadowPacketsMatchBruteForce) {
     EXPECT_GT(blockedLanes, 400 * simd::kWidth / 10);  // not vacuous: many lanes are blocked
 }
 
+TEST(BvhProperty, BeamEntryNodesLoseNoOccluder) {
+    // A tile's shadow rays toward a light start from Bvh::beamEntryNodes() of
+    // a box around their origins: for random boxes and directions (some along
+    // the axes), rays from anywhere in the box must be blocked exactly when
+    // brute force says so.
+    const std::uint32_t seed = test::testSeed(8080u);
+    SCOPED_TRACE(::testing::Message() << "seed " << seed);
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> u01(0.0f, 1.0f), coordinate(-300.0f, 300.0f);
+    std::vector<Primitive> prims = randomScene(rng, 3000, 300);
+    Bvh bvh;
+    bvh.build(prims);
+    const Vec3 axial[] = {{0, 1, 0}, {-1, 0, 0}, {0, 0, -1}, {0.8f, 0, 0.6f}};
+    int blockedLanes = 0, trimmed = 0;
+    for (int beam = 0; beam < 200; ++beam) {
+        Vec3 direction = beam % 4 == 0 ? axial[(beam / 4) % 4] : randomUnit(rng);
+        Vec3 corner{coordinate(rng), coordinate(rng), coordinate(rng)};
+        Vec3 size = Vec3{u01(rng), u01(rng), u01(rng)} * (beam % 2 ? 5.0f : 60.0f);
+        Bounds origins{corner, corner + size};
+        std::uint32_t store[8];
+        std::size_t count = bvh.beamEntryNodes(origins, direction, store);
+        trimmed += count != 1 || store[0] != 0;
+        std::span<const std::uint32_t> entry(store, count);
+        alignas(64) float ox[simd::kWidth], oy[simd::kWidth], oz[simd::kWidth];
+        for (int i = 0; i < simd::kWidth; ++i) {
+            // Corners of the box, then points inside it.
+            Vec3 f = i < 8 ? Vec3{float(i & 1), float((i >> 1) & 1), float((i >> 2) & 1)}
+                           : Vec3{u01(rng), u01(rng), u01(rng)};
+            ox[i] = corner.x + f.x * size.x, oy[i] = corner.y + f.y * size.y, oz[i] = corner.z + f.z * size.z;
+        }
+        ParallelRays rays(Vec3P(simd::load(ox), simd::load(oy), simd::load(oz)), direction);
+        std::uint32_t blocked =
+            simd::bits(bvh.occluded(rays, simd::allLanes(), Float(0.0f), Float(kInfinity), Int(-1), entry));
+        for (int i = 0; i < simd::kWidth; ++i) {
+            bool expected = bruteAny(prims, {{ox[i], oy[i], oz[i]}, direction}, 0, kInfinity);
+            ASSERT_EQ(((blocked >> i) & 1u) != 0, expected) << "beam " << beam << " lane " << i;
+            blockedLanes += expected;
+        }
+    }
+    // Not vacuous: many lanes are blocked, and most beams start below the root.
+    EXPECT_GT(blockedLanes, 200 * simd::kWidth / 10);
+    EXPECT_GT(trimmed, 100);
+    std::cout << "[   INFO   ] beam entry nodes: " << blockedLanes << " of " << 200 * simd::kWidth
+              << " rays blocked; " << trimmed << " of 200 beams start below the root\n";
+}
+
 TEST(BvhProperty, OriginsInsidePrimitives) {
     // Rays starting inside (overlapping) primitives: the nearest crossing may be an exit.
     const std::uint32_t seed = test::testSeed(55555u);

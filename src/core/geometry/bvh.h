@@ -67,6 +67,13 @@ public:
     /// Lanes of `active` that hit something within (tMin, tMax) other than their `skip`
     /// primitive (leaf order).
     Mask occluded(const ParallelRays& rays, Mask active, Float tMin, Float tMax, Int skip) const;
+    /// The same, for rays that all start inside one box: the traversal starts
+    /// from `roots`, the beamEntryNodes() of that box and direction.
+    Mask occluded(const ParallelRays& rays, Mask active, Float tMin, Float tMax, Int skip,
+                  std::span<const std::uint32_t> roots) const;
+    /// entryNodes() for the parallel rays that leave any point of `origins`
+    /// along `direction`: the shadow rays of one tile toward one light.
+    std::size_t beamEntryNodes(const Bounds& origins, Vec3 direction, std::span<std::uint32_t> out) const;
 
     std::span<const Node> nodes() const { return nodes_; }
     /// Primitives in leaf order, and each one's index in the frame.
@@ -74,6 +81,12 @@ public:
     std::span<const std::uint32_t> originalIndices() const { return original_; }
 
 private:
+    /// The splitting of entryNodes(): nodes that `excludes` rejects are
+    /// dropped, the rest are sorted by `distance`.
+    template <class Excludes, class Distance>
+    std::size_t entryNodesWhere(const Excludes& excludes, const Distance& distance,
+                                std::span<std::uint32_t> out) const;
+
     std::vector<Node> nodes_;
     std::vector<Primitive> ordered_;        ///< primitives in leaf order
     std::vector<std::uint32_t> original_;   ///< ordered index -> frame index

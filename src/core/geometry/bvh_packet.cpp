@@ -94,12 +94,19 @@ void Bvh::intersect(const EyeRays& rays, Mask active, Float tMin, PacketHit& hit
 }
 
 Mask Bvh::occluded(const ParallelRays& rays, Mask active, Float tMin, Float tMax, Int skip) const {
+    const std::uint32_t root = 0;
+    return occluded(rays, active, tMin, tMax, skip, {&root, 1});
+}
+
+Mask Bvh::occluded(const ParallelRays& rays, Mask active, Float tMin, Float tMax, Int skip,
+                   std::span<const std::uint32_t> roots) const {
     Mask blocked = simd::noLanes();
-    if (nodes_.empty() || simd::none(active)) return blocked;
+    if (nodes_.empty() || roots.empty() || simd::none(active)) return blocked;
     VisitOrder order(rays, active);  // the nearer occluder first ends a lane sooner
     std::uint32_t stack[kStackSize];
     int top = 0;
-    std::uint32_t current = 0;
+    for (std::size_t k = roots.size(); k-- > 1;) stack[top++] = roots[k];
+    std::uint32_t current = roots[0];
     for (;;) {
         const Node& node = nodes_[current];
         Mask pending = simd::andNot(active, blocked);
@@ -127,8 +134,10 @@ Mask Bvh::occluded(const ParallelRays& rays, Mask active, Float tMin, Float tMax
     }
 }
 
-std::size_t Bvh::entryNodes(const Frustum& frustum, Vec3 eye, std::span<std::uint32_t> out) const {
-    if (nodes_.empty() || out.empty() || frustum.excludes(nodes_[0].bounds)) return 0;
+template <class Excludes, class Distance>
+std::size_t Bvh::entryNodesWhere(const Excludes& excludes, const Distance& distance,
+                                 std::span<std::uint32_t> out) const {
+    if (nodes_.empty() || out.empty() || excludes(nodes_[0].bounds)) return 0;
     std::size_t count = 1;
     out[0] = 0;
     for (;;) {
@@ -147,26 +156,51 @@ std::size_t Bvh::entryNodes(const Frustum& frustum, Vec3 eye, std::span<std::uin
         std::uint32_t kept[2];
         std::size_t keptCount = 0;
         for (std::uint32_t child : {node.first, node.first + 1})
-            if (!frustum.excludes(nodes_[child].bounds)) kept[keptCount++] = child;
+            if (!excludes(nodes_[child].bounds)) kept[keptCount++] = child;
         if (count - 1 + keptCount > out.size()) break;
         if (keptCount == 0) {
-            out[widest] = out[--count];  // nothing of it is in view
+            out[widest] = out[--count];  // nothing of it is reachable
             if (count == 0) return 0;
         } else {
             out[widest] = kept[0];
             if (keptCount == 2) out[count++] = kept[1];
         }
     }
-    // Nearest first, by the distance from the eye to each box.
-    auto distance = [&](std::uint32_t index) {
-        const Bounds& b = nodes_[index].bounds;
-        Vec3 nearest = vmin(vmax(eye, b.lo), b.hi);
-        Vec3 d = nearest - eye;
-        return dot(d, d);
-    };
-    std::sort(out.begin(), out.begin() + std::ptrdiff_t(count),
-              [&](std::uint32_t a, std::uint32_t b) { return distance(a) < distance(b); });
+    std::sort(out.begin(), out.begin() + std::ptrdiff_t(count), [&](std::uint32_t a, std::uint32_t b) {
+        return distance(nodes_[a].bounds) < distance(nodes_[b].bounds);
+    });
     return count;
+}
+
+std::size_t Bvh::entryNodes(const Frustum& frustum, Vec3 eye, std::span<std::uint32_t> out) const {
+    // Nearest first, by the distance from the eye to each box.
+    return entryNodesWhere([&](const Bounds& b) { return frustum.excludes(b); },
+                           [&](const Bounds& b) {
+                               Vec3 d = vmin(vmax(eye, b.lo), b.hi) - eye;
+                               return dot(d, d);
+                           },
+                           out);
+}
+
+std::size_t Bvh::beamEntryNodes(const Bounds& origins, Vec3 direction, std::span<std::uint32_t> out) const {
+    // The rays o + t d (o in `origins`, t >= 0) meet box B exactly when the one
+    // ray t d from 0 meets B - origins = [B.lo - origins.hi, B.hi - origins.lo].
+    auto excludes = [&](const Bounds& b) {
+        float enter = 0, exit = kInfinity;
+        for (int i = 0; i < 3; ++i) {
+            float lo = b.lo[i] - origins.hi[i], hi = b.hi[i] - origins.lo[i];
+            if (direction[i] == 0) {
+                if (lo > 0 || hi < 0) return true;
+                continue;
+            }
+            float t0 = lo / direction[i], t1 = hi / direction[i];
+            enter = std::max(enter, std::min(t0, t1));
+            exit = std::min(exit, std::max(t0, t1));
+        }
+        return enter > exit;
+    };
+    // Nearest first along the rays, where an occluder ends them soonest.
+    return entryNodesWhere(excludes, [&](const Bounds& b) { return dot(b.centroid(), direction); }, out);
 }
 
 }  // namespace f2

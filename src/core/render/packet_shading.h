@@ -18,17 +18,27 @@ struct RayCounts {
     std::uint64_t total() const { return primary + shadow; }
 };
 
-/// Colours (0..1, unclamped) of the `active` lanes of a packet of primary rays
-/// leaving the eye `eye`, all inside the frustum whose Bvh::entryNodes() are `entry`.
-inline ColorP tracePacket(const FrameScene& frame, Vec3 eye, const EyeRays& rays, Mask active,
-                          std::span<const std::uint32_t> entry, RayCounts& counts) {
+/// What the primary rays of a packet found: everything shading needs.
+struct PacketSurface {
+    Mask hitLanes;
+    Vec3P normal;        ///< unit, facing the viewer
+    Vec3P toEye;         ///< -ray direction
+    Vec3P shadowOrigin;  ///< the hit point lifted off the surface (kShadowBias)
+    Vec3P color;
+    Float ka, kd, ks, shininess;
+    Int skip;  ///< primitive (leaf order) the lane's shadow rays skip; -1 when seen from inside
+};
+
+/// Nearest surfaces of the `active` lanes of a packet of primary rays, all
+/// inside the frustum whose Bvh::entryNodes() are `entry`.
+inline PacketSurface findSurfaces(const FrameScene& frame, const EyeRays& rays, Mask active,
+                                  std::span<const std::uint32_t> entry, RayCounts& counts) {
     counts.primary += std::uint64_t(__builtin_popcount(simd::bits(active)));
     PacketHit hit;
-    frame.bvh.intersect(rays, active, Float(primaryRayStart(eye)), hit, entry);
-    Mask hitLanes = active & (hit.t < Float(kInfinity));
-
-    ColorP out{Float(frame.background.x), Float(frame.background.y), Float(frame.background.z)};
-    if (simd::none(hitLanes)) return out;
+    frame.bvh.intersect(rays, active, Float(primaryRayStart(rays.origin)), hit, entry);
+    PacketSurface s;
+    s.hitLanes = active & (hit.t < Float(kInfinity));
+    if (simd::none(s.hitLanes)) return s;
 
     // Gather each lane's surface: loop over the distinct primitives hit (few in a
     // coherent packet), filling their lanes from broadcast values. Hits name
@@ -36,53 +46,66 @@ inline ColorP tracePacket(const FrameScene& frame, Vec3 eye, const EyeRays& rays
     const std::span<const Primitive> leafPrimitives = frame.bvh.orderedPrimitives();
     const std::span<const std::uint32_t> frameIndex = frame.bvh.originalIndices();
     Vec3P p = rays.origin + rays.direction * hit.t;
-    Vec3P n, color;
-    Float ka, kd, ks, shininess;
+    Vec3P n;
     alignas(64) std::int32_t primIds[simd::kWidth];
     simd::store(primIds, hit.primitive);
-    for (Mask todo = hitLanes; simd::any(todo);) {
+    for (Mask todo = s.hitLanes; simd::any(todo);) {
         std::int32_t id = primIds[simd::firstLane(todo)];
         Mask same = todo & (hit.primitive == Int(id));
         todo = simd::andNot(todo, same);
-        const Surface& s = frame.surfaces[frameIndex[std::size_t(id)]];
+        const Surface& surface = frame.surfaces[frameIndex[std::size_t(id)]];
         n = select(same, primitiveNormalP(leafPrimitives[std::size_t(id)], p, hit.face), n);
-        color = select(same, Vec3P(s.color), color);
-        ka = simd::select(same, Float(s.material.ka), ka);
-        kd = simd::select(same, Float(s.material.kd), kd);
-        ks = simd::select(same, Float(s.material.ks), ks);
-        shininess = simd::select(same, Float(s.material.n), shininess);
+        s.color = select(same, Vec3P(surface.color), s.color);
+        s.ka = simd::select(same, Float(surface.material.ka), s.ka);
+        s.kd = simd::select(same, Float(surface.material.kd), s.kd);
+        s.ks = simd::select(same, Float(surface.material.ks), s.ks);
+        s.shininess = simd::select(same, Float(surface.material.n), s.shininess);
     }
     Mask inside = dot(n, rays.direction) > Float(0.0f);  // seen from within the primitive
-    n = select(inside, -n, n);                           // face the viewer
+    s.normal = select(inside, -n, n);                    // face the viewer
     // As in shadeHit(): shadow rays skip their own primitive only from its outside.
-    Int skip = simd::select(inside, Int(-1), hit.primitive);
-    Vec3P toEye = -rays.direction;
+    s.skip = simd::select(inside, Int(-1), hit.primitive);
+    s.toEye = -rays.direction;
     Float offset = Float(kShadowBias) *
                    (Float(1.0f) + simd::max(simd::max(simd::abs(p.x), simd::abs(p.y)), simd::abs(p.z)));
-    Vec3P shadowOrigin = p + n * offset;
+    s.shadowOrigin = p + s.normal * offset;
+    return s;
+}
 
-    Float diffuse = ka * Float(frame.ambient);
+/// Colours (0..1, unclamped) of a packet's surfaces lit by the frame's lights,
+/// background where nothing was hit. The shadow rays toward light i start
+/// from shadowEntry[i] (Bvh::beamEntryNodes of a box holding their origins),
+/// or from the root for lights past the end of shadowEntry.
+inline ColorP shadeSurfaces(const FrameScene& frame, const PacketSurface& s,
+                            std::span<const std::span<const std::uint32_t>> shadowEntry, RayCounts& counts) {
+    ColorP out{Float(frame.background.x), Float(frame.background.y), Float(frame.background.z)};
+    if (simd::none(s.hitLanes)) return out;
+    const std::uint32_t root = 0;
+    Float diffuse = s.ka * Float(frame.ambient);
     Float specular(0.0f);
-    for (const LightSample& light : frame.lights) {
+    for (std::size_t i = 0; i < frame.lights.size(); ++i) {
+        const LightSample& light = frame.lights[i];
         Vec3P toLight(light.toLight);
-        Float nDotL = dot(n, toLight);
-        Mask lit = hitLanes & (nDotL > Float(0.0f));
+        Float nDotL = dot(s.normal, toLight);
+        Mask lit = s.hitLanes & (nDotL > Float(0.0f));
         if (simd::none(lit)) continue;
         counts.shadow += std::uint64_t(__builtin_popcount(simd::bits(lit)));
-        lit = simd::andNot(lit, frame.bvh.occluded(ParallelRays(shadowOrigin, light.toLight), lit, Float(0.0f),
-                                                    Float(kInfinity), skip));
+        std::span<const std::uint32_t> entry = i < shadowEntry.size() ? shadowEntry[i] : std::span{&root, 1};
+        lit = simd::andNot(lit, frame.bvh.occluded(ParallelRays(s.shadowOrigin, light.toLight), lit, Float(0.0f),
+                                                    Float(kInfinity), s.skip, entry));
         if (simd::none(lit)) continue;
         Float intensity(light.intensity);
-        diffuse = simd::select(lit, diffuse + intensity * kd * nDotL, diffuse);
-        Vec3P reflected = n * (Float(2.0f) * nDotL) - toLight;
-        Float rDotV = dot(reflected, toEye);
-        Mask shiny = lit & (rDotV > Float(0.0f)) & (ks > Float(0.0f));
+        diffuse = simd::select(lit, diffuse + intensity * s.kd * nDotL, diffuse);
+        Vec3P reflected = s.normal * (Float(2.0f) * nDotL) - toLight;
+        Float rDotV = dot(reflected, s.toEye);
+        Mask shiny = lit & (rDotV > Float(0.0f)) & (s.ks > Float(0.0f));
         if (simd::any(shiny))
-            specular = simd::select(shiny, specular + intensity * ks * simd::powPositive(rDotV, shininess), specular);
+            specular =
+                simd::select(shiny, specular + intensity * s.ks * simd::powPositive(rDotV, s.shininess), specular);
     }
-    out.r = simd::select(hitLanes, color.x * diffuse + specular, out.r);
-    out.g = simd::select(hitLanes, color.y * diffuse + specular, out.g);
-    out.b = simd::select(hitLanes, color.z * diffuse + specular, out.b);
+    out.r = simd::select(s.hitLanes, s.color.x * diffuse + specular, out.r);
+    out.g = simd::select(s.hitLanes, s.color.y * diffuse + specular, out.g);
+    out.b = simd::select(s.hitLanes, s.color.z * diffuse + specular, out.b);
     return out;
 }
 

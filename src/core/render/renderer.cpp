@@ -60,43 +60,118 @@ ColorP clamped(const ColorP& c) {
     return {unit(c.r), unit(c.g), unit(c.b)};
 }
 
-/// Renders one block of pixels with its top-left corner at (x0, y0) into
-/// `dst` (that corner's pixel; rows `stride` pixels apart).
-void renderBlock(const FrameScene& frame, const Camera& camera, int aa, const LaneOffsets& lanes, int x0, int y0,
-                 std::span<const std::uint32_t> entry, Rgb8* dst, int stride, RayCounts& counts) {
-    Float px = Float(float(x0)) + lanes.x, py = Float(float(y0)) + lanes.y;
-    Mask inside = (px < Float(float(camera.width))) & (py < Float(float(camera.height)));
-    ColorP c;
-    if (aa == 1) {
-        c = tracePacket(frame, camera.eye, primaryRays(camera, px + Float(0.5f), py + Float(0.5f)), inside, entry,
-                        counts);
-    } else {
-        // Stratified: the centre of each of the N x N sub-cells, clamped per sample
-        // so the result is the average of displayed values.
-        c = {Float(0.0f), Float(0.0f), Float(0.0f)};
-        for (int sy = 0; sy < aa; ++sy) {
-            for (int sx = 0; sx < aa; ++sx) {
-                Float ox((float(sx) + 0.5f) / float(aa)), oy((float(sy) + 0.5f) / float(aa));
-                ColorP s =
-                    clamped(tracePacket(frame, camera.eye, primaryRays(camera, px + ox, py + oy), inside, entry, counts));
-                c = {c.r + s.r, c.g + s.g, c.b + s.b};
+constexpr int kBlocksPerTile = (kTileSize / kBlockWidth) * (kTileSize / kBlockHeight);
+// Lights whose shadow rays start from per-tile entry nodes; any further ones start from the root.
+constexpr std::size_t kShadowEntryLights = 4;
+
+/// Renders one tile in passes over its blocks: per sample, the primary rays
+/// of every block first, then the shadow rays, which then all start from the
+/// BVH nodes that the beam of their origins toward each light reaches.
+class TileRenderer {
+public:
+    TileRenderer(const FrameScene& frame, const Camera& camera, int aa, RayCounts& counts)
+        : frame_(frame), camera_(camera), aa_(aa), counts_(counts) {}
+
+    /// Pixels [x0, x1) x [y0, y1) into `dst` (kTileSize pixels per row).
+    void render(int x0, int y0, int x1, int y1, Rgb8* dst) {
+        static const LaneOffsets lanes;
+        // The tile's primary packets start below the top of the tree, at the nodes its frustum reaches.
+        std::uint32_t entryStore[kEntryNodes];
+        std::span<const std::uint32_t> entry(
+            entryStore, frame_.bvh.entryNodes(camera_.pixelFrustum(x0, y0, x1, y1), camera_.eye, entryStore));
+        const int blocksX = (x1 - x0 + kBlockWidth - 1) / kBlockWidth;
+        const int blocksY = (y1 - y0 + kBlockHeight - 1) / kBlockHeight;
+        const int blocks = blocksX * blocksY;
+        for (int sy = 0; sy < aa_; ++sy) {
+            for (int sx = 0; sx < aa_; ++sx) {
+                // One sample: the pixel centre, or the centre of sub-cell (sx, sy) of N x N.
+                Float ox((float(sx) + 0.5f) / float(aa_)), oy((float(sy) + 0.5f) / float(aa_));
+                Vec3P lo(Vec3{kInfinity, kInfinity, kInfinity}), hi(Vec3{-kInfinity, -kInfinity, -kInfinity});
+                for (int k = 0; k < blocks; ++k) {
+                    Float px = Float(float(x0 + (k % blocksX) * kBlockWidth)) + lanes.x;
+                    Float py = Float(float(y0 + (k / blocksX) * kBlockHeight)) + lanes.y;
+                    Mask inside = (px < Float(float(camera_.width))) & (py < Float(float(camera_.height)));
+                    surfaces_[k] = findSurfaces(frame_, primaryRays(camera_, px + ox, py + oy), inside, entry, counts_);
+                    const Vec3P& o = surfaces_[k].shadowOrigin;
+                    Mask hit = surfaces_[k].hitLanes;
+                    lo = select(hit, Vec3P(simd::min(o.x, lo.x), simd::min(o.y, lo.y), simd::min(o.z, lo.z)), lo);
+                    hi = select(hit, Vec3P(simd::max(o.x, hi.x), simd::max(o.y, hi.y), simd::max(o.z, hi.z)), hi);
+                }
+                ShadowEntries shadowEntry(frame_, lo, hi);
+                for (int k = 0; k < blocks; ++k) {
+                    ColorP c = shadeSurfaces(frame_, surfaces_[k], shadowEntry.perLight(), counts_);
+                    if (aa_ > 1) c = clamped(c);  // the average of displayed values
+                    sum_[k] = sx == 0 && sy == 0 ? c : ColorP{sum_[k].r + c.r, sum_[k].g + c.g, sum_[k].b + c.b};
+                }
             }
         }
-        Float weight(1.0f / float(aa * aa));
-        c = {c.r * weight, c.g * weight, c.b * weight};
-    }
-    alignas(64) std::int32_t r[simd::kWidth], g[simd::kWidth], b[simd::kWidth];
-    simd::store(r, toBytes(c.r));
-    simd::store(g, toBytes(c.g));
-    simd::store(b, toBytes(c.b));
-    const int w = std::min(kBlockWidth, camera.width - x0), h = std::min(kBlockHeight, camera.height - y0);
-    for (int row = 0; row < h; ++row, dst += stride) {
-        for (int col = 0; col < w; ++col) {
-            int i = row * kBlockWidth + col;
-            dst[col] = {std::uint8_t(r[i]), std::uint8_t(g[i]), std::uint8_t(b[i])};
+        Float weight(1.0f / float(aa_ * aa_));
+        for (int k = 0; k < blocks; ++k) {
+            ColorP c = sum_[k];
+            if (aa_ > 1) c = {c.r * weight, c.g * weight, c.b * weight};
+            const int bx = (k % blocksX) * kBlockWidth, by = (k / blocksX) * kBlockHeight;
+            writeBlock(c, std::min(kBlockWidth, x1 - x0 - bx), std::min(kBlockHeight, y1 - y0 - by),
+                       dst + by * kTileSize + bx);
         }
     }
-}
+
+private:
+    /// Per light, the entry nodes of the shadow rays leaving the box [lo, hi]
+    /// (lane-wise bounds of the tile's shadow origins).
+    class ShadowEntries {
+    public:
+        ShadowEntries(const FrameScene& frame, const Vec3P& lo, const Vec3P& hi) {
+            Bounds origins{{horizontalMin(lo.x), horizontalMin(lo.y), horizontalMin(lo.z)},
+                           {horizontalMax(hi.x), horizontalMax(hi.y), horizontalMax(hi.z)}};
+            if (!(origins.lo.x <= origins.hi.x)) return;  // nothing was hit: no shadow rays
+            // A little slack against rounding in Bvh::beamEntryNodes's box arithmetic.
+            float slack = 1e-5f * (1.0f + std::max({std::fabs(origins.lo.x), std::fabs(origins.lo.y),
+                                                    std::fabs(origins.lo.z), std::fabs(origins.hi.x),
+                                                    std::fabs(origins.hi.y), std::fabs(origins.hi.z)}));
+            origins.lo = origins.lo - Vec3{slack, slack, slack};
+            origins.hi = origins.hi + Vec3{slack, slack, slack};
+            count_ = std::min(frame.lights.size(), kShadowEntryLights);
+            for (std::size_t i = 0; i < count_; ++i)
+                entries_[i] = {store_[i], frame.bvh.beamEntryNodes(origins, frame.lights[i].toLight, store_[i])};
+        }
+        std::span<const std::span<const std::uint32_t>> perLight() const { return {entries_, count_}; }
+
+    private:
+        static float horizontalMin(Float v) {
+            alignas(64) float lanes[simd::kWidth];
+            simd::store(lanes, v);
+            return *std::min_element(lanes, lanes + simd::kWidth);
+        }
+        static float horizontalMax(Float v) {
+            alignas(64) float lanes[simd::kWidth];
+            simd::store(lanes, v);
+            return *std::max_element(lanes, lanes + simd::kWidth);
+        }
+        std::uint32_t store_[kShadowEntryLights][kEntryNodes];
+        std::span<const std::uint32_t> entries_[kShadowEntryLights];
+        std::size_t count_ = 0;
+    };
+
+    static void writeBlock(const ColorP& c, int w, int h, Rgb8* dst) {
+        alignas(64) std::int32_t r[simd::kWidth], g[simd::kWidth], b[simd::kWidth];
+        simd::store(r, toBytes(c.r));
+        simd::store(g, toBytes(c.g));
+        simd::store(b, toBytes(c.b));
+        for (int row = 0; row < h; ++row, dst += kTileSize) {
+            for (int col = 0; col < w; ++col) {
+                int i = row * kBlockWidth + col;
+                dst[col] = {std::uint8_t(r[i]), std::uint8_t(g[i]), std::uint8_t(b[i])};
+            }
+        }
+    }
+
+    const FrameScene& frame_;
+    const Camera& camera_;
+    const int aa_;
+    RayCounts& counts_;
+    PacketSurface surfaces_[kBlocksPerTile];
+    ColorP sum_[kBlocksPerTile];
+};
 }  // namespace
 
 bool Renderer::trace(const FrameScene& frame, const Camera& camera, Image& out, const RenderOptions& options,
@@ -105,7 +180,6 @@ bool Renderer::trace(const FrameScene& frame, const Camera& camera, Image& out, 
     const int tilesX = (camera.width + kTileSize - 1) / kTileSize;
     const int tilesY = (camera.height + kTileSize - 1) / kTileSize;
     const int aa = options.antialias < 1 ? 1 : options.antialias;
-    static const LaneOffsets lanes;
     std::atomic<bool> cancelled{false};
     std::atomic<std::uint64_t> primaryRays{0}, shadowRays{0};
 
@@ -122,15 +196,8 @@ bool Renderer::trace(const FrameScene& frame, const Camera& camera, Image& out, 
         // image rows of neighbouring tiles share cache lines, which two threads
         // writing pixel by pixel would pass back and forth.
         Rgb8 local[kTileSize * kTileSize];
-        // The tile's packets start below the top of the tree, at the nodes its frustum reaches.
-        std::uint32_t entryStore[kEntryNodes];
-        std::span<const std::uint32_t> entry(
-            entryStore, frame.bvh.entryNodes(camera.pixelFrustum(x0, y0, x1, y1), camera.eye, entryStore));
         RayCounts tileRays;
-        for (int y = y0; y < y1; y += kBlockHeight)
-            for (int x = x0; x < x1; x += kBlockWidth)
-                renderBlock(frame, camera, aa, lanes, x, y, entry, &local[(y - y0) * kTileSize + (x - x0)],
-                            kTileSize, tileRays);
+        TileRenderer(frame, camera, aa, tileRays).render(x0, y0, x1, y1, local);
         for (int y = y0; y < y1; ++y)
             std::copy_n(&local[(y - y0) * kTileSize], x1 - x0, &out.at(x0, y));
         primaryRays.fetch_add(tileRays.primary, std::memory_order_relaxed);
