@@ -8,6 +8,7 @@
 
 #include "core/anim/frame_builder.h"
 #include "core/render/renderer.h"
+#include "core/scene/bench_scenes.h"
 #include "test_scenes.h"
 
 namespace f2 {
@@ -254,6 +255,29 @@ TEST(PacketPath, MatchesReferenceWithRotatedShapesAndSeveralLights) {
         "/material s 0.5 0.8 0.9 7\n"
         "/amb_light 0.1\n/dir_light 0.5 1 -1 1\n/dir_light 0.4 -1 -0.5 0.2\n/dir_light 0.3 0 -1 0\n");
     expectPacketPathMatchesReference(scene, 0, "rotated shapes");
+}
+
+TEST(PacketPath, MatchesReferenceWithMoreLightsThanTileBeams) {
+    // A tile's shadow rays start from beam entry nodes for its first four
+    // lights and from the root for the rest; lights along the axes give the
+    // beam test zero direction components.
+    SceneDesc scene = test::sceneFromText(
+        "/camera 120 90 0.6 0 150 -250 25 0 0\n"
+        "/box floor 500 20 500 0 -20 0\n"
+        "/robot r 0 0 0 0 160 0\n/human h 80 0 40 0 200 0\n/sphere s 25 -90 20 30\n"
+        "/amb_light 0.1\n/dir_light 0.3 1 -1 1\n/dir_light 0.2 0 -1 0\n/dir_light 0.2 -1 -1 0\n"
+        "/dir_light 0.2 0 -1 1\n/dir_light 0.2 1 -0.5 -1\n/dir_light 0.2 -0.3 -1 -0.2\n");
+    expectPacketPathMatchesReference(scene, 0, "six lights");
+}
+
+TEST(PacketPath, MatchesReferenceOnAGridOfRobots) {
+    // Hundreds of robots a few pixels wide: a deep tree whose shadow beams
+    // start well below the root.
+    BenchSceneSpec spec;
+    spec.shape = BenchShape::Robots;
+    spec.count = 400;
+    SceneDesc scene = test::sceneFromText(benchSceneText(spec, 200, 150));
+    for (double t : {0.0, 13.0}) expectPacketPathMatchesReference(scene, t, "400 robots at " + std::to_string(t));
 }
 
 TEST(PacketPath, MatchesReferenceWithTheCameraInsideASphere) {
