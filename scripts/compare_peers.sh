@@ -15,6 +15,8 @@
 # one after the other, and shows the medians and the range of the R ratios: on
 # a shared machine whose speed drifts for a minute at a time, the ratio of two
 # back-to-back runs is steadier than either figure alone.
+# When the scenes include robots:1 and larger robots:N, a "Scaling" line gives
+# each renderer's frame time of robots:N over robots:1 (the issue's 2.5x goal).
 # POV-Ray renders `f2 export --pov` of the frame with -A +WT2; its reported
 # "Trace Time" is divided by f2's median frame time.
 # Generated scenes (robots:N, spheres:N) reach export through
@@ -35,7 +37,7 @@ RUN_POV=1
 WORK=$ROOT/build/peers/work
 SIZE=800x600
 
-usage() { sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; }
 while [ $# -gt 0 ]; do
   case $1 in
     --f2) F2=$2; shift ;;
