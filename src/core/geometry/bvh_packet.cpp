@@ -184,11 +184,14 @@ std::size_t Bvh::entryNodes(const Frustum& frustum, Vec3 eye, std::span<std::uin
 
 std::size_t Bvh::beamEntryNodes(const Bounds& origins, Vec3 direction, std::span<std::uint32_t> out) const {
     // The rays o + t d (o in `origins`, t >= 0) meet box B exactly when the one
-    // ray t d from 0 meets B - origins = [B.lo - origins.hi, B.hi - origins.lo].
+    // ray t d from 0 meets B - origins = [B.lo - origins.hi, B.hi - origins.lo],
+    // here widened by a little slack against the rounding of that arithmetic.
+    Vec3 magnitude = vmax(vmax(origins.lo, -origins.lo), vmax(origins.hi, -origins.hi));
+    const float slack = 1e-5f * (1.0f + std::max({magnitude.x, magnitude.y, magnitude.z}));
     auto excludes = [&](const Bounds& b) {
         float enter = 0, exit = kInfinity;
         for (int i = 0; i < 3; ++i) {
-            float lo = b.lo[i] - origins.hi[i], hi = b.hi[i] - origins.lo[i];
+            float lo = b.lo[i] - origins.hi[i] - slack, hi = b.hi[i] - origins.lo[i] + slack;
             if (direction[i] == 0) {
                 if (lo > 0 || hi < 0) return true;
                 continue;

@@ -121,15 +121,9 @@ private:
     class ShadowEntries {
     public:
         ShadowEntries(const FrameScene& frame, const Vec3P& lo, const Vec3P& hi) {
-            Bounds origins{{horizontalMin(lo.x), horizontalMin(lo.y), horizontalMin(lo.z)},
+            const Bounds origins{{horizontalMin(lo.x), horizontalMin(lo.y), horizontalMin(lo.z)},
                            {horizontalMax(hi.x), horizontalMax(hi.y), horizontalMax(hi.z)}};
             if (!(origins.lo.x <= origins.hi.x)) return;  // nothing was hit: no shadow rays
-            // A little slack against rounding in Bvh::beamEntryNodes's box arithmetic.
-            float slack = 1e-5f * (1.0f + std::max({std::fabs(origins.lo.x), std::fabs(origins.lo.y),
-                                                    std::fabs(origins.lo.z), std::fabs(origins.hi.x),
-                                                    std::fabs(origins.hi.y), std::fabs(origins.hi.z)}));
-            origins.lo = origins.lo - Vec3{slack, slack, slack};
-            origins.hi = origins.hi + Vec3{slack, slack, slack};
             count_ = std::min(frame.lights.size(), kShadowEntryLights);
             for (std::size_t i = 0; i < count_; ++i)
                 entries_[i] = {store_[i], frame.bvh.beamEntryNodes(origins, frame.lights[i].toLight, store_[i])};
