@@ -37,6 +37,13 @@ inline Vec3P operator*(Vec3 a, Float s) { return Vec3P(a) * s; }
 inline Float dot(const Vec3P& a, Vec3 b) { return dot(a, Vec3P(b)); }
 inline Float dot(Vec3 a, const Vec3P& b) { return dot(Vec3P(a), b); }
 
+inline Vec3P vmin(const Vec3P& a, const Vec3P& b) {
+    return {simd::min(a.x, b.x), simd::min(a.y, b.y), simd::min(a.z, b.z)};
+}
+inline Vec3P vmax(const Vec3P& a, const Vec3P& b) {
+    return {simd::max(a.x, b.x), simd::max(a.y, b.y), simd::max(a.z, b.z)};
+}
+
 inline Float component(const Vec3P& v, int axis) { return axis == 0 ? v.x : (axis == 1 ? v.y : v.z); }
 inline float component(Vec3 v, int axis) { return v[axis]; }
 inline float laneOf(float shared, int) { return shared; }

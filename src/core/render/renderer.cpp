@@ -92,10 +92,9 @@ public:
                     Float py = Float(float(y0 + (k / blocksX) * kBlockHeight)) + lanes.y;
                     Mask inside = (px < Float(float(camera_.width))) & (py < Float(float(camera_.height)));
                     surfaces_[k] = findSurfaces(frame_, primaryRays(camera_, px + ox, py + oy), inside, entry, counts_);
-                    const Vec3P& o = surfaces_[k].shadowOrigin;
-                    Mask hit = surfaces_[k].hitLanes;
-                    lo = select(hit, Vec3P(simd::min(o.x, lo.x), simd::min(o.y, lo.y), simd::min(o.z, lo.z)), lo);
-                    hi = select(hit, Vec3P(simd::max(o.x, hi.x), simd::max(o.y, hi.y), simd::max(o.z, hi.z)), hi);
+                    const PacketSurface& s = surfaces_[k];
+                    lo = select(s.hitLanes, vmin(s.shadowOrigin, lo), lo);
+                    hi = select(s.hitLanes, vmax(s.shadowOrigin, hi), hi);
                 }
                 ShadowEntries shadowEntry(frame_, lo, hi);
                 for (int k = 0; k < blocks; ++k) {
@@ -121,8 +120,8 @@ private:
     class ShadowEntries {
     public:
         ShadowEntries(const FrameScene& frame, const Vec3P& lo, const Vec3P& hi) {
-            const Bounds origins{{horizontalMin(lo.x), horizontalMin(lo.y), horizontalMin(lo.z)},
-                           {horizontalMax(hi.x), horizontalMax(hi.y), horizontalMax(hi.z)}};
+            const Bounds origins{{simd::minLane(lo.x), simd::minLane(lo.y), simd::minLane(lo.z)},
+                                 {simd::maxLane(hi.x), simd::maxLane(hi.y), simd::maxLane(hi.z)}};
             if (!(origins.lo.x <= origins.hi.x)) return;  // nothing was hit: no shadow rays
             count_ = std::min(frame.lights.size(), kShadowEntryLights);
             for (std::size_t i = 0; i < count_; ++i)
@@ -131,16 +130,6 @@ private:
         std::span<const std::span<const std::uint32_t>> perLight() const { return {entries_, count_}; }
 
     private:
-        static float horizontalMin(Float v) {
-            alignas(64) float lanes[simd::kWidth];
-            simd::store(lanes, v);
-            return *std::min_element(lanes, lanes + simd::kWidth);
-        }
-        static float horizontalMax(Float v) {
-            alignas(64) float lanes[simd::kWidth];
-            simd::store(lanes, v);
-            return *std::max_element(lanes, lanes + simd::kWidth);
-        }
         std::uint32_t store_[kShadowEntryLights][kEntryNodes];
         std::span<const std::uint32_t> entries_[kShadowEntryLights];
         std::size_t count_ = 0;

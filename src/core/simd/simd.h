@@ -224,4 +224,14 @@ inline float lane(Float a, int i) {
     return tmp[i];
 }
 
+/// The smallest and the largest lane (once per tile, not in hot loops).
+inline float minLane(Float a) {
+    alignas(64) float tmp[kWidth];
+    store(tmp, a);
+    float m = tmp[0];
+    for (int i = 1; i < kWidth; ++i) m = tmp[i] < m ? tmp[i] : m;
+    return m;
+}
+inline float maxLane(Float a) { return -minLane(-a); }
+
 }  // namespace f2::simd
