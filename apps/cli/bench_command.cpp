@@ -99,9 +99,8 @@ int runBenchCommand(BenchArgs args) {
     if (!loaded) return 1;
     // The bench size replaces the scene's /camera size; the view (and so the
     // horizontal field of view) stays, as with `f2 render --size`.
-    Camera camera = Camera::fromDesc(loaded->scene.camera).resized(width, height);
     args.settings.seconds = args.seconds < 0 ? 3.0 : args.seconds;
-    BenchResult result = runBench(loaded->scene, loaded->name, camera, args.settings);
+    BenchResult result = runBench(loaded->scene, loaded->name, width, height, args.settings);
     if (args.json)
         std::cout << benchJson(result) << '\n';
     else

@@ -103,15 +103,15 @@ bool resetPeakRss() {
     return bool(clear);
 }
 
-BenchResult runBench(const SceneDesc& scene, const std::string& name, const Camera& camera,
+BenchResult runBench(const SceneDesc& scene, const std::string& name, int width, int height,
                      const BenchSettings& settings) {
     Renderer renderer(settings.threads);
     Image image;
     const RenderOptions options{settings.antialias};
     BenchResult result;
     result.scene = name;
-    result.width = camera.width;
-    result.height = camera.height;
+    result.width = width;
+    result.height = height;
     result.threads = renderer.threadCount();
     result.antialias = settings.antialias;
     result.frame = settings.frame;
@@ -127,8 +127,13 @@ BenchResult runBench(const SceneDesc& scene, const std::string& name, const Came
     // Warm-up: fills caches, grows the renderer's buffers, wakes the pool and
     // lets the CPU clock settle; none of it is timed.
     const auto warmStart = Clock::now();
+    // The camera is evaluated per frame like the animation: a moving camera is
+    // part of the frame's work.
+    auto renderAt = [&](double t) {
+        return renderer.render(scene, t, cameraAt(scene, t).resized(width, height), image, options);
+    };
     do {
-        renderer.render(scene, nextTime(), camera, image, options);
+        renderAt(nextTime());
         ++result.warmupFrames;
     } while (msBetween(warmStart, Clock::now()) < settings.warmupSeconds * 1e3);
 
@@ -136,7 +141,7 @@ BenchResult runBench(const SceneDesc& scene, const std::string& name, const Came
     const auto start = Clock::now();
     for (;;) {
         const auto before = Clock::now();
-        FrameTimings t = renderer.render(scene, nextTime(), camera, image, options);
+        FrameTimings t = renderAt(nextTime());
         const auto after = Clock::now();
         total.push_back(msBetween(before, after));
         eval.push_back(t.evaluateMs);

@@ -54,8 +54,9 @@ struct BenchResult {
 /// Parses a generated scene (robots:N, spheres:N) with its camera at width x height.
 std::optional<LoadedScene> loadBenchScene(const BenchSceneSpec& spec, int width, int height);
 
-/// Runs the benchmark; `name` labels the result.
-BenchResult runBench(const SceneDesc& scene, const std::string& name, const Camera& camera,
+/// Runs the benchmark at width x height (each frame seen by the scene's camera
+/// at its time, cameraAt); `name` labels the result.
+BenchResult runBench(const SceneDesc& scene, const std::string& name, int width, int height,
                      const BenchSettings& settings);
 
 

@@ -113,8 +113,9 @@ int runStudy(const StudySettings& settings) {
             auto loaded = loadBenchScene(spec, settings.width, settings.height);
             if (!loaded) return 1;
             resetPeakRss();  // each point's own peak, as far as the kernel allows
-            Camera camera = Camera::fromDesc(loaded->scene.camera);
-            BenchResult result = runBench(loaded->scene, loaded->name, camera, settings.bench);
+            const CameraDesc& camera = loaded->scene.camera;
+            BenchResult result =
+                runBench(loaded->scene, loaded->name, camera.width, camera.height, settings.bench);
             std::cerr << "f2 bench --study: " << result.scene << ": " << fixed(result.fps(), 1) << " FPS ("
                       << fixed(result.msMedian, 2) << " ms, " << result.frames << " frames)\n";
             points.push_back({shape, count, std::move(result)});

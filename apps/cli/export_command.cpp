@@ -45,7 +45,7 @@ int runExport(const ExportArgs& args) {
     }
     auto loaded = loadScene(args.scene);
     if (!loaded) return 1;
-    Camera camera = Camera::fromDesc(loaded->scene.camera);
+    Camera camera = cameraAt(loaded->scene, args.frame);
     std::string error;
     if (!args.size.empty() && !parseSize(args.size, camera.width, camera.height, error)) {
         std::cerr << "f2 export: " << error << '\n';

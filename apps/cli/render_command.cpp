@@ -37,7 +37,7 @@ struct RenderArgs {
 /// Everything an animation render needs, resolved from the arguments.
 struct AnimationJob {
     const LoadedScene* loaded;
-    Camera camera;
+    int width, height;  ///< image size
     FrameRange range;
     Shard shard;
     int fps;  ///< output frames per second
@@ -46,6 +46,8 @@ struct AnimationJob {
     /// Scene time (in scene frames) shown by output frame `i`: the animation
     /// keeps its duration whatever the output rate.
     double timeOf(int i) const { return double(i) * loaded->scene.fps / fps; }
+    /// The scene's camera at output frame `i`, at the image size.
+    Camera cameraOf(int i) const { return cameraAt(loaded->scene, timeOf(i)).resized(width, height); }
 };
 
 constexpr int kUsageError = 2;
@@ -56,7 +58,7 @@ std::string describe(const AnimationJob& job) {
     std::ostringstream s;
     s << job.loaded->name << " frames " << job.range.first << "-" << job.range.last;
     if (job.shard.count > 1) s << " shard " << job.shard.index << "/" << job.shard.count;
-    s << " (" << job.camera.width << "x" << job.camera.height << ", " << job.fps << " fps, aa "
+    s << " (" << job.width << "x" << job.height << ", " << job.fps << " fps, aa "
       << job.antialias << ")";
     return s.str();
 }
@@ -99,7 +101,7 @@ int renderSequence(const AnimationJob& job, const FramePattern& pattern, const s
             progress.update(++done);
             continue;
         }
-        renderer.render(job.loaded->scene, job.timeOf(f), job.camera, image, {job.antialias},
+        renderer.render(job.loaded->scene, job.timeOf(f), job.cameraOf(f), image, {job.antialias},
                         &interruptFlag());
         if (interruptFlag()) break;  // the image is incomplete: drop it
         if (writes.size() >= kWritesInFlight && !(ok = collectOldest())) break;
@@ -128,7 +130,7 @@ int renderSequence(const AnimationJob& job, const FramePattern& pattern, const s
 }
 
 int renderVideo(const AnimationJob& job, VideoFormat format, const std::string& output) {
-    VideoSettings settings{format, job.camera.width, job.camera.height, job.fps, {}};
+    VideoSettings settings{format, job.width, job.height, job.fps, {}};
     const Color8 bg = job.loaded->scene.background;
     settings.padColor = {bg.r, bg.g, bg.b};
     if (videoNeedsPadding(settings))
@@ -146,7 +148,7 @@ int renderVideo(const AnimationJob& job, VideoFormat format, const std::string& 
     Progress progress(job.range.count(), Progress::isInteractive());
     int done = 0;
     for (int f = job.range.first; f <= job.range.last && !interruptFlag(); ++f) {
-        renderer.render(job.loaded->scene, job.timeOf(f), job.camera, image, {job.antialias},
+        renderer.render(job.loaded->scene, job.timeOf(f), job.cameraOf(f), image, {job.antialias},
                         &interruptFlag());
         if (interruptFlag()) break;
         if (!encoder.write(image, error)) {
@@ -175,7 +177,8 @@ int renderVideo(const AnimationJob& job, VideoFormat format, const std::string& 
     return 0;
 }
 
-int renderImage(const RenderArgs& args, const LoadedScene& loaded, const Camera& camera, double t) {
+int renderImage(const RenderArgs& args, const LoadedScene& loaded, int width, int height, double t) {
+    const Camera camera = cameraAt(loaded.scene, t).resized(width, height);
     Renderer renderer(args.threads);
     Image image;
     FrameTimings timings =
@@ -204,10 +207,9 @@ int runRender(const RenderArgs& args) {
     installInterruptHandlers();
     auto loaded = loadScene(args.scene);
     if (!loaded) return 1;
-    Camera camera = Camera::fromDesc(loaded->scene.camera);
+    int width = loaded->scene.camera.width, height = loaded->scene.camera.height;
     std::string error;
-    if (!args.size.empty() && !parseSize(args.size, camera.width, camera.height, error))
-        return usageError(error);
+    if (!args.size.empty() && !parseSize(args.size, width, height, error)) return usageError(error);
 
     const int fps = args.fps > 0 ? args.fps : loaded->scene.fps;
     // Default range: the whole animation, frame 0 to the last key at the output rate.
@@ -225,7 +227,7 @@ int runRender(const RenderArgs& args) {
         shard = *parsed;
     }
     const bool oneFrameOption = args.frameOption->count() > 0;
-    AnimationJob job{&*loaded, camera, range, shard, fps, args.antialias, args.threads};
+    AnimationJob job{&*loaded, width, height, range, shard, fps, args.antialias, args.threads};
 
     if (auto format = videoFormatForPath(args.output)) {
         if (oneFrameOption)
@@ -251,7 +253,7 @@ int runRender(const RenderArgs& args) {
         return usageError("'" + args.output + "' holds one image; for --frames " + args.frames +
                           " write a numbered sequence (-o f_%04d.png) or a video (-o out.mp4)");
     double t = args.frames.empty() ? args.frame : job.timeOf(range.first);
-    return renderImage(args, *loaded, camera, t);
+    return renderImage(args, *loaded, width, height, t);
 }
 }  // namespace
 

@@ -46,7 +46,7 @@ void AnimationExporter::run(ExportJob job) {
     Renderer renderer;
     Image image;
     for (int i = 0; i < total; ++i) {
-        renderer.render(*job.scene, job.firstFrame + i, job.camera, image, {}, &cancel_);
+        renderer.render(*job.scene, job.firstFrame + i, job.cameraAt(job.firstFrame + i), image, {}, &cancel_);
         if (cancel_.load()) {
             job.sink->finish(true, error);
             return report(false, tr("Export cancelled after %1 of %2 frames").arg(i).arg(total));

@@ -18,7 +18,13 @@ namespace f2::viewer {
 
 struct ExportJob {
     std::shared_ptr<const SceneDesc> scene;
-    Camera camera;  ///< view and image size of every frame
+    Camera camera;  ///< image size of every frame, and the view when `followScene` is false
+    /// Each frame seen by the scene's camera at its time (cameraAt), at
+    /// `camera`'s size; false keeps `camera`'s view (the user looks around).
+    bool followScene = true;
+    Camera cameraAt(double t) const {
+        return followScene ? f2::cameraAt(*scene, t).resized(camera.width, camera.height) : camera;
+    }
     int firstFrame = 0;
     int lastFrame = 0;
     std::unique_ptr<FrameSink> sink;

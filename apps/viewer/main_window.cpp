@@ -168,7 +168,7 @@ void MainWindow::onSceneChanged(bool newDocument) {
     timeline_->setRange(scene->lastFrame(), scene->fps);
     if (newDocument) playback_->seek(0);
     timeline_->setTime(playback_->time());
-    const Camera camera = Camera::fromDesc(scene->camera);
+    const Camera camera = cameraAt(*scene, playback_->time());
     // A reload of the same file keeps the user's look-around; a new file starts at its camera.
     viewport_->setSceneCamera(camera, orbitTargetDistance(*scene, camera), !newDocument);
     setWindowTitle(tr("%1 — f2-viewer").arg(document_->displayName()));
@@ -203,7 +203,9 @@ void MainWindow::scheduleFrame() {
 void MainWindow::requestFrame() {
     auto scene = document_->scene();
     if (!scene) return;
-    controller_->request({std::move(scene), playback_->time(), viewport_->viewCamera()});
+    const double time = playback_->time();
+    viewport_->followSceneCamera(cameraAt(*scene, time));
+    controller_->request({std::move(scene), time, viewport_->viewCamera()});
 }
 
 void MainWindow::onFrameReady(const QImage& image, const FrameInfo& info) {
@@ -290,6 +292,7 @@ void MainWindow::runExport(std::shared_ptr<const SceneDesc> scene, std::unique_p
     ExportJob job;
     // Like `f2 render`: the scene's /camera size, seen from the current view.
     job.camera = viewport_->viewCamera(QSize(scene->camera.width, scene->camera.height));
+    job.followScene = !viewport_->isOrbiting();
     job.scene = std::move(scene);
     job.lastFrame = job.scene->lastFrame();
     job.sink = std::move(sink);

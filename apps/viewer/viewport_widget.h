@@ -23,6 +23,9 @@ class ViewportWidget : public QWidget {
     /// The scene's own camera and the depth of the orbit target in front of it.
     /// `keepOrbit` keeps a look-around in progress (a reload of the same file).
     void setSceneCamera(const Camera& camera, float targetDistance, bool keepOrbit);
+    /// The scene's camera at the time shown: a moving camera (SPEC 9.1) moves
+    /// the view unless the user looks around. Does not ask for a render.
+    void followSceneCamera(const Camera& camera) { sceneCamera_ = camera; }
     /// Back to the scene's camera.
     void resetView();
     bool isOrbiting() const { return orbit_.has_value(); }

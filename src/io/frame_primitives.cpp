@@ -19,8 +19,11 @@ std::string shapeLabel(const SceneObject& object, const ModelShape& shape) {
 std::vector<PlacedPrimitive> framePrimitives(const SceneDesc& scene, double t) {
     std::vector<PlacedPrimitive> out;
     out.reserve(scene.primitiveCount());
-    for (const SceneObject& object : scene.objects) {
-        Transform worldFromObject = objectFrame(object, t);
+    std::vector<Transform> attachedRoots;
+    attachedRootFrames(scene, t, attachedRoots);
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject& object = scene.objects[i];
+        Transform worldFromObject = worldFromRoot(scene, i, t, attachedRoots);
         if (!isModel(object.kind)) {
             const Appearance& look = object.appearance[0];
             out.push_back({object.name, shapeKindOf(object.kind), object.size, worldFromObject, look.color,

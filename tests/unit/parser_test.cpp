@@ -459,9 +459,9 @@ TEST(Parser, InterpolationPerTarget) {
 
 TEST(Parser, NamesMayLookLikePartsOrCommands) {
     const SceneDesc s =
-        parseOk("/sphere head 1 0 0 0\n/robot camera 0 0 0\n/paint head 1 1 1\n/key 1 camera.head\n");
+        parseOk("/sphere head 1 0 0 0\n/robot key 0 0 0\n/paint head 1 1 1\n/key 1 key.head\n");
     EXPECT_EQ(object(s, "head").appearance[0].color, (Color8{1, 1, 1}));
-    EXPECT_EQ(partTrack(object(s, "camera"), PartId::Head).keys.size(), 1u);
+    EXPECT_EQ(partTrack(object(s, "key"), PartId::Head).keys.size(), 1u);
 }
 
 TEST(Parser, SeedExampleOfSpec8) {
@@ -762,7 +762,7 @@ TEST(ParserError, KeyFrameValues) {
 
 TEST(ParserError, UnknownInterpolation) {
     expectError("/sphere s 1 0 0 0\n/interp s cubic\n", 2, 11,
-                "unknown interpolation 'cubic' (expected linear, ease or spline)");
+                "unknown interpolation 'cubic' (expected linear, ease, ease_in, ease_out, step or spline)");
     expectError("/sphere s 1 0 0 0\n/interp s Linear\n", 2, 11, "unknown interpolation 'Linear'");
 }
 

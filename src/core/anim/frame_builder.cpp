@@ -1,6 +1,7 @@
 #include "core/anim/frame_builder.h"
 
 #include "core/anim/track.h"
+#include "core/scene/models.h"
 
 #include <algorithm>
 
@@ -35,10 +36,47 @@ std::array<Transform, kPartCount> modelPartFrames(const SceneObject& object, con
     return worldFromPart;
 }
 
+Transform worldFromRef(const SceneDesc& scene, FrameRef ref, double t) {
+    // Bottom up: each level's frame in its parent's space, multiplied on the left.
+    Transform world;
+    bool first = true;
+    for (std::optional<FrameRef> at = ref; at; at = scene.objects[at->object].attachedTo) {
+        const SceneObject& object = scene.objects[at->object];
+        const Transform root = objectFrame(object, t);
+        const Transform level = at->part < 0 ? root : modelPartFrames(object, root, t)[std::size_t(at->part)];
+        world = first ? level : level * world;
+        first = false;
+    }
+    return world;
+}
+
+void attachedRootFrames(const SceneDesc& scene, double t, std::vector<Transform>& roots) {
+    if (scene.attachOrder.empty()) return;
+    roots.resize(scene.objects.size());
+    for (std::uint32_t i : scene.attachOrder) {
+        const SceneObject& object = scene.objects[i];
+        const FrameRef mount = *object.attachedTo;
+        const SceneObject& parent = scene.objects[mount.object];
+        // The parent comes earlier in attachOrder when it is attached itself.
+        const Transform parentRoot = parent.attachedTo ? roots[mount.object] : objectFrame(parent, t);
+        const Transform worldFromMount =
+            mount.part < 0 ? parentRoot : modelPartFrames(parent, parentRoot, t)[std::size_t(mount.part)];
+        roots[i] = worldFromMount * objectFrame(object, t);
+    }
+}
+
+Vec3 partShapeCentre(ObjectKind kind, int part, const Transform& worldFromPart) {
+    for (const ModelShape& shape : modelOf(kind).shapes) {
+        if (int(shape.part) == part) return worldFromPart.applyToPoint(shape.centre);
+    }
+    return worldFromPart.translation;
+}
+
 namespace {
-/// Writes the primitives of one object at `out` (primitiveCountOf(kind) slots).
-void evaluateObject(const SceneObject& object, double t, Primitive* prims, Surface* surfaces) {
-    Transform worldFromObject = objectFrame(object, t);
+/// Writes the primitives of one object placed at `worldFromObject` at `out`
+/// (primitiveCountOf(kind) slots).
+void evaluateObject(const SceneObject& object, const Transform& worldFromObject, double t, Primitive* prims,
+                    Surface* surfaces) {
     if (!isModel(object.kind)) {
         *prims = makePrimitive(shapeKindOf(object.kind), object.size, worldFromObject);
         const Appearance& look = object.appearance[0];
@@ -87,13 +125,15 @@ void evaluateFrame(const SceneDesc& scene, double t, FrameScene& frame, ThreadPo
     frame.firstPrimitive[objectCount] = std::uint32_t(total);
     frame.primitives.resize(total);
     frame.surfaces.resize(total);
+    // Attached objects need their parents' frames first: one pass in order.
+    attachedRootFrames(scene, t, frame.attachedRoots);
 
     auto evaluateChunk = [&](std::uint32_t chunk) {
         std::size_t end = std::min(objectCount, (chunk + 1) * kObjectsPerChunk);
         for (std::size_t i = chunk * kObjectsPerChunk; i < end; ++i) {
             if (i + kPrefetchAhead < end) prefetchKeys(scene.objects[i + kPrefetchAhead]);
-            evaluateObject(scene.objects[i], t, &frame.primitives[frame.firstPrimitive[i]],
-                           &frame.surfaces[frame.firstPrimitive[i]]);
+            evaluateObject(scene.objects[i], worldFromRoot(scene, i, t, frame.attachedRoots), t,
+                           &frame.primitives[frame.firstPrimitive[i]], &frame.surfaces[frame.firstPrimitive[i]]);
         }
     };
     std::uint32_t chunks = std::uint32_t((objectCount + kObjectsPerChunk - 1) / kObjectsPerChunk);

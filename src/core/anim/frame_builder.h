@@ -12,8 +12,31 @@ namespace f2 {
 std::array<Transform, kPartCount> modelPartFrames(const SceneObject& object, const Transform& worldFromRoot,
                                                   double t);
 
-/// World transform of an object's root (a primitive's own frame) at time t.
+/// An object's root frame (a primitive's own frame) at time t from its own
+/// pose alone: its world frame unless it is attached (SPEC 9.2).
 Transform objectFrame(const SceneObject& object, double t);
+
+/// World frame of `ref` at time t (SPEC 9.2): an object's root frame, or a
+/// part's pivot frame, through every attachment above it. O(depth of the
+/// attachment chain), no allocation.
+Transform worldFromRef(const SceneDesc& scene, FrameRef ref, double t);
+
+/// World root frames of the attached objects at time t into `roots` (indexed
+/// by object; other entries untouched), parents first (SceneDesc::attachOrder).
+/// Keeps the vector's capacity: no allocation in steady state.
+void attachedRootFrames(const SceneDesc& scene, double t, std::vector<Transform>& roots);
+
+/// World root frame of object i: `roots` (from attachedRootFrames) when it is
+/// attached, else its own pose.
+inline Transform worldFromRoot(const SceneDesc& scene, std::size_t i, double t,
+                               const std::vector<Transform>& roots) {
+    const SceneObject& object = scene.objects[i];
+    return object.attachedTo ? roots[i] : objectFrame(object, t);
+}
+
+/// World position of the centre of a part's shape (its main shape: a robot's
+/// head box, not its eyes) whose part frame is `worldFromPart`.
+Vec3 partShapeCentre(ObjectKind kind, int part, const Transform& worldFromPart);
 
 /// Fills `frame` (primitives, surfaces, lights) for time `t` in frames, on the
 /// pool's threads when one is given. Does not build the BVH: call

@@ -6,6 +6,7 @@
 
 #include "core/geometry/bvh.h"
 #include "core/geometry/primitive.h"
+#include "core/math/transform.h"
 #include "core/scene/scene_desc.h"
 
 namespace f2 {
@@ -29,6 +30,8 @@ struct FrameScene {
     std::vector<LightSample> lights;
     float ambient = 0;
     Vec3 background;  ///< 0..1
+    /// World root frames of attached objects (SPEC 9.2), indexed by object.
+    std::vector<Transform> attachedRoots;
     Bvh bvh;
 };
 

@@ -37,6 +37,8 @@ enum class Command {
     Key,
     Interp,
     Fps,
+    LookAt,
+    Attach,
 };
 
 struct CommandName {
@@ -44,7 +46,7 @@ struct CommandName {
     Command command;
 };
 
-constexpr std::array<CommandName, 15> kCommands = {{
+constexpr std::array<CommandName, 17> kCommands = {{
     {"/camera", Command::Camera},
     {"/amb_light", Command::AmbLight},
     {"/dir_light", Command::DirLight},
@@ -60,11 +62,28 @@ constexpr std::array<CommandName, 15> kCommands = {{
     {"/key", Command::Key},
     {"/interp", Command::Interp},
     {"/fps", Command::Fps},
+    {"/look_at", Command::LookAt},
+    {"/attach", Command::Attach},
 }};
 
 constexpr std::array<std::string_view, 5> kObjectKindNames = {"sphere", "cylinder", "box", "robot", "human"};
 
 std::string_view kindName(ObjectKind kind) { return kObjectKindNames[static_cast<std::size_t>(kind)]; }
+
+/// The name of the scene camera as a target (SPEC 9.1); no object may take it.
+constexpr std::string_view kCameraName = "camera";
+
+/// Interpolation modes by their words (SPEC 9.3).
+constexpr std::array<Interpolation, 6> kModes = {Interpolation::Linear, Interpolation::Ease,
+                                                 Interpolation::EaseIn, Interpolation::EaseOut,
+                                                 Interpolation::Step,   Interpolation::Spline};
+
+std::optional<Interpolation> modeFromWord(std::string_view word) {
+    for (Interpolation m : kModes) {
+        if (interpolationName(m) == word) return m;
+    }
+    return std::nullopt;
+}
 
 /// Only short tokens get a "did you mean": the distance is O(n·m).
 constexpr std::size_t kMaxSuggestLength = 32;
@@ -132,17 +151,20 @@ struct StringHash {
     std::size_t operator()(std::string_view s) const noexcept { return std::hash<std::string_view>{}(s); }
 };
 
-/// A command's target: an object, or one part of a model.
+/// A command's target: an object, one part of a model, or the camera.
 struct Target {
     std::size_t object = 0;
-    int part = -1;  ///< PartId index, or -1 for the object itself
+    int part = -1;        ///< PartId index, or -1 for the object itself
+    bool camera = false;  ///< the scene camera (SPEC 9.1); `object` and `part` unused
 };
+
+/// Whether a command accepts `camera` as its target.
+enum class CameraTarget : bool { Refused, Accepted };
 
 /// Parse-time bookkeeping of one track: where each key came from, for the
 /// duplicate-key warning. Parallel to Track::keys.
 struct TrackBook {
-    std::size_t object = 0;
-    int part = -1;
+    Target target;
     std::vector<Pos> origins;
     bool sorted = true;  ///< keys arrived in increasing frame order so far
 };
@@ -152,6 +174,16 @@ struct ObjectBook {
     Pos defined;
     /// Index into Parser::trackBooks_ for the object track (0) and each part (1 + PartId); -1 if none.
     std::array<int, kPartCount + 1> tracks{-1, -1, -1, -1, -1};
+    std::optional<Pos> attached;  ///< where its `/attach` is
+};
+
+/// A `/key` of the camera, kept until the end of the file: a key without
+/// numbers takes `/camera`'s pose, wherever `/camera` stands (SPEC 9.1).
+struct CameraKey {
+    int frame = 0;
+    std::optional<Pose> pose;
+    std::optional<Interpolation> mode;
+    Pos origin;
 };
 
 // Parser
@@ -168,7 +200,9 @@ class Parser {
         LineReader reader(text);
         SourceLine line;
         while (!stopped_ && reader.next(line)) parseLine(line);
+        addCameraKeys();
         sortUnsortedTracks();
+        orderAttachments();
         return finish();
     }
 
@@ -292,6 +326,10 @@ class Parser {
                 return parseInterp();
             case Command::Fps:
                 return parseFps();
+            case Command::LookAt:
+                return parseLookAt();
+            case Command::Attach:
+                return parseAttach();
         }
     }
 
@@ -409,6 +447,10 @@ class Parser {
                                  " (expected a letter or '_', then letters, digits or '_')");
             return false;
         }
+        if (name == kCameraName) {
+            error(argPos(i), "'camera' is the name of the scene camera; an object cannot take it");
+            return false;
+        }
         if (auto it = names_.find(name); it != names_.end()) {
             error(argPos(i), "duplicate name " + quoteToken(name) + " (first defined at " +
                                  posText(books_[it->second].defined) + ")");
@@ -447,11 +489,22 @@ class Parser {
         return index;
     }
 
-    /// Resolves `name` or `name.part` in argument i.
-    std::optional<Target> target(int i) {
+    /// Resolves `name` or `name.part` in argument i, or `camera` when the command takes it.
+    std::optional<Target> target(int i, CameraTarget cameraUse = CameraTarget::Refused) {
         const std::string_view text = arg(i);
         const Pos pos = argPos(i);
         const std::size_t dot = text.find('.');
+        if (text.substr(0, dot) == kCameraName) {
+            if (cameraUse == CameraTarget::Refused) {
+                error(pos, quoteToken(commandText()) + " does not apply to the camera");
+                return std::nullopt;
+            }
+            if (dot != std::string_view::npos) {
+                error({pos.line, pos.column + static_cast<int>(dot) + 1}, "the camera has no parts");
+                return std::nullopt;
+            }
+            return Target{0, -1, true};
+        }
         const std::optional<std::size_t> object = existing(text.substr(0, dot), text, pos);
         if (!object) return std::nullopt;
         if (dot == std::string_view::npos) return Target{*object, -1};
@@ -463,6 +516,7 @@ class Parser {
     }
 
     std::string targetName(Target t) const {
+        if (t.camera) return std::string(kCameraName);
         std::string s = scene_.objects[t.object].name;
         if (t.part >= 0) {
             s += '.';
@@ -472,6 +526,7 @@ class Parser {
     }
 
     Track& trackOf(Target t) {
+        if (t.camera) return scene_.camera.track;
         SceneObject& o = scene_.objects[t.object];
         return t.part < 0 ? o.track : o.partTracks[static_cast<std::size_t>(t.part)];
     }
@@ -504,6 +559,10 @@ class Parser {
             ok = ok && good;
         }
         if (argCount() >= 6) camera.pose = pose(3, argCount() == 9, ok);
+        // Keys, /look_at and /attach of the camera may come before /camera.
+        camera.track = std::move(scene_.camera.track);
+        camera.attachedTo = scene_.camera.attachedTo;
+        camera.lookAt = scene_.camera.lookAt;
         if (!ok) return;
         const long long pixels = static_cast<long long>(camera.width) * camera.height;
         if (pixels > limits_.maxImagePixels) {
@@ -595,7 +654,7 @@ class Parser {
         if (!newName(0)) return;
         object.name = std::string(arg(0));
         names_.emplace(object.name, scene_.objects.size());
-        books_.push_back({commandPos(), {-1, -1, -1, -1, -1}});
+        books_.push_back({commandPos(), {-1, -1, -1, -1, -1}, std::nullopt});
         scene_.objects.push_back(std::move(object));
     }
 
@@ -639,7 +698,11 @@ class Parser {
         if (!expectArgs({1, 2})) return;
         // Only validates: /key needs no /anim (SPEC 6).
         if (argCount() == 1) {
-            target(0);
+            target(0, CameraTarget::Accepted);
+            return;
+        }
+        if (arg(0) == kCameraName) {
+            error(argPos(1), "the camera has no parts");
             return;
         }
         if (arg(0).find('.') != std::string_view::npos) {
@@ -653,21 +716,19 @@ class Parser {
 
     void parseInterp() {
         if (!expectArgs({2})) return;
-        const std::optional<Target> t = target(0);
-        Interpolation mode = Interpolation::Linear;
-        const std::string_view word = arg(1);
-        if (word == "linear") {
-            mode = Interpolation::Linear;
-        } else if (word == "ease") {
-            mode = Interpolation::Ease;
-        } else if (word == "spline") {
-            mode = Interpolation::Spline;
-        } else {
-            error(argPos(1),
-                  "unknown interpolation " + quoteToken(word) + " (expected linear, ease or spline)");
-            return;
+        const std::optional<Target> t = target(0, CameraTarget::Accepted);
+        const std::optional<Interpolation> mode = interpolationMode(1);
+        if (t && mode) trackOf(*t).interpolation = *mode;  // the last /interp of a target wins
+    }
+
+    /// The mode word in argument i (SPEC 9.3).
+    std::optional<Interpolation> interpolationMode(int i) {
+        const std::optional<Interpolation> mode = modeFromWord(arg(i));
+        if (!mode) {
+            error(argPos(i), "unknown interpolation " + quoteToken(arg(i)) +
+                                 " (expected linear, ease, ease_in, ease_out, step or spline)");
         }
-        if (t) trackOf(*t).interpolation = mode;  // the last /interp of a target wins
+        return mode;
     }
 
     void parseKey() {
@@ -683,27 +744,54 @@ class Parser {
                                     std::to_string(n));
             return;
         }
-        if (n != 2 && n != 8) {
-            error(commandPos(), "'/key' takes 0 or 6 numbers after the target, got " + std::to_string(n - 2));
+        // A last argument that is a word, not a number, is the key's mode (SPEC 9.3).
+        const bool hasMode = n > 2 && isNameStart(arg(n - 1).front());
+        const int numbers = n - 2 - (hasMode ? 1 : 0);
+        if (numbers != 0 && numbers != 6) {
+            error(commandPos(), "'/key' takes 0 or 6 numbers after the target, got " + std::to_string(numbers));
             return;
         }
         bool ok = true;
         const int frame = whole(0, "key frame", 0, limits_.maxKeyFrame, ok);
-        const std::optional<Target> t = target(1);
+        const std::optional<Target> t = target(1, CameraTarget::Accepted);
         Pose p;
-        if (n == 8) p = pose(2, true, ok);
+        if (numbers == 6) p = pose(2, true, ok);
+        std::optional<Interpolation> mode;
+        if (hasMode) {
+            mode = interpolationMode(n - 1);
+            ok = ok && mode.has_value();
+        }
         if (!t || !ok) return;
+        if (t->camera) {
+            // `/camera` may come later: its pose is filled in at the end.
+            cameraKeys_.push_back({frame, numbers == 6 ? std::optional<Pose>(p) : std::nullopt, mode, argPos(0)});
+            return;
+        }
         // Without numbers: an object's pose as created, a part's zero offset and rotation.
-        if (n == 2 && t->part < 0) p = scene_.objects[t->object].rest;
-        addKey(*t, frame, p, argPos(0));
+        if (numbers == 0 && t->part < 0) p = scene_.objects[t->object].rest;
+        addKey(*t, {frame, p, mode}, argPos(0));
     }
 
-    void addKey(Target t, int frame, const Pose& pose, Pos origin) {
+    /// The camera's keys, in file order, now that `/camera`'s pose is known.
+    void addCameraKeys() {
+        for (const CameraKey& k : cameraKeys_) {
+            addKey(Target{0, -1, true}, {k.frame, k.pose.value_or(scene_.camera.pose), k.mode}, k.origin);
+        }
+        cameraKeys_ = {};
+    }
+
+    int& trackBookIndex(Target t) {
+        if (t.camera) return cameraTrackBook_;
+        return books_[t.object].tracks[static_cast<std::size_t>(t.part + 1)];
+    }
+
+    void addKey(Target t, const Key& key, Pos origin) {
+        const int frame = key.frame;
         Track& track = trackOf(t);
-        int& bookIndex = books_[t.object].tracks[static_cast<std::size_t>(t.part + 1)];
+        int& bookIndex = trackBookIndex(t);
         if (bookIndex < 0) {
             bookIndex = static_cast<int>(trackBooks_.size());
-            trackBooks_.push_back({t.object, t.part, {}, true});
+            trackBooks_.push_back({t, {}, true});
         }
         TrackBook& book = trackBooks_[static_cast<std::size_t>(bookIndex)];
         // Keys in increasing order (the usual case) stay sorted as they come; a
@@ -713,14 +801,118 @@ class Parser {
             Key& last = track.keys.back();
             if (frame == last.frame) {
                 warnReplaced(t, frame, origin, book.origins.back());
-                last.pose = pose;
+                last = key;
                 book.origins.back() = origin;
                 return;
             }
             if (frame < last.frame) book.sorted = false;
         }
-        track.keys.push_back({frame, pose});
+        track.keys.push_back(key);
         book.origins.push_back(origin);
+    }
+
+    void parseLookAt() {
+        if (!firstOnly(lookAtSeen_) || !expectArgs({1, 3})) return;
+        LookAt look;
+        if (argCount() == 3) {
+            bool ok = true;
+            look.point = vec3(0, ok);
+            if (!ok) return;
+        } else {
+            const std::optional<Target> t = target(0);
+            if (!t) return;
+            look.target = FrameRef{static_cast<std::uint32_t>(t->object), t->part};
+        }
+        scene_.camera.lookAt = look;
+    }
+
+    void parseAttach() {
+        if (!expectArgs({2})) return;
+        const std::string_view name = arg(0);
+        const bool camera = name == kCameraName;
+        std::optional<std::size_t> child;
+        if (!camera) {
+            if (name.find('.') != std::string_view::npos) {
+                error(argPos(0), "only a whole object or the camera can be attached, got " + quoteToken(name));
+            } else {
+                child = existing(name, name, argPos(0));
+            }
+        }
+        const std::optional<Target> parent = target(1);
+        if ((!camera && !child) || !parent) return;
+        std::optional<Pos>& seen = camera ? cameraAttached_ : books_[*child].attached;
+        if (seen) {
+            error(argPos(0), quoteToken(name) + " is already attached (at " + posText(*seen) +
+                                 "); one '/attach' per name");
+            return;
+        }
+        const FrameRef ref{static_cast<std::uint32_t>(parent->object), parent->part};
+        if (camera) {  // nothing rides on the camera, so it closes no cycle
+            scene_.camera.attachedTo = ref;
+            seen = commandPos();
+            return;
+        }
+        const auto c = static_cast<std::uint32_t>(*child), p = ref.object;
+        growSets();
+        if (setTop_[findSet(p)] == c) {
+            if (p == c) {
+                error(commandPos(), quoteToken(name) + " cannot be attached to " +
+                                        (ref.part < 0 ? "itself" : "its own part"));
+            } else {
+                error(commandPos(), "attaching " + quoteToken(name) + " to " + quoteToken(arg(1)) +
+                                        " makes a cycle: " + quoteToken(scene_.objects[p].name) +
+                                        " already rides on " + quoteToken(name));
+            }
+            return;
+        }
+        joinSets(c, p);
+        scene_.objects[c].attachedTo = ref;
+        seen = commandPos();
+    }
+
+    // Attachment trees (see setParent_)
+    void growSets() {
+        while (setParent_.size() < scene_.objects.size()) {
+            const auto i = static_cast<std::uint32_t>(setParent_.size());
+            setParent_.push_back(i);
+            setSize_.push_back(1);
+            setTop_.push_back(i);
+        }
+    }
+
+    std::uint32_t findSet(std::uint32_t x) {
+        while (setParent_[x] != x) {
+            setParent_[x] = setParent_[setParent_[x]];
+            x = setParent_[x];
+        }
+        return x;
+    }
+
+    /// `child` (the top of its tree) now rides on `parent`.
+    void joinSets(std::uint32_t child, std::uint32_t parent) {
+        std::uint32_t a = findSet(child), b = findSet(parent);
+        const std::uint32_t top = setTop_[b];
+        if (setSize_[a] > setSize_[b]) std::swap(a, b);
+        setParent_[a] = b;
+        setSize_[b] += setSize_[a];
+        setTop_[b] = top;
+    }
+
+    /// SceneDesc::attachOrder: each attached object after the attached object it rides on.
+    void orderAttachments() {
+        if (errors_ > 0 || setParent_.empty()) return;
+        const std::vector<SceneObject>& objects = scene_.objects;
+        std::vector<bool> placed(objects.size(), false);
+        std::vector<std::uint32_t> chain;
+        for (std::uint32_t i = 0; i < objects.size(); ++i) {
+            // Climb while the objects are attached and not yet placed, then place them top first.
+            for (std::uint32_t x = i; objects[x].attachedTo && !placed[x]; x = objects[x].attachedTo->object) {
+                placed[x] = true;
+                chain.push_back(x);
+            }
+            scene_.attachOrder.insert(scene_.attachOrder.end(), chain.rbegin(), chain.rend());
+            chain.clear();
+        }
     }
 
     void warnReplaced(Target t, int frame, Pos now, Pos before) {
@@ -731,7 +923,7 @@ class Parser {
     void sortUnsortedTracks() {
         for (TrackBook& book : trackBooks_) {
             if (book.sorted) continue;
-            const Target t{book.object, book.part};
+            const Target t = book.target;
             std::vector<Key>& keys = trackOf(t).keys;
             std::vector<std::uint32_t> order(keys.size());
             std::iota(order.begin(), order.end(), 0u);
@@ -769,8 +961,15 @@ class Parser {
     std::unordered_map<std::string, std::size_t, StringHash, std::equal_to<>> names_;
     std::vector<ObjectBook> books_;  ///< parallel to scene_.objects
     std::vector<TrackBook> trackBooks_;
-    std::optional<Pos> cameraSeen_, backgroundSeen_, fpsSeen_;
+    std::optional<Pos> cameraSeen_, backgroundSeen_, fpsSeen_, lookAtSeen_, cameraAttached_;
     std::size_t keyLines_ = 0;
+    std::vector<CameraKey> cameraKeys_;
+    int cameraTrackBook_ = -1;
+    /// Attachment trees as disjoint sets (union by size, path halving), each
+    /// set knowing the object at its top: an `/attach` closes a cycle exactly
+    /// when the new parent's top is the object being attached. Near O(1) per
+    /// `/attach`, so a chain of a million attachments parses fast.
+    std::vector<std::uint32_t> setParent_, setSize_, setTop_;
 };
 
 ParseResult readError(const std::string& displayName, std::string message) {

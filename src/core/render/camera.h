@@ -1,5 +1,6 @@
 #pragma once
 /// The pinhole camera of SPEC 2.
+#include "core/anim/camera_motion.h"
 #include "core/geometry/primitive.h"
 #include "core/scene/scene_desc.h"
 
@@ -56,5 +57,13 @@ struct Camera {
     float inverseHeight() const { return 1.0f / float(height); }
     float aspect() const { return float(height) / float(width); }
 };
+
+/// The scene's camera at time `t` (frames): keys, attachment and `/look_at`
+/// applied (SPEC 9.1). Every front end renders and exports through this.
+inline Camera cameraAt(const SceneDesc& scene, double t) {
+    const Transform worldFromCamera = cameraFrameAt(scene, t);
+    return {scene.camera.width, scene.camera.height, float(scene.camera.distance), worldFromCamera.translation,
+            worldFromCamera.linear};
+}
 
 }  // namespace f2

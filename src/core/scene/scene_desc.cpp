@@ -6,6 +6,18 @@
 
 namespace f2 {
 
+std::string_view interpolationName(Interpolation mode) {
+    switch (mode) {
+        case Interpolation::Linear: return "linear";
+        case Interpolation::Ease: return "ease";
+        case Interpolation::Spline: return "spline";
+        case Interpolation::EaseIn: return "ease_in";
+        case Interpolation::EaseOut: return "ease_out";
+        case Interpolation::Step: return "step";
+    }
+    return "linear";
+}
+
 int SceneDesc::lastFrame() const {
     int last = 0;
     auto scan = [&](const Track& t) {
@@ -15,6 +27,7 @@ int SceneDesc::lastFrame() const {
         scan(o.track);
         for (const Track& t : o.partTracks) scan(t);
     }
+    scan(camera.track);
     return last;
 }
 

@@ -3,7 +3,9 @@
 /// Produced by the parser, consumed by the animator; plain data, no behaviour.
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/math/vec3.h"
@@ -33,17 +35,28 @@ struct Appearance {
     Material material;
 };
 
-enum class Interpolation : std::uint8_t { Linear, Ease, Spline };
+/// How a target moves from one key to the next (SPEC 6 and 9.3).
+enum class Interpolation : std::uint8_t { Linear, Ease, Spline, EaseIn, EaseOut, Step };
+
+/// The mode's word in the scene language ("linear", "ease_in", ...).
+std::string_view interpolationName(Interpolation mode);
 
 struct Key {
     int frame = 0;
     Pose pose;
+    /// The key's own mode word (SPEC 9.3), if it has one: how the target moves
+    /// from this key to the next. Without one the track's `interpolation` holds.
+    std::optional<Interpolation> mode = std::nullopt;
 };
 
-/// Key frames of one target (an object or one part), sorted by frame, unique frames.
+/// Key frames of one target (an object, one part or the camera), sorted by
+/// frame, unique frames.
 struct Track {
     std::vector<Key> keys;
-    Interpolation interpolation = Interpolation::Linear;
+    Interpolation interpolation = Interpolation::Linear;  ///< `/interp`, for keys without a mode
+
+    /// The mode of the segment that starts at key i.
+    Interpolation modeAfter(std::size_t i) const { return keys[i].mode.value_or(interpolation); }
 };
 
 enum class ObjectKind : std::uint8_t { Sphere, Cylinder, Box, Robot, Human };
@@ -54,6 +67,14 @@ inline bool isModel(ObjectKind k) { return k == ObjectKind::Robot || k == Object
 enum class PartId : std::uint8_t { Body, Head, LHand, RHand };
 inline constexpr int kPartCount = 4;
 inline constexpr std::array<const char*, kPartCount> kPartNames = {"body", "head", "lhand", "rhand"};
+
+/// A frame something can ride on or look at (SPEC 9.1, 9.2): an object's root
+/// frame, or the frame of one of its parts.
+struct FrameRef {
+    std::uint32_t object = 0;  ///< index in SceneDesc::objects
+    int part = -1;             ///< PartId index, or -1 for the object itself
+    friend bool operator==(const FrameRef&, const FrameRef&) = default;
+};
 
 /// One named object of the scene: a primitive, a robot or a human.
 struct SceneObject {
@@ -68,12 +89,24 @@ struct SceneObject {
     std::array<Appearance, kPartCount> appearance{};
     /// Models only: per-part key frames (offset and rotation about the pivot).
     std::array<Track, kPartCount> partTracks{};
+    /// `/attach` (SPEC 9.2): the frame the object rides on; its pose is then
+    /// read in that frame.
+    std::optional<FrameRef> attachedTo;
+};
+
+/// `/look_at` (SPEC 9.1): a fixed point, an object's origin or a part's shape centre.
+struct LookAt {
+    std::optional<FrameRef> target;  ///< none: the fixed `point`
+    Vec3 point;
 };
 
 struct CameraDesc {
     int width = 800, height = 600;
     double distance = 0.5;  ///< eye-to-screen distance in screen widths (SPEC 2)
-    Pose pose;
+    Pose pose;              ///< `/camera`'s eye and rotation: the rest pose of `track`
+    Track track;            ///< `/key t camera ...` (SPEC 9.1)
+    std::optional<FrameRef> attachedTo;
+    std::optional<LookAt> lookAt;
 };
 
 struct DirectionalLight {
@@ -88,6 +121,9 @@ struct SceneDesc {
     Color8 background{0, 0, 0};
     int fps = 24;
     std::vector<SceneObject> objects;
+    /// Indices of the attached objects, each after the object it rides on
+    /// when that one is attached too: the order in which to evaluate them.
+    std::vector<std::uint32_t> attachOrder;
 
     /// Last frame of the animation: the largest key frame of the scene (0 if none).
     int lastFrame() const;
