@@ -52,7 +52,7 @@ TEST(ParserCamera, RestKeyWithoutCameraCommandIsTheDefaultPose) {
 }
 
 TEST(ParserCamera, RepeatedCameraKeyWarnsAtItsPlace) {
-    const ParseResult r = parseScene("/key 2 camera 1 1 1 0 0 0\n/camera 80 60 1\n/key 2 camera\n", kFile);
+    const ParseResult r = parseScene("/key 2 camera 1 1 1 0 0 0\n/camera 80 60 1\n/key 2 camera\n/sphere s 1 0 0 0\n/amb_light 1\n", kFile);
     ASSERT_TRUE(r.ok());
     ASSERT_EQ(r.diagnostics.size(), 1u);
     EXPECT_EQ(r.diagnostics[0].format(),
