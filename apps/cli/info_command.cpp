@@ -20,11 +20,52 @@ const char* kindName(ObjectKind kind) {
     return "?";
 }
 
+/// Keys with a mode word of their own shown by frame; the rest are counted.
+constexpr std::size_t kShownKeyModes = 4;
+
 void printTrack(const std::string& target, const Track& track) {
     if (track.keys.empty()) return;
-    static const char* kInterp[] = {"linear", "ease", "spline"};
     std::cout << "    " << target << ": " << track.keys.size() << " keys, frames " << track.keys.front().frame
-              << ".." << track.keys.back().frame << ", " << kInterp[int(track.interpolation)] << '\n';
+              << ".." << track.keys.back().frame << ", " << interpolationName(track.interpolation);
+    std::size_t withMode = 0;
+    for (const Key& k : track.keys) {
+        if (!k.mode) continue;
+        if (withMode < kShownKeyModes)
+            std::cout << (withMode == 0 ? "; from key " : ", ") << k.frame << ' ' << interpolationName(*k.mode);
+        ++withMode;
+    }
+    if (withMode > kShownKeyModes) std::cout << " (and " << withMode - kShownKeyModes << " more keys with a mode)";
+    std::cout << '\n';
+}
+
+std::string refName(const SceneDesc& s, FrameRef ref) {
+    std::string name = s.objects[ref.object].name;
+    if (ref.part >= 0) name += std::string(".") + kPartNames[std::size_t(ref.part)];
+    return name;
+}
+
+void printVec(const Vec3& v) { std::cout << '(' << v.x << ", " << v.y << ", " << v.z << ')'; }
+
+/// The camera's pose, keys, attachment and /look_at (SPEC 9.1, 9.2).
+void printCamera(const SceneDesc& s) {
+    const CameraDesc& c = s.camera;
+    std::cout << "  camera:     eye ";
+    printVec(c.pose.position);
+    std::cout << ", rotation ";
+    printVec(c.pose.rotation);
+    std::cout << '\n';
+    printTrack("camera", c.track);
+    if (c.attachedTo) std::cout << "    rides on " << refName(s, *c.attachedTo) << '\n';
+    if (c.lookAt) {
+        std::cout << "    looks at ";
+        if (!c.lookAt->target) {
+            printVec(c.lookAt->point);
+        } else {
+            std::cout << refName(s, *c.lookAt->target)
+                      << (c.lookAt->target->part < 0 ? " (its origin)" : " (the centre of its shape)");
+        }
+        std::cout << '\n';
+    }
 }
 
 int runInfo(const std::string& path) {
@@ -38,8 +79,10 @@ int runInfo(const std::string& path) {
               << "  frames:     0.." << last << " at " << s.fps << " fps (" << double(last) / s.fps << " s)\n"
               << "  lights:     ambient " << s.ambient << ", " << s.lights.size() << " directional\n"
               << "  objects:    " << s.objects.size() << " (" << s.primitiveCount() << " primitives)\n";
+    printCamera(s);
     for (const SceneObject& o : s.objects) {
         std::cout << "  " << kindName(o.kind) << ' ' << o.name << '\n';
+        if (o.attachedTo) std::cout << "    rides on " << refName(s, *o.attachedTo) << '\n';
         printTrack(o.name, o.track);
         if (isModel(o.kind))
             for (int p = 0; p < kPartCount; ++p)
@@ -51,7 +94,7 @@ int runInfo(const std::string& path) {
 
 Command addInfoCommand(CLI::App& app) {
     auto path = std::make_shared<std::string>();
-    CLI::App* sub = app.add_subcommand("info", "Print a scene's objects, parts, key frames, frame range and fps");
+    CLI::App* sub = app.add_subcommand("info", "Print a scene's camera, objects, parts, key frames, attachments, frame range and fps");
     sub->add_option("scene", *path, "Scene file; '-' reads standard input; none = the default scene");
     return {sub, [path] { return runInfo(*path); }};
 }
