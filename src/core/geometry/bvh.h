@@ -40,7 +40,8 @@ public:
     /// Expected cost of a ray under the SAH model, relative to the root's area.
     float sahCost() const;
 
-    /// Closest hit within (tMin, tMax).
+    /// Closest hit within (tMin, tMax); of hits at the same distance, the
+    /// primitive first in the frame (lowest index), whatever the tree's shape.
     bool intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit) const;
     /// Any hit within (tMin, tMax) on a primitive other than `skip`: shadow rays
     /// stop at the first occluder. A convex primitive cannot shadow its own lit

@@ -68,8 +68,10 @@ void intersectPacket(const Bvh& bvh, const EyeRays& rays, Mask active, Float tMi
                      std::span<const std::uint32_t> roots) {
     const std::span<const Bvh::Node> nodes = bvh.nodes();
     const std::span<const Primitive> ordered = bvh.orderedPrimitives();
+    const std::span<const std::uint32_t> original = bvh.originalIndices();
     if (nodes.empty() || roots.empty() || simd::none(active)) return;
     VisitOrder order(rays, active);
+    Float bound = nextUp(hit.t);  // primitives are tested up to and including the lanes' nearest hit
     // The nearer child is visited next without a trip through the stack.
     std::uint32_t stack[kStackSize];
     int top = 0;
@@ -86,8 +88,19 @@ void intersectPacket(const Bvh& bvh, const EyeRays& rays, Mask active, Float tMi
                 continue;
             }
             for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
-                Mask hitLanes = intersectPrimitiveP(ordered[i], rays, lanes, tMin, hit.t, hit.t, hit.face);
-                hit.primitive = simd::select(hitLanes, Int(std::int32_t(i)), hit.primitive);
+                // As in Bvh::intersect(const Ray&): a hit at exactly a lane's
+                // distance takes it when its frame index is lower.
+                Float t = hit.t;
+                Int face = hit.face;
+                Mask found = intersectPrimitiveP(ordered[i], rays, lanes, tMin, bound, t, face);
+                if (simd::none(found)) continue;
+                Int frameIndex(std::int32_t(original[i]));
+                Mask take = found & ((t < hit.t) | (frameIndex < hit.frameIndex));
+                hit.t = simd::select(take, t, hit.t);
+                hit.face = simd::select(take, face, hit.face);
+                hit.primitive = simd::select(take, Int(std::int32_t(i)), hit.primitive);
+                hit.frameIndex = simd::select(take, frameIndex, hit.frameIndex);
+                bound = nextUp(hit.t);
             }
         }
         if (top == 0) return;

@@ -10,7 +10,8 @@
 namespace f2 {
 
 /// Nearest hits of the `active` lanes within (tMin, hit.t): narrows hit.t (the
-/// lanes' tMax on entry) and sets primitive and face. Primitives are named by
+/// lanes' tMax on entry) and sets primitive, frameIndex and face. Of hits at the
+/// same distance the lowest frame index wins, as in Bvh::intersect(const Ray&). Primitives are named by
 /// their leaf-order index (Bvh::orderedPrimitives()), whose data the traversal
 /// has just brought into cache; Bvh::originalIndices() maps back.
 void intersectPacket(const Bvh& bvh, const EyeRays& rays, Mask active, Float tMin, PacketHit& hit);

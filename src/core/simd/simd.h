@@ -54,6 +54,7 @@ inline Mask operator>(Float a, Float b) { return {_mm512_cmp_ps_mask(a.v, b.v, _
 inline Mask operator>=(Float a, Float b) { return {_mm512_cmp_ps_mask(a.v, b.v, _CMP_GE_OQ)}; }
 inline Mask operator==(Float a, Float b) { return {_mm512_cmp_ps_mask(a.v, b.v, _CMP_EQ_OQ)}; }
 inline Mask operator==(Int a, Int b) { return {_mm512_cmpeq_epi32_mask(a.v, b.v)}; }
+inline Mask operator<(Int a, Int b) { return {_mm512_cmplt_epi32_mask(a.v, b.v)}; }
 
 inline Mask operator&(Mask a, Mask b) { return {__mmask16(a.m & b.m)}; }
 inline Mask operator|(Mask a, Mask b) { return {__mmask16(a.m | b.m)}; }
@@ -121,6 +122,7 @@ inline Mask operator>(Float a, Float b) { return {_mm256_cmp_ps(a.v, b.v, _CMP_G
 inline Mask operator>=(Float a, Float b) { return {_mm256_cmp_ps(a.v, b.v, _CMP_GE_OQ)}; }
 inline Mask operator==(Float a, Float b) { return {_mm256_cmp_ps(a.v, b.v, _CMP_EQ_OQ)}; }
 inline Mask operator==(Int a, Int b) { return {_mm256_castsi256_ps(_mm256_cmpeq_epi32(a.v, b.v))}; }
+inline Mask operator<(Int a, Int b) { return {_mm256_castsi256_ps(_mm256_cmpgt_epi32(b.v, a.v))}; }
 
 inline Mask operator&(Mask a, Mask b) { return {_mm256_and_ps(a.m, b.m)}; }
 inline Mask operator|(Mask a, Mask b) { return {_mm256_or_ps(a.m, b.m)}; }
@@ -187,6 +189,7 @@ inline Mask operator>(Float a, Float b) { return {a.v > b.v}; }
 inline Mask operator>=(Float a, Float b) { return {a.v >= b.v}; }
 inline Mask operator==(Float a, Float b) { return {a.v == b.v}; }
 inline Mask operator==(Int a, Int b) { return {a.v == b.v}; }
+inline Mask operator<(Int a, Int b) { return {a.v < b.v}; }
 
 inline Mask operator&(Mask a, Mask b) { return {a.m && b.m}; }
 inline Mask operator|(Mask a, Mask b) { return {a.m || b.m}; }
