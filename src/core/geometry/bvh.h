@@ -1,6 +1,8 @@
 #pragma once
-/// Bounding volume hierarchy over one frame's primitives (binned SAH), rebuilt
-/// every frame because everything may move. Buffers are reused across builds.
+/// Bounding volume hierarchy over one frame's primitives (binned SAH). The
+/// renderer keeps it from frame to frame: update() refits it to the moved
+/// primitives and rebuilds it only when its quality has drifted too far.
+/// Buffers are reused across builds.
 #include <cstdint>
 #include <span>
 #include <vector>

@@ -29,7 +29,7 @@ struct ModelShape {
 struct ModelDef {
     /// Parents come before children, so one pass computes every part frame.
     std::array<ModelPart, kPartCount> parts;
-    std::span<const ModelShape> shapes;  ///< in export order (peer README)
+    std::span<const ModelShape> shapes;  ///< in the order `f2 export --prims` writes them
 };
 
 const ModelDef& robotModel();

@@ -3,6 +3,8 @@
 /// at build time — 16 lanes with AVX-512, 8 with AVX2, 1 (plain C++) otherwise.
 /// Every operation is the lane-wise IEEE operation (no FMA, no approximate
 /// reciprocal), so a packet computes what the same code computes on floats.
+/// Private to the core: the lane count depends on -march, so only targets
+/// built with f2_opt may include this (docs/design.md, "Layers").
 #include <cstdint>
 
 #if defined(__AVX512F__) || defined(__AVX2__)
