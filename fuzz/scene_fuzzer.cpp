@@ -68,7 +68,7 @@ void checkFinite(const f2::Vec3& c, double t, float px, float py) {
 void renderAt(const f2::SceneDesc& scene, double t) {
     static f2::Renderer renderer(1);
     // Small image whatever the scene asks for; the field of view is kept.
-    const f2::Camera camera = f2::Camera::fromDesc(scene.camera).resized(8, 6);
+    const f2::Camera camera = f2::cameraAt(scene, t).resized(8, 6);
     f2::Image image;
     renderer.render(scene, t, camera, image);
     if (image.width != 8 || image.height != 6 || image.pixels.size() != 48) fail("wrong image size", "");
@@ -89,6 +89,7 @@ double largestCoordinate(const f2::SceneDesc& scene) {
         m = std::max({m, double(std::fabs(v.x)), double(std::fabs(v.y)), double(std::fabs(v.z))});
     };
     grow(scene.camera.pose.position);
+    for (const f2::Key& k : scene.camera.track.keys) grow(k.pose.position);
     for (const f2::SceneObject& o : scene.objects) {
         grow(o.size);
         grow(o.rest.position);

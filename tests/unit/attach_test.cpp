@@ -23,7 +23,7 @@ std::size_t indexOf(const SceneDesc& s, std::string_view name) {
 /// World centre of primitive object `name` in the renderer's frame and in the exporters' list.
 void expectCentre(const SceneDesc& s, std::string_view name, double t, Vec3 want) {
     SCOPED_TRACE(std::string(name));
-    FrameScene frame;
+    EvaluatedFrame frame;
     evaluateFrame(s, t, frame);
     const std::size_t i = indexOf(s, name);
     EXPECT_VEC_NEAR(frame.primitives[frame.firstPrimitive[i]].centre, want, kTol);
@@ -85,7 +85,7 @@ TEST(Attach, AModelOnAnObjectCarriesItsParts) {
     // The head's pivot frame: root + (0, −105, 0) + (0, 140, 0).
     EXPECT_VEC_NEAR(worldFromRef(s, {std::uint32_t(h), int(PartId::Head)}, 10).translation,
                     (Vec3{320, 145, 0}), kTol);
-    FrameScene frame;
+    EvaluatedFrame frame;
     evaluateFrame(s, 10, frame);
     // Human body cylinder centre: root + (0, −105 + 70, 0).
     EXPECT_VEC_NEAR(frame.primitives[frame.firstPrimitive[h]].centre, (Vec3{320, 75, 0}), kTol);
@@ -104,7 +104,7 @@ TEST(Attach, LongChainParsesAndEvaluatesInLinearTime) {
         text += "/attach s" + std::to_string(i) + " s" + std::to_string(i - 1) + "\n";
     const SceneDesc s = sceneFromText(text);
     ASSERT_EQ(s.attachOrder.size(), std::size_t(kCount - 1));
-    FrameScene frame;
+    EvaluatedFrame frame;
     evaluateFrame(s, 0, frame);
     EXPECT_VEC_NEAR(frame.primitives.back().centre, (Vec3{float(kCount), 0, 0}), kTol);
 }

@@ -41,6 +41,9 @@ Transform cameraFrameAt(const SceneDesc& scene, double t) {
     const Vec3 eye = world.translation;
     const double dx = double(point.x) - eye.x, dy = double(point.y) - eye.y, dz = double(point.z) - eye.z;
     if (dx == 0 && dy == 0 && dz == 0) return world;  // the keyed rotation
+    // Coordinates beyond the float range (an attachment chain can add up past
+    // it) give no direction: keep the rotation rather than make a NaN one.
+    if (!std::isfinite(dx) || !std::isfinite(dy) || !std::isfinite(dz)) return world;
     // Straight up or down: an attached camera keeps the world rotation it would
     // have without /look_at; a free one keeps its keyed ry (SPEC 9.1, 9.2).
     if (dx == 0 && dz == 0 && camera.attachedTo) return world;

@@ -106,7 +106,7 @@ constexpr std::size_t kPrefetchAhead = 8;
 constexpr std::size_t kObjectsPerChunk = 256;
 }  // namespace
 
-void evaluateFrame(const SceneDesc& scene, double t, FrameScene& frame, ThreadPool* pool) {
+void evaluateFrame(const SceneDesc& scene, double t, EvaluatedFrame& frame, ThreadPool* pool) {
     frame.lights.clear();
     frame.ambient = scene.ambient;
     frame.background = toUnitColor(scene.background);

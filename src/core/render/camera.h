@@ -1,5 +1,7 @@
 #pragma once
 /// The pinhole camera of SPEC 2.
+#include <optional>
+
 #include "core/anim/camera_motion.h"
 #include "core/geometry/primitive.h"
 #include "core/scene/scene_desc.h"
@@ -65,5 +67,22 @@ inline Camera cameraAt(const SceneDesc& scene, double t) {
     return {scene.camera.width, scene.camera.height, float(scene.camera.distance), worldFromCamera.translation,
             worldFromCamera.linear};
 }
+
+/// What the frames of an animation are seen through: the scene's own camera
+/// at each frame's time (cameraAt) at an image size, or one fixed camera (the
+/// viewer's look-around).
+struct FrameView {
+    int width = 800, height = 600;
+    std::optional<Camera> fixed;
+
+    /// The scene's camera, frame by frame, at width x height.
+    static FrameView sceneCamera(int w, int h) { return {w, h, std::nullopt}; }
+    /// `camera` for every frame, at its own size.
+    static FrameView fixedCamera(const Camera& camera) { return {camera.width, camera.height, camera}; }
+
+    Camera at(const SceneDesc& scene, double t) const {
+        return fixed ? *fixed : cameraAt(scene, t).resized(width, height);
+    }
+};
 
 }  // namespace f2
