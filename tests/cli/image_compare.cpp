@@ -4,6 +4,7 @@
 //   image_compare aa PLAIN.png AA.png           AA differs from PLAIN somewhere,
 //       and only on edges (a step to a neighbour in either image)
 //   image_compare diff A.png B.png              statistics only (exit 0 if same size)
+//   image_compare same A.png B.png              every pixel equal (else statistics, exit 1)
 //   image_compare colours A.png MIN             A has at least MIN distinct colours
 //       (a rendered scene, not a blank or flat image)
 #include <algorithm>
@@ -79,7 +80,8 @@ int antialias(const Image& plain, const Image& aa) {
     return 0;
 }
 
-int diff(const Image& a, const Image& b) {
+/// Prints how A and B differ; returns the number of differing pixels.
+long diff(const Image& a, const Image& b) {
     long differing = 0, over8 = 0, sum = 0;
     int maximum = 0;
     for (std::size_t i = 0; i < a.pixels.size(); ++i) {
@@ -91,7 +93,7 @@ int diff(const Image& a, const Image& b) {
     }
     std::printf("%ld of %zu pixels differ, %ld by more than 8, max %d, mean %.4f\n", differing,
                 a.pixels.size(), over8, maximum, double(sum) / double(a.pixels.size()));
-    return 0;
+    return differing;
 }
 int colours(const Image& a, long minimum) {
     std::set<std::uint32_t> seen;
@@ -103,10 +105,11 @@ int colours(const Image& a, long minimum) {
 
 int main(int argc, char** argv) {
     std::string mode = argc > 1 ? argv[1] : "";
-    bool known = (mode == "iou" && argc == 8) || ((mode == "aa" || mode == "diff") && argc == 4) ||
+    bool known = (mode == "iou" && argc == 8) ||
+                 ((mode == "aa" || mode == "diff" || mode == "same") && argc == 4) ||
                  (mode == "colours" && argc == 4);
     if (!known) {
-        std::fprintf(stderr, "usage: image_compare iou A B R G B MIN | aa PLAIN AA | diff A B | colours A MIN\n");
+        std::fprintf(stderr, "usage: image_compare iou A B R G B MIN | aa PLAIN AA | diff A B | same A B | colours A MIN\n");
         return 2;
     }
     if (mode == "colours") {
@@ -124,5 +127,8 @@ int main(int argc, char** argv) {
                 std::uint8_t(std::atoi(argv[6]))};
         return iou(a, b, bg, std::atof(argv[7]));
     }
-    return mode == "aa" ? antialias(a, b) : diff(a, b);
+    if (mode == "same") return diff(a, b) == 0 ? 0 : 1;
+    if (mode == "aa") return antialias(a, b);
+    diff(a, b);
+    return 0;
 }
