@@ -17,40 +17,21 @@ constexpr float kInf = std::numeric_limits<float>::infinity();
 constexpr int kMaxTile = 64;
 static_assert(sizeof(Rgb8) == 3, "image rows are copied as bytes");
 
-/// Embree's packet entry points for W lanes, and the pixel block they cover.
+/// Embree's packet entry points for W lanes (4, 8 or 16), and the block of
+/// pixels a packet covers: 2x2, 4x2 or 4x4.
 template <int W>
-struct Packet;
+struct Packet {
+    static constexpr int kColumns = W == 4 ? 2 : 4, kRows = W / kColumns;
 
-template <>
-struct Packet<16> {
-    static constexpr int kColumns = 4, kRows = 4;
-    static void intersect(const int* valid, RTCScene s, RTCIntersectContext* c, RTCRayHitNt<16>& r) {
-        rtcIntersect16(valid, s, c, reinterpret_cast<RTCRayHit16*>(&r));
+    static void intersect(const int* valid, RTCScene s, RTCIntersectContext* c, RTCRayHitNt<W>& r) {
+        if constexpr (W == 16) rtcIntersect16(valid, s, c, reinterpret_cast<RTCRayHit16*>(&r));
+        else if constexpr (W == 8) rtcIntersect8(valid, s, c, reinterpret_cast<RTCRayHit8*>(&r));
+        else rtcIntersect4(valid, s, c, reinterpret_cast<RTCRayHit4*>(&r));
     }
-    static void occluded(const int* valid, RTCScene s, RTCIntersectContext* c, RTCRayNt<16>& r) {
-        rtcOccluded16(valid, s, c, reinterpret_cast<RTCRay16*>(&r));
-    }
-};
-
-template <>
-struct Packet<8> {
-    static constexpr int kColumns = 4, kRows = 2;
-    static void intersect(const int* valid, RTCScene s, RTCIntersectContext* c, RTCRayHitNt<8>& r) {
-        rtcIntersect8(valid, s, c, reinterpret_cast<RTCRayHit8*>(&r));
-    }
-    static void occluded(const int* valid, RTCScene s, RTCIntersectContext* c, RTCRayNt<8>& r) {
-        rtcOccluded8(valid, s, c, reinterpret_cast<RTCRay8*>(&r));
-    }
-};
-
-template <>
-struct Packet<4> {
-    static constexpr int kColumns = 2, kRows = 2;
-    static void intersect(const int* valid, RTCScene s, RTCIntersectContext* c, RTCRayHitNt<4>& r) {
-        rtcIntersect4(valid, s, c, reinterpret_cast<RTCRayHit4*>(&r));
-    }
-    static void occluded(const int* valid, RTCScene s, RTCIntersectContext* c, RTCRayNt<4>& r) {
-        rtcOccluded4(valid, s, c, reinterpret_cast<RTCRay4*>(&r));
+    static void occluded(const int* valid, RTCScene s, RTCIntersectContext* c, RTCRayNt<W>& r) {
+        if constexpr (W == 16) rtcOccluded16(valid, s, c, reinterpret_cast<RTCRay16*>(&r));
+        else if constexpr (W == 8) rtcOccluded8(valid, s, c, reinterpret_cast<RTCRay8*>(&r));
+        else rtcOccluded4(valid, s, c, reinterpret_cast<RTCRay4*>(&r));
     }
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <type_traits>
 
 namespace f2::peer {
 
@@ -91,6 +92,14 @@ inline bool nearestCrossing(const Span& span, float tMin, float& t, int& face) {
 enum : unsigned { kOrgX = 0, kOrgY, kOrgZ, kTNear, kDirX, kDirY, kDirZ, kTime, kTFar, kMask, kId, kFlags };
 enum : unsigned { kNgX = 12, kNgY, kNgZ, kU, kV, kPrimId, kGeomId, kInstId };
 
+/// nearestCrossing() of lane `i` of an SOA packet of N rays.
+template <unsigned N, ShapeKind K>
+inline bool laneCrossing(const Shape& s, const float* rays, unsigned i, float& t, int& face) {
+    const Span span = shapeSpan<K>(s, rays[kOrgX * N + i], rays[kOrgY * N + i], rays[kOrgZ * N + i],
+                                   rays[kDirX * N + i], rays[kDirY * N + i], rays[kDirZ * N + i]);
+    return nearestCrossing(span, rays[kTNear * N + i], t, face);
+}
+
 /// Closest hit of one shape for the valid lanes. At an equal distance the
 /// primitive earlier in scene order wins, so the image does not depend on the
 /// order in which the BVH offers primitives. A lane starts with primID
@@ -105,11 +114,9 @@ void intersectLanes(const int* valid, const Shape& s, unsigned primId, unsigned 
     unsigned* insts = reinterpret_cast<unsigned*>(packet + kInstId * N);
 #pragma omp simd
     for (unsigned i = 0; i < N; ++i) {
-        const Span span = shapeSpan<K>(s, packet[kOrgX * N + i], packet[kOrgY * N + i], packet[kOrgZ * N + i],
-                                       packet[kDirX * N + i], packet[kDirY * N + i], packet[kDirZ * N + i]);
         float t;
         int f;
-        const bool hit = nearestCrossing(span, packet[kTNear * N + i], t, f);
+        const bool hit = laneCrossing<N, K>(s, packet, i, t, f);
         // Bitwise, not short-circuit: no branches in the lane loop.
         const float current = tfar[i];
         const bool nearer = (t < current) | ((t == current) & (primId < prims[i]));
@@ -131,60 +138,47 @@ void occludedLanes(const int* valid, const Shape& s, unsigned primId, float* ray
     const unsigned* skip = reinterpret_cast<const unsigned*>(ray + kId * N);
 #pragma omp simd
     for (unsigned i = 0; i < N; ++i) {
-        const Span span = shapeSpan<K>(s, ray[kOrgX * N + i], ray[kOrgY * N + i], ray[kOrgZ * N + i],
-                                       ray[kDirX * N + i], ray[kDirY * N + i], ray[kDirZ * N + i]);
         float t;
         int f;
-        const bool hit = nearestCrossing(span, ray[kTNear * N + i], t, f);
+        const bool hit = laneCrossing<N, K>(s, ray, i, t, f);
         const float current = tfar[i];
         tfar[i] = (valid[i] != 0) & hit & (t < current) & (skip[i] != primId) ? -kInf : current;
     }
 }
 
-template <unsigned N>
-void intersectN(const RTCIntersectFunctionNArguments* args) {
-    const Shape& s = static_cast<const Shape*>(args->geometryUserPtr)[args->primID];
-    float* packet = reinterpret_cast<float*>(args->rayhit);
-    const unsigned inst = args->context->instID[0];
-    switch (s.kind) {
-        case ShapeKind::Sphere:
-            return intersectLanes<N, ShapeKind::Sphere>(args->valid, s, args->primID, args->geomID, inst, packet);
-        case ShapeKind::Cylinder:
-            return intersectLanes<N, ShapeKind::Cylinder>(args->valid, s, args->primID, args->geomID, inst, packet);
-        case ShapeKind::Box:
-            return intersectLanes<N, ShapeKind::Box>(args->valid, s, args->primID, args->geomID, inst, packet);
+/// Calls `kernel` with Embree's query width as a constant (1 for single
+/// rays, 4, 8 or 16 for packets) and the shape kind as a constant, so that
+/// the lane loops are compiled for each and vectorise.
+template <class Kernel>
+void withWidthAndKind(unsigned width, ShapeKind kind, Kernel kernel) {
+    auto withKind = [&](auto n) {
+        switch (kind) {
+            case ShapeKind::Sphere: return kernel(n, std::integral_constant<ShapeKind, ShapeKind::Sphere>{});
+            case ShapeKind::Cylinder: return kernel(n, std::integral_constant<ShapeKind, ShapeKind::Cylinder>{});
+            case ShapeKind::Box: return kernel(n, std::integral_constant<ShapeKind, ShapeKind::Box>{});
+        }
+    };
+    switch (width) {
+        case 1: return withKind(std::integral_constant<unsigned, 1>{});
+        case 4: return withKind(std::integral_constant<unsigned, 4>{});
+        case 8: return withKind(std::integral_constant<unsigned, 8>{});
+        case 16: return withKind(std::integral_constant<unsigned, 16>{});
     }
 }
 
-template <unsigned N>
-void occludedN(const RTCOccludedFunctionNArguments* args) {
-    const Shape& s = static_cast<const Shape*>(args->geometryUserPtr)[args->primID];
-    float* ray = reinterpret_cast<float*>(args->ray);
-    switch (s.kind) {
-        case ShapeKind::Sphere: return occludedLanes<N, ShapeKind::Sphere>(args->valid, s, args->primID, ray);
-        case ShapeKind::Cylinder: return occludedLanes<N, ShapeKind::Cylinder>(args->valid, s, args->primID, ray);
-        case ShapeKind::Box: return occludedLanes<N, ShapeKind::Box>(args->valid, s, args->primID, ray);
-    }
-}
-
-// Embree calls with the width of the query (1 for single rays, 4, 8 or 16
-// for packets); a constant width lets the lane loops vectorise.
 void intersectCallback(const RTCIntersectFunctionNArguments* args) {
-    switch (args->N) {
-        case 1: return intersectN<1>(args);
-        case 4: return intersectN<4>(args);
-        case 8: return intersectN<8>(args);
-        case 16: return intersectN<16>(args);
-    }
+    const Shape& s = static_cast<const Shape*>(args->geometryUserPtr)[args->primID];
+    withWidthAndKind(args->N, s.kind, [&](auto n, auto kind) {
+        intersectLanes<n(), kind()>(args->valid, s, args->primID, args->geomID, args->context->instID[0],
+                                    reinterpret_cast<float*>(args->rayhit));
+    });
 }
 
 void occludedCallback(const RTCOccludedFunctionNArguments* args) {
-    switch (args->N) {
-        case 1: return occludedN<1>(args);
-        case 4: return occludedN<4>(args);
-        case 8: return occludedN<8>(args);
-        case 16: return occludedN<16>(args);
-    }
+    const Shape& s = static_cast<const Shape*>(args->geometryUserPtr)[args->primID];
+    withWidthAndKind(args->N, s.kind, [&](auto n, auto kind) {
+        occludedLanes<n(), kind()>(args->valid, s, args->primID, reinterpret_cast<float*>(args->ray));
+    });
 }
 
 void boundsCallback(const RTCBoundsFunctionArguments* args) {

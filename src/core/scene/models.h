@@ -30,7 +30,7 @@ struct ModelShape {
 struct ModelDef {
     /// Parents come before children, so one pass computes every part frame.
     std::array<ModelPart, kPartCount> parts;
-    std::span<const ModelShape> shapes;  ///< in export order (peer README)
+    std::span<const ModelShape> shapes;  ///< in export order (docs/output.md, --prims)
 };
 
 const ModelDef& robotModel();
