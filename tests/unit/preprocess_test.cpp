@@ -236,27 +236,41 @@ TEST(Repeat, AHugeLoopFailsBeforeItRuns) {
     // 1e12 passes of one line each: refused at once, nothing is run.
     ParseResult r = parseScene("/repeat i 0 1e12\n/sphere s{i} 1 0 0 0\n/end\n", kFile);
     ASSERT_EQ(r.diagnostics.size(), 1u) << dump(r);
-    EXPECT_EQ(r.diagnostics[0].format(),
-              "t.f2:1:1: error: this loop would read at least 2000000000002 lines (1000000000001 passes), more "
-              "than the limit of 10000000 lines read in all");
+    EXPECT_EQ(
+        r.diagnostics[0].format(),
+        "t.f2:1:1: error: this loop would read at least 2000000000002 lines (1000000000001 passes) after 1, "
+        "more than the limit of 10000000 lines read in all");
     EXPECT_LT(r.linesRead, 10u);
     // An empty body still costs its /end per pass.
     expectError("/repeat i 0 1e12\n/end\n", 1, 1, "this loop would read at least 1000000000001 lines");
     // Nested: the inner loop is refused on the outer loop's first pass.
     expectError("/repeat i 1 1\n  /repeat j 0 1e9\n  /end\n/end\n", 2, 3,
                 "this loop would read at least 1000000001 lines");
+    // Found on a later pass of the outer loop: reading stops there, with one error.
+    expectError(
+        "/repeat i 1 3\n  /repeat j 1 4\n  /end\n/end\n", 2, 3,
+        "this loop would read at least 4 lines (4 passes) after 8, more than the limit of 10 lines read in "
+        "all (in /repeat i = 2)",
+        [] {
+            ParseLimits l;
+            l.maxExpandedLines = 10;
+            return l;
+        }());
 }
 
 TEST(Repeat, TheLineLimitCountsEveryPass) {
     ParseLimits limits;
     limits.maxExpandedLines = 20;
     // 3 + 6 * 3 = 21 lines read: one too many, found when the loop starts.
-    expectError("#\n#\n/repeat i 1 6\n#\n#\n/end\n", 3, 1, "more than the limit of 20 lines read in all", limits);
+    expectError("#\n#\n/repeat i 1 6\n#\n#\n/end\n", 3, 1, "more than the limit of 20 lines read in all",
+                limits);
     parseOk("#\n/repeat i 1 6\n#\n#\n/end\n", limits);  // 1 + 1 + 6 * 3 = 20
     // Loops hidden in includes cannot be foreseen; the count stops them as it goes.
     ParseResult r = parseScene(std::string(25, '\n'), kFile, limits);
     ASSERT_EQ(r.diagnostics.size(), 1u) << dump(r);
-    EXPECT_EQ(r.diagnostics[0].format(), "t.f2:21:1: error: more than 20 lines read in all (each pass of a loop and each include counts)");
+    EXPECT_EQ(
+        r.diagnostics[0].format(),
+        "t.f2:21:1: error: more than 20 lines read in all (each pass of a loop and each include counts)");
 }
 
 TEST(Repeat, LoopsNestAtMost64Deep) {
@@ -281,9 +295,8 @@ TEST(Repeat, CountsLinesRead) {
 class Include : public ::testing::Test {
    protected:
     void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("f2_include_" + std::to_string(::getpid()) + "_" +
-                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        dir_ = fs::temp_directory_path() / ("f2_include_" + std::to_string(::getpid()) + "_" +
+                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
         fs::remove_all(dir_);
         fs::create_directories(dir_);
     }
@@ -352,15 +365,18 @@ TEST_F(Include, FileProblemsAreErrorsAtThePath) {
     const ParseResult r = parseSceneFile(main);  // must not block on the FIFO
     std::vector<std::string> lines;
     for (const Diagnostic& d : r.diagnostics) lines.push_back(d.format());
-    EXPECT_EQ(lines, (std::vector<std::string>{
-                         main + ":1:10: error: cannot include '" + path("nope.f2") + "': No such file or directory",
-                         main + ":2:10: error: cannot include '" + path("sub") + "': it is a directory",
-                         main + ":3:10: error: cannot include '" + path("fifo.f2") +
-                             "': it is not a regular file",
-                         main + ":4:1: error: '/include' takes 1 argument (a path, in double quotes if it has spaces), got 0",
-                         main + ":5:1: error: '/include' takes 1 argument (a path, in double quotes if it has spaces), got 2",
-                         main + ":6:10: error: this '\"' has no closing '\"'",
-                     }));
+    EXPECT_EQ(
+        lines,
+        (std::vector<std::string>{
+            main + ":1:10: error: cannot include '" + path("nope.f2") + "': No such file or directory",
+            main + ":2:10: error: cannot include '" + path("sub") + "': it is a directory",
+            main + ":3:10: error: cannot include '" + path("fifo.f2") + "': it is not a regular file",
+            main +
+                ":4:1: error: '/include' takes 1 argument (a path, in double quotes if it has spaces), got 0",
+            main +
+                ":5:1: error: '/include' takes 1 argument (a path, in double quotes if it has spaces), got 2",
+            main + ":6:10: error: this '\"' has no closing '\"'",
+        }));
     // The viewer watches the files that were tried too, so creating one reloads.
     EXPECT_EQ(r.files, (std::vector<std::string>{main, path("nope.f2"), path("sub"), path("fifo.f2")}));
 }
@@ -380,7 +396,8 @@ TEST_F(Include, CyclesAreErrors) {
 
 TEST_F(Include, TheSameFileTwiceIsNoCycle) {
     write("ball.f2", "/sphere ball{k} 1 (k) 0 0\n");
-    const std::string main = write("main.f2", "/repeat k 1 3\n/include ball.f2\n/end\n/let k 9\n/include ball.f2\n");
+    const std::string main =
+        write("main.f2", "/repeat k 1 3\n/include ball.f2\n/end\n/let k 9\n/include ball.f2\n");
     const ParseResult r = parseSceneFile(main);
     ASSERT_TRUE(r.ok()) << dump(r);
     EXPECT_EQ(names(*r.scene), (std::vector<std::string>{"ball1", "ball2", "ball3", "ball9"}));
@@ -388,7 +405,8 @@ TEST_F(Include, TheSameFileTwiceIsNoCycle) {
 }
 
 TEST_F(Include, NestingDeeperThan16IsAnError) {
-    for (int i = 0; i < 18; ++i) write("f" + std::to_string(i) + ".f2", "/include f" + std::to_string(i + 1) + ".f2\n");
+    for (int i = 0; i < 18; ++i)
+        write("f" + std::to_string(i) + ".f2", "/include f" + std::to_string(i + 1) + ".f2\n");
     write("f18.f2", "/sphere deep 1 0 0 0\n");
     const ParseResult r = parseSceneFile(path("f2.f2"));  // 16 includes below f2.f2: fine
     EXPECT_TRUE(r.ok()) << dump(r);

@@ -51,7 +51,24 @@ std::optional<double> tanDegrees(double degrees) {
     return std::tan(r * kRadiansPerDegree);
 }
 
-enum class Function { Sin, Cos, Tan, Asin, Acos, Atan, Atan2, Sqrt, Abs, Floor, Ceil, Exp, Log, Round, Min, Max };
+enum class Function {
+    Sin,
+    Cos,
+    Tan,
+    Asin,
+    Acos,
+    Atan,
+    Atan2,
+    Sqrt,
+    Abs,
+    Floor,
+    Ceil,
+    Exp,
+    Log,
+    Round,
+    Min,
+    Max
+};
 
 struct FunctionInfo {
     std::string_view name;
@@ -61,11 +78,21 @@ struct FunctionInfo {
 };
 
 constexpr std::array<FunctionInfo, 16> kFunctions = {{
-    {"sin", Function::Sin, 1, 1},     {"cos", Function::Cos, 1, 1},     {"tan", Function::Tan, 1, 1},
-    {"asin", Function::Asin, 1, 1},   {"acos", Function::Acos, 1, 1},   {"atan", Function::Atan, 1, 1},
-    {"atan2", Function::Atan2, 2, 2}, {"sqrt", Function::Sqrt, 1, 1},   {"abs", Function::Abs, 1, 1},
-    {"floor", Function::Floor, 1, 1}, {"ceil", Function::Ceil, 1, 1},   {"exp", Function::Exp, 1, 1},
-    {"log", Function::Log, 1, 1},     {"round", Function::Round, 1, 1}, {"min", Function::Min, 1, -1},
+    {"sin", Function::Sin, 1, 1},
+    {"cos", Function::Cos, 1, 1},
+    {"tan", Function::Tan, 1, 1},
+    {"asin", Function::Asin, 1, 1},
+    {"acos", Function::Acos, 1, 1},
+    {"atan", Function::Atan, 1, 1},
+    {"atan2", Function::Atan2, 2, 2},
+    {"sqrt", Function::Sqrt, 1, 1},
+    {"abs", Function::Abs, 1, 1},
+    {"floor", Function::Floor, 1, 1},
+    {"ceil", Function::Ceil, 1, 1},
+    {"exp", Function::Exp, 1, 1},
+    {"log", Function::Log, 1, 1},
+    {"round", Function::Round, 1, 1},
+    {"min", Function::Min, 1, -1},
     {"max", Function::Max, 1, -1},
 }};
 
@@ -85,7 +112,8 @@ const FunctionInfo* findFunction(std::string_view name) {
 /// The first error wins; after it every function returns 0 and unwinds.
 class ExpressionParser {
    public:
-    ExpressionParser(std::string_view text, const Variables& variables) : text_(text), variables_(variables) {}
+    ExpressionParser(std::string_view text, const Variables& variables)
+        : text_(text), variables_(variables) {}
 
     ExpressionResult whole() {
         const double v = sum();
@@ -146,7 +174,8 @@ class ExpressionParser {
     /// Guards every recursive step so that "((((…" cannot overflow the stack.
     bool enter(std::size_t at) {
         if (++depth_ > kMaxExpressionDepth) {
-            fail(at, "the expression is nested more than " + std::to_string(kMaxExpressionDepth) + " levels deep");
+            fail(at, "the expression is nested more than " + std::to_string(kMaxExpressionDepth) +
+                         " levels deep");
             return false;
         }
         return true;
@@ -319,10 +348,11 @@ class ExpressionParser {
         ++pos_;
         const int n = static_cast<int>(args.size());
         if (n < f.minArgs || (f.maxArgs >= 0 && n > f.maxArgs)) {
-            std::string count = f.maxArgs < 0 ? "at least " + std::to_string(f.minArgs) : std::to_string(f.minArgs);
+            std::string count =
+                f.maxArgs < 0 ? "at least " + std::to_string(f.minArgs) : std::to_string(f.minArgs);
             const bool plural = f.minArgs != 1;
-            fail(at, quoteToken(f.name) + " takes " + count + (plural ? " arguments" : " argument") + ", got " +
-                         std::to_string(n));
+            fail(at, quoteToken(f.name) + " takes " + count + (plural ? " arguments" : " argument") +
+                         ", got " + std::to_string(n));
             return 0;
         }
         return apply(f, args, at);
@@ -332,8 +362,10 @@ class ExpressionParser {
         const double x = args[0];
         const std::string call = std::string(f.name) + "(" + formatNumber(x) + ")";
         switch (f.function) {
-            case Function::Sin: return sinDegrees(x);
-            case Function::Cos: return cosDegrees(x);
+            case Function::Sin:
+                return sinDegrees(x);
+            case Function::Cos:
+                return cosDegrees(x);
             case Function::Tan: {
                 const std::optional<double> t = tanDegrees(x);
                 if (!t) fail(at, call + " is undefined (an odd multiple of 90 degrees)");
@@ -346,29 +378,37 @@ class ExpressionParser {
                     return 0;
                 }
                 return (f.function == Function::Asin ? std::asin(x) : std::acos(x)) * kDegreesPerRadian;
-            case Function::Atan: return std::atan(x) * kDegreesPerRadian;
-            case Function::Atan2: return std::atan2(x, args[1]) * kDegreesPerRadian;
+            case Function::Atan:
+                return std::atan(x) * kDegreesPerRadian;
+            case Function::Atan2:
+                return std::atan2(x, args[1]) * kDegreesPerRadian;
             case Function::Sqrt:
                 if (x < 0) {
                     fail(at, call + " is undefined (a negative number)");
                     return 0;
                 }
                 return std::sqrt(x);
-            case Function::Abs: return std::fabs(x);
-            case Function::Floor: return std::floor(x);
-            case Function::Ceil: return std::ceil(x);
-            case Function::Exp: return checked(std::exp(x), at, call);
+            case Function::Abs:
+                return std::fabs(x);
+            case Function::Floor:
+                return std::floor(x);
+            case Function::Ceil:
+                return std::ceil(x);
+            case Function::Exp:
+                return checked(std::exp(x), at, call);
             case Function::Log:
                 if (x <= 0) {
                     fail(at, call + " is undefined (the argument must be > 0)");
                     return 0;
                 }
                 return std::log(x);
-            case Function::Round: return std::round(x);  // halves away from zero
+            case Function::Round:
+                return std::round(x);  // halves away from zero
             case Function::Min:
             case Function::Max: {
                 double best = x;
-                for (double a : args) best = f.function == Function::Min ? std::min(best, a) : std::max(best, a);
+                for (double a : args)
+                    best = f.function == Function::Min ? std::min(best, a) : std::max(best, a);
                 return best;
             }
         }

@@ -174,9 +174,9 @@ class Parser : private ExpansionSink {
     /// `identity`: the main file's (device, inode), when it is a file.
     ParseResult run(std::string_view text,
                     std::optional<std::pair<std::uint64_t, std::uint64_t>> identity = std::nullopt) {
-        expander_.start(text.size() > limits_.maxSceneBytes ? std::string_view() : text, std::string(fileName_),
-                        identity);
-        if (text.size() > limits_.maxSceneBytes) {
+        const bool tooLarge = text.size() > limits_.maxSceneBytes;
+        expander_.start(tooLarge ? std::string_view() : text, std::string(fileName_), identity);
+        if (tooLarge) {
             error({1, 1}, "the scene is " + std::to_string(text.size()) + " bytes, more than the limit of " +
                               std::to_string(limits_.maxSceneBytes) + " bytes");
             return finish();
@@ -212,12 +212,12 @@ class Parser : private ExpansionSink {
         } else {
             ++errors_;
         }
-        diagnostics_.push_back({{expander_.fileName(pos.file), pos.line, pos.column}, severity, std::move(message)});
+        const SourceLoc loc{expander_.fileName(pos.file), pos.line, pos.column};
+        diagnostics_.push_back({loc, severity, std::move(message)});
         order_.push_back(pos);
         if (severity == Severity::Error && errors_ >= limits_.maxErrors) {
-            diagnostics_.push_back({{expander_.fileName(pos.file), pos.line, pos.column},
-                                    Severity::Error,
-                                    "too many errors (" + std::to_string(errors_) + "); parsing stopped here"});
+            diagnostics_.push_back(
+                {loc, Severity::Error, "too many errors (" + std::to_string(errors_) + "); parsing stopped here"});
             order_.push_back(pos);
             stopped_ = true;
         }

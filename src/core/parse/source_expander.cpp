@@ -166,7 +166,8 @@ struct SourceExpander::LoopFrame {
     LineReader bodyStart;
 };
 
-SourceExpander::SourceExpander(const ExpansionLimits& limits, ExpansionSink& sink) : limits_(limits), sink_(sink) {}
+SourceExpander::SourceExpander(const ExpansionLimits& limits, ExpansionSink& sink)
+    : limits_(limits), sink_(sink) {}
 
 SourceExpander::~SourceExpander() = default;
 
@@ -183,7 +184,9 @@ void SourceExpander::start(std::string_view text, std::string name,
     sources_.push_back(std::move(source));
 }
 
-const std::string& SourceExpander::fileName(int index) const { return names_[static_cast<std::size_t>(index)]; }
+const std::string& SourceExpander::fileName(int index) const {
+    return names_[static_cast<std::size_t>(index)];
+}
 
 int SourceExpander::addFile(std::string name) {
     for (std::size_t i = 0; i < names_.size(); ++i) {
@@ -234,8 +237,9 @@ bool SourceExpander::next(LogicalLine& out) {
             return false;
         }
         if (line.text.size() > limits_.maxLineBytes) {
-            error(at(1), "line is " + std::to_string(line.text.size()) + " bytes long, more than the limit of " +
-                             std::to_string(limits_.maxLineBytes) + " bytes");
+            error(at(1), "line is " + std::to_string(line.text.size()) +
+                             " bytes long, more than the limit of " + std::to_string(limits_.maxLineBytes) +
+                             " bytes");
             continue;
         }
         tokenize(line.text, out);
@@ -324,7 +328,8 @@ bool SourceExpander::evaluateTokens(LogicalLine& line, int first) {
                 }
                 const std::optional<double> whole = nearWhole(r.value);
                 if (!whole) {
-                    error(at(braceColumn), "'{...}' in a name must give a whole number, got " + formatNumber(r.value));
+                    error(at(braceColumn),
+                          "'{...}' in a name must give a whole number, got " + formatNumber(r.value));
                     token.form = TokenForm::Failed;
                     break;
                 }
@@ -343,7 +348,8 @@ bool SourceExpander::evaluateTokens(LogicalLine& line, int first) {
     }
     // Views are taken only now: appending may have moved the storage.
     for (std::size_t r = 0; r < replacedCount; ++r) {
-        line.tokens[replaced[r].token].text = std::string_view(storage_).substr(replaced[r].offset, replaced[r].length);
+        line.tokens[replaced[r].token].text =
+            std::string_view(storage_).substr(replaced[r].offset, replaced[r].length);
     }
     return ok;
 }
@@ -366,8 +372,8 @@ std::optional<double> SourceExpander::numberArgument(const LogicalLine& line, in
 
 void SourceExpander::runLet(const LogicalLine& line) {
     if (line.count != 3) {
-        error(at(line.tokens[0].column), "'/let' takes 2 arguments (a variable and a number), got " +
-                                             std::to_string(line.count - 1));
+        error(at(line.tokens[0].column),
+              "'/let' takes 2 arguments (a variable and a number), got " + std::to_string(line.count - 1));
         return;
     }
     const LogicalToken& name = line.tokens[1];
@@ -398,8 +404,9 @@ void SourceExpander::runRepeat(const LogicalLine& line, int lineNumber) {
     }
     const LoopInfo& info = found->second;
     if (line.count != 4 && line.count != 5) {
-        error(commandPos, "'/repeat' takes 3 or 4 arguments (a variable, from, to and an optional step), got " +
-                              std::to_string(line.count - 1));
+        error(commandPos,
+              "'/repeat' takes 3 or 4 arguments (a variable, from, to and an optional step), got " +
+                  std::to_string(line.count - 1));
         return skipLoop(info);
     }
     bool ok = true;
@@ -433,17 +440,22 @@ void SourceExpander::runRepeat(const LogicalLine& line, int lineNumber) {
     // its own lines, so a loop that cannot fit fails now, not after an hour.
     const double lines = passes * static_cast<double>(info.passLines);
     const double bytes = passes * static_cast<double>(info.passBytes);
+    // Reading stops there, as when the limit is reached line by line.
     if (static_cast<double>(linesRead_) + lines > static_cast<double>(limits_.maxLines)) {
-        error(commandPos, "this loop would read at least " + wholeText(lines) + " lines (" + wholeText(passes) +
-                              " passes), more than the limit of " + std::to_string(limits_.maxLines) +
+        error(commandPos, "this loop would read at least " + wholeText(lines) + " lines (" +
+                              wholeText(passes) + " passes) after " + std::to_string(linesRead_) +
+                              ", more than the limit of " + std::to_string(limits_.maxLines) +
                               " lines read in all");
-        return skipLoop(info);
+        stopped_ = true;
+        return;
     }
     if (static_cast<double>(bytesRead_) + bytes > static_cast<double>(limits_.maxBytes)) {
-        error(commandPos, "this loop would read at least " + wholeText(bytes) + " bytes (" + wholeText(passes) +
-                              " passes), more than the limit of " + std::to_string(limits_.maxBytes) +
+        error(commandPos, "this loop would read at least " + wholeText(bytes) + " bytes (" +
+                              wholeText(passes) + " passes) after " + std::to_string(bytesRead_) +
+                              ", more than the limit of " + std::to_string(limits_.maxBytes) +
                               " bytes read in all");
-        return skipLoop(info);
+        stopped_ = true;
+        return;
     }
     loopStack_.push_back({std::string(name.text), variables_.find(name.text), *from, *step,
                           static_cast<std::uint64_t>(passes), 0, frame.reader});
@@ -499,8 +511,9 @@ void SourceExpander::runInclude(std::string_view raw, const LogicalLine& line) {
         }
     } else {
         if (line.count != 2) {
-            error(commandPos, "'/include' takes 1 argument (a path, in double quotes if it has spaces), got " +
-                                  std::to_string(line.count - 1));
+            error(commandPos,
+                  "'/include' takes 1 argument (a path, in double quotes if it has spaces), got " +
+                      std::to_string(line.count - 1));
             return;
         }
         LogicalLine substituted = line;
@@ -525,7 +538,8 @@ void SourceExpander::runInclude(std::string_view raw, const LogicalLine& line) {
     for (std::size_t k = 0; k < fileStack_.size(); ++k) {
         if (fileStack_[k].source->identity != source->identity) continue;
         std::string chain;
-        for (std::size_t m = k; m < fileStack_.size(); ++m) chain += quotePath(fileName(fileStack_[m].nameIndex)) + " -> ";
+        for (std::size_t m = k; m < fileStack_.size(); ++m)
+            chain += quotePath(fileName(fileStack_[m].nameIndex)) + " -> ";
         chain += quotePath(fileName(nameIndex));
         error(pathPos, "include cycle: " + chain);
         return;
@@ -539,7 +553,7 @@ const SourceExpander::SourceFile* SourceExpander::loadFile(const std::string& pa
     struct stat st {};
     if (::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode)) {
         const std::pair<std::uint64_t, std::uint64_t> id{static_cast<std::uint64_t>(st.st_dev),
-                                                          static_cast<std::uint64_t>(st.st_ino)};
+                                                         static_cast<std::uint64_t>(st.st_ino)};
         for (const auto& s : sources_) {
             if (s->identity == id) return s.get();
         }

@@ -41,7 +41,7 @@ enum class TokenForm {
 struct LogicalToken {
     std::string_view text;
     std::string_view written;  ///< the token as written in the file
-    int column = 0;  ///< 1-based byte column of the token as written
+    int column = 0;            ///< 1-based byte column of the token as written
     TokenForm form = TokenForm::Word;
     double value = 0;
 };
@@ -77,7 +77,7 @@ class ExpansionSink {
 struct FileRead {
     bool ok = false;
     std::string text;
-    std::string problem;  ///< "No such file or directory", "it is a directory", ...
+    std::string problem;                  ///< "No such file or directory", "it is a directory", ...
     std::uint64_t device = 0, inode = 0;  ///< the file's identity, to find include cycles
 };
 FileRead readSourceFile(const std::string& path, std::size_t maxBytes);
