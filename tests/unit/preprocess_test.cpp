@@ -273,6 +273,28 @@ TEST(Repeat, TheLineLimitCountsEveryPass) {
         "t.f2:21:1: error: more than 20 lines read in all (each pass of a loop and each include counts)");
 }
 
+TEST(Repeat, TheByteLimitCountsEveryPassToo) {
+    ParseLimits limits;
+    limits.maxExpandedBytes = 100;
+    // Each pass reads "# 20 bytes of text.\n" (20) and "/end\n" (5).
+    expectError(
+        "/repeat i 1 4\n# 20 bytes of text.\n/end\n", 1, 1,
+        "this loop would read at least 100 bytes (4 passes) after 14, more than the limit of 100 bytes",
+        limits);
+    parseOk("/repeat i 1 3\n# 20 bytes of text.\n/end\n", limits);
+    ParseResult r = parseScene(std::string(60, '#') + "\n" + std::string(60, '#') + "\n", kFile, limits);
+    ASSERT_EQ(r.diagnostics.size(), 1u) << dump(r);
+    EXPECT_EQ(
+        r.diagnostics[0].format(),
+        "t.f2:2:1: error: more than 100 bytes read in all (each pass of a loop and each include counts)");
+}
+
+TEST(Let, AFailedExpressionLeavesTheVariableAlone) {
+    ParseResult r = parseScene("/let x 2\n/let x (1/0)\n/sphere s (x) 0 0 0\n", kFile);
+    ASSERT_EQ(r.diagnostics.size(), 1u) << dump(r);
+    EXPECT_EQ(r.diagnostics[0].format(), "t.f2:2:10: error: division by zero");
+}
+
 TEST(Repeat, LoopsNestAtMost64Deep) {
     std::string ok, tooDeep;
     for (int i = 0; i < 64; ++i) ok += "/repeat v" + std::to_string(i) + " 1 1\n";
@@ -379,6 +401,40 @@ TEST_F(Include, FileProblemsAreErrorsAtThePath) {
         }));
     // The viewer watches the files that were tried too, so creating one reloads.
     EXPECT_EQ(r.files, (std::vector<std::string>{main, path("nope.f2"), path("sub"), path("fifo.f2")}));
+}
+
+TEST_F(Include, PathForms) {
+    write("part7.f2", "/sphere seven 1 0 0 0\n");
+    const std::string main = write("main.f2",
+                                   "/let i 7\n"
+                                   "/include part{i}.f2\n"
+                                   "/include \"part7.f2\" x\n"
+                                   "/include \"\"\n"
+                                   "/include part{1/0}.f2\n");
+    const ParseResult r = parseSceneFile(main);
+    std::vector<std::string> lines;
+    for (const Diagnostic& d : r.diagnostics) lines.push_back(d.format());
+    EXPECT_EQ(lines, (std::vector<std::string>{
+                         main + ":3:21: error: unexpected text after the quoted path of '/include'",
+                         main + ":4:10: error: empty path in '/include'",
+                         main + ":5:16: error: division by zero",
+                     }));
+    EXPECT_EQ(r.files, (std::vector<std::string>{main, path("part7.f2")}));
+}
+
+TEST_F(Include, AllFilesTogetherRespectTheSceneSize) {
+    const std::string big = write("big.f2", std::string(50, '#') + "\n");
+    const std::string main = write("main.f2", "/include big.f2\n");  // 16 bytes
+    ParseLimits limits;
+    limits.maxSceneBytes = 60;
+    const ParseResult r = parseSceneFile(main, limits);
+    ASSERT_EQ(r.diagnostics.size(), 1u) << dump(r);
+    EXPECT_EQ(r.diagnostics[0].format(),
+              main + ":1:10: error: cannot include '" + big +
+                  "': the file is 51 bytes, more than the limit of 44 bytes (for all "
+                  "the files of the scene together)");
+    limits.maxSceneBytes = 67;
+    EXPECT_TRUE(parseSceneFile(main, limits).ok());
 }
 
 TEST_F(Include, CyclesAreErrors) {
