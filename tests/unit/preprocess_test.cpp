@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/parse/parser.h"
+#include "test_scenes.h"
 
 namespace f2 {
 namespace {
@@ -18,15 +19,10 @@ namespace fs = std::filesystem;
 
 constexpr const char* kFile = "t.f2";
 
-std::string dump(const ParseResult& r) {
-    std::string s;
-    for (const Diagnostic& d : r.diagnostics) s += d.format() + "\n";
-    return s;
-}
+std::string dump(const ParseResult& r) { return test::formatDiagnostics(r); }
 
 SceneDesc parseOk(std::string_view text, const ParseLimits& limits = ParseLimits()) {
     ParseResult r = parseScene(text, kFile, limits);
-    EXPECT_TRUE(r.ok()) << dump(r);
     EXPECT_FALSE(hasErrors(r.diagnostics)) << dump(r);  // whole-scene warnings (no light...) are fine
     return r.scene.value_or(SceneDesc{});
 }
@@ -34,15 +30,19 @@ SceneDesc parseOk(std::string_view text, const ParseLimits& limits = ParseLimits
 /// Exactly one diagnostic, an error at line:column whose message contains `what`.
 void expectError(std::string_view text, int line, int column, std::string_view what,
                  const ParseLimits& limits = ParseLimits()) {
-    SCOPED_TRACE(std::string(text));
-    ParseResult r = parseScene(text, kFile, limits);
-    EXPECT_FALSE(r.ok());
-    ASSERT_EQ(r.diagnostics.size(), 1u) << dump(r);
-    const Diagnostic& d = r.diagnostics[0];
-    EXPECT_EQ(d.severity, Severity::Error);
-    EXPECT_EQ(d.loc.line, line) << d.format();
-    EXPECT_EQ(d.loc.column, column) << d.format();
-    EXPECT_NE(d.message.find(what), std::string::npos) << "message: " << d.message << "\nexpected: " << what;
+    test::expectOnlyError(text, line, column, what, limits);
+}
+
+/// The diagnostics, each starting and ending as given (the middle, such as
+/// "first defined at", is other tests' business).
+template <typename Pairs>
+void expectDiagnostics(const ParseResult& r, const Pairs& expected) {
+    ASSERT_EQ(r.diagnostics.size(), std::size(expected)) << dump(r);
+    for (std::size_t k = 0; k < std::size(expected); ++k) {
+        const std::string line = r.diagnostics[k].format();
+        EXPECT_TRUE(line.starts_with(expected[k].first)) << line;
+        EXPECT_TRUE(line.ends_with(expected[k].second)) << line;
+    }
 }
 
 std::vector<std::string> names(const SceneDesc& s) {
@@ -202,12 +202,7 @@ TEST(Repeat, ErrorsInsideNameTheLineAndTheLoopValues) {
         {"t.f2:3:13: error: duplicate name 's2'", "(in /repeat i = 2, j = 0.5)"},
         {"t.f2:3:13: error: duplicate name 's2'", "(in /repeat i = 2, j = 1)"},
     };
-    ASSERT_EQ(r.diagnostics.size(), std::size(expected)) << dump(r);
-    for (std::size_t k = 0; k < std::size(expected); ++k) {
-        const std::string line = r.diagnostics[k].format();
-        EXPECT_TRUE(line.starts_with(expected[k].first)) << line;
-        EXPECT_TRUE(line.ends_with(expected[k].second)) << line;
-    }
+    expectDiagnostics(r, expected);
 }
 
 TEST(Repeat, Errors) {
@@ -366,12 +361,7 @@ TEST_F(Include, ErrorsNameTheIncludedFile) {
         {bad + ":2:17: error: expected a number, got 'zz'", "(in /repeat i = 2)"},
         {main + ":4:6: error: fps must be a whole number from 1 to 1000, got 0", "got 0"},
     };
-    ASSERT_EQ(r.diagnostics.size(), std::size(expected)) << dump(r);
-    for (std::size_t k = 0; k < std::size(expected); ++k) {
-        const std::string line = r.diagnostics[k].format();
-        EXPECT_TRUE(line.starts_with(expected[k].first)) << line;
-        EXPECT_TRUE(line.ends_with(expected[k].second)) << line;
-    }
+    expectDiagnostics(r, expected);
 }
 
 TEST_F(Include, FileProblemsAreErrorsAtThePath) {

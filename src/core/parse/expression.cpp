@@ -190,6 +190,20 @@ class ExpressionParser {
         return v;
     }
 
+    /// Takes the ')' that closes the '(' at `open`, or reports what stands there.
+    bool close(std::size_t open) {
+        if (peek() == ')') {
+            ++pos_;
+            return true;
+        }
+        if (pos_ >= text_.size()) {
+            fail(open, "this '(' has no matching ')'");
+        } else {
+            unexpected();
+        }
+        return false;
+    }
+
     double sum() {
         double v = product();
         while (!failed_) {
@@ -263,16 +277,7 @@ class ExpressionParser {
             if (!enter(at)) return 0;
             const double v = sum();
             --depth_;
-            if (failed_) return 0;
-            if (peek() != ')') {
-                if (pos_ >= text_.size()) {
-                    fail(at, "this '(' has no matching ')'");
-                } else {
-                    unexpected();
-                }
-                return 0;
-            }
-            ++pos_;
+            if (failed_ || !close(at)) return 0;
             return v;
         }
         if (isDigit(c) || c == '.') return number();
@@ -337,15 +342,7 @@ class ExpressionParser {
             }
         }
         --depth_;
-        if (peek() != ')') {
-            if (pos_ >= text_.size()) {
-                fail(open, "this '(' has no matching ')'");
-            } else {
-                unexpected();
-            }
-            return 0;
-        }
-        ++pos_;
+        if (!close(open)) return 0;
         const int n = static_cast<int>(args.size());
         if (n < f.minArgs || (f.maxArgs >= 0 && n > f.maxArgs)) {
             std::string count =

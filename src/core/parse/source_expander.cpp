@@ -370,6 +370,20 @@ std::optional<double> SourceExpander::numberArgument(const LogicalLine& line, in
     return n.value;
 }
 
+bool SourceExpander::variableName(const LogicalToken& name, std::string_view cannotBe) {
+    if (!isVariableName(name.text)) {
+        error(at(name.column), "invalid variable name " + quoteToken(name.text) +
+                                   " (expected a letter or '_', then letters, digits or '_')");
+        return false;
+    }
+    if (Variables::isPredefined(name.text)) {
+        error(at(name.column),
+              quoteToken(name.text) + " is predefined and cannot be " + std::string(cannotBe));
+        return false;
+    }
+    return true;
+}
+
 void SourceExpander::runLet(const LogicalLine& line) {
     if (line.count != 3) {
         error(at(line.tokens[0].column),
@@ -377,15 +391,7 @@ void SourceExpander::runLet(const LogicalLine& line) {
         return;
     }
     const LogicalToken& name = line.tokens[1];
-    bool ok = true;
-    if (!isVariableName(name.text)) {
-        error(at(name.column), "invalid variable name " + quoteToken(name.text) +
-                                   " (expected a letter or '_', then letters, digits or '_')");
-        ok = false;
-    } else if (Variables::isPredefined(name.text)) {
-        error(at(name.column), quoteToken(name.text) + " is predefined and cannot be redefined");
-        ok = false;
-    }
+    bool ok = variableName(name, "redefined");
     const std::optional<double> value = numberArgument(line, 2, ok);
     if (ok && value) variables_.set(name.text, *value);
 }
@@ -409,16 +415,8 @@ void SourceExpander::runRepeat(const LogicalLine& line, int lineNumber) {
                   std::to_string(line.count - 1));
         return skipLoop(info);
     }
-    bool ok = true;
     const LogicalToken& name = line.tokens[1];
-    if (!isVariableName(name.text)) {
-        error(at(name.column), "invalid variable name " + quoteToken(name.text) +
-                                   " (expected a letter or '_', then letters, digits or '_')");
-        ok = false;
-    } else if (Variables::isPredefined(name.text)) {
-        error(at(name.column), quoteToken(name.text) + " is predefined and cannot be a loop variable");
-        ok = false;
-    }
+    bool ok = variableName(name, "a loop variable");
     const std::optional<double> from = numberArgument(line, 2, ok);
     const std::optional<double> to = numberArgument(line, 3, ok);
     std::optional<double> step = 1.0;

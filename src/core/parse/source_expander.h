@@ -119,6 +119,8 @@ class SourceExpander {
     void tokenize(std::string_view text, LogicalLine& out);
     bool evaluateTokens(LogicalLine& line, int first);
     std::optional<double> numberArgument(const LogicalLine& line, int i, bool& ok);
+    /// Checks the variable of /let or /repeat; reports "… cannot be `cannotBe`" for pi.
+    bool variableName(const LogicalToken& name, std::string_view cannotBe);
     void runLet(const LogicalLine& line);
     void runRepeat(const LogicalLine& line, int lineNumber);
     void runEnd(const LogicalLine& line);
