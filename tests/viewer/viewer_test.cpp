@@ -106,6 +106,7 @@ class ViewerTest : public QObject {
     void imageConversionRoundTrips();
     void playStepScrubShowsCoreImage();
     void keyboardShortcutsDrivePlayback();
+    void stepGoesFromTheFrameShown();
     void renderScaleFollowsWindow();
     void dragOrbitsWheelZoomsAndSceneCameraResets();
     void brokenFileShowsErrorsAndKeepsImage();
@@ -278,6 +279,27 @@ void ViewerTest::keyboardShortcutsDrivePlayback() {
     QVERIFY(w.playback()->isPlaying());
     QTest::keyClick(&w, Qt::Key_Space);
     QVERIFY(!w.playback()->isPlaying());
+}
+
+void ViewerTest::stepGoesFromTheFrameShown() {
+    // Time 3.7 shows frame 3 (f2::frameAt, the rule `f2 render` uses); a step
+    // goes to frame 4, not 5 (stepping used to round the time instead).
+    Playback playback;
+    playback.setRange(15, 24);
+    playback.seek(3.7);
+    QCOMPARE(playback.frame(), 3);
+    playback.step(1);
+    QCOMPARE(playback.time(), 4.0);
+    playback.seek(3.7);
+    playback.step(-1);
+    QCOMPARE(playback.time(), 2.0);
+    playback.seek(0.1 * 3 * 10);  // 2.9999999999999996: frame 3, as everywhere
+    QCOMPARE(playback.frame(), 3);
+
+    TimelineWidget timeline;
+    timeline.setRange(15, 24);
+    timeline.setTime(3.7);
+    QCOMPARE(timeline.slider()->value(), 3);
 }
 
 void ViewerTest::renderScaleFollowsWindow() {
