@@ -15,6 +15,7 @@
 
 #include "core/parse/lexer.h"
 #include "core/parse/number.h"
+#include "core/parse/symbol_index.h"
 
 namespace f2 {
 
@@ -157,7 +158,8 @@ struct ObjectBook {
 // Parser
 class Parser {
    public:
-    Parser(std::string_view fileName, const ParseLimits& limits) : fileName_(fileName), limits_(limits) {}
+    Parser(std::string_view fileName, const ParseLimits& limits, SymbolIndex* index)
+        : fileName_(fileName), limits_(limits), index_(index) {}
 
     ParseResult run(std::string_view text) {
         if (text.size() > limits_.maxSceneBytes) {
@@ -249,6 +251,7 @@ class Parser {
         }
         for (const CommandName& c : kCommands) {
             if (c.name == head) {
+                if (index_) index_->noteCommand(head, sourceLoc(commandPos()));
                 dispatch(c.command);
                 return;
             }
@@ -428,6 +431,7 @@ class Parser {
             error(pos, "unknown name " + quoteToken(name));
             return std::nullopt;
         }
+        if (index_) index_->uses.push_back({it->second, span(pos, name), std::string(commandText())});
         return it->second;
     }
 
@@ -595,6 +599,7 @@ class Parser {
         if (!newName(0)) return;
         object.name = std::string(arg(0));
         names_.emplace(object.name, scene_.objects.size());
+        if (index_) index_->objects.push_back({object, span(argPos(0), arg(0)), sourceLoc(commandPos())});
         books_.push_back({commandPos(), {-1, -1, -1, -1, -1}});
         scene_.objects.push_back(std::move(object));
     }
@@ -755,8 +760,15 @@ class Parser {
         }
     }
 
+    // Symbol index (optional output)
+    SourceLoc sourceLoc(Pos pos) const { return {std::string(fileName_), pos.line, pos.column}; }
+    TokenSpan span(Pos pos, std::string_view token) const {
+        return {sourceLoc(pos), static_cast<int>(token.size())};
+    }
+
     std::string_view fileName_;
     ParseLimits limits_;
+    SymbolIndex* index_ = nullptr;
     SceneDesc scene_;
     std::vector<Diagnostic> diagnostics_;
     std::size_t errors_ = 0, warnings_ = 0, droppedWarnings_ = 0;
@@ -805,7 +817,19 @@ bool readStream(std::FILE* f, std::size_t limit, std::string& out, std::string& 
 }  // namespace
 
 ParseResult parseScene(std::string_view text, std::string_view fileName, const ParseLimits& limits) {
-    return Parser(fileName, limits).run(text);
+    return Parser(fileName, limits, nullptr).run(text);
+}
+
+ParseResult parseScene(std::string_view text, std::string_view fileName, const ParseLimits& limits,
+                       SymbolIndex& index) {
+    index.clear();
+    return Parser(fileName, limits, &index).run(text);
+}
+
+std::vector<std::string_view> commandNames() {
+    std::vector<std::string_view> names;
+    for (const CommandName& c : kCommands) names.push_back(c.name);
+    return names;
 }
 
 ParseResult parseScene(std::string_view text, std::string_view fileName) {

@@ -1,0 +1,134 @@
+// textDocument/hover: a command's syntax and meaning; an object's kind, where
+// it is created, its parts and keys and its pose at frame 0; a part's shape and pivot.
+#include <cstdio>
+
+#include "core/anim/track.h"
+#include "core/scene/models.h"
+#include "lsp/command_docs.h"
+#include "lsp/features.h"
+
+namespace f2::lsp {
+
+namespace {
+
+std::string number(double v) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%g", v);
+    return buffer;
+}
+
+std::string vec(const Vec3& v) { return "(" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + ")"; }
+
+std::string shapeText(const ModelShape& s) {
+    switch (s.kind) {
+        case ShapeKind::Sphere:
+            return "sphere r " + number(s.size.x);
+        case ShapeKind::Cylinder:
+            return "cylinder r " + number(s.size.x) + ", h " + number(s.size.y);
+        case ShapeKind::Box:
+            return "box " + number(s.size.x) + " × " + number(s.size.y) + " × " + number(s.size.z);
+    }
+    return {};
+}
+
+std::string sizeText(const SceneObject& o) {
+    switch (o.kind) {
+        case ObjectKind::Sphere:
+            return "radius " + number(o.size.x);
+        case ObjectKind::Cylinder:
+            return "radius " + number(o.size.x) + ", height " + number(o.size.y);
+        case ObjectKind::Box:
+            return "sides " + number(o.size.x) + " × " + number(o.size.y) + " × " + number(o.size.z);
+        case ObjectKind::Robot:
+        case ObjectKind::Human:
+            break;
+    }
+    return {};
+}
+
+std::string placeText(const Analysis& a, const SourceLoc& loc) {
+    std::string place = "line " + std::to_string(loc.line);
+    if (!a.inDocument(loc)) place += " of " + loc.file;
+    return place;
+}
+
+Json markdown(std::string text, const Range& range) {
+    return {{"contents", {{"kind", "markdown"}, {"value", std::move(text)}}}, {"range", toJson(range)}};
+}
+
+std::string objectHover(const Analysis& a, std::size_t index) {
+    const IndexedObject& entry = a.index.objects[index];
+    const SceneObject& o = entry.object;
+    std::string text = "**" + std::string(objectKindName(o.kind)) + "** `" + o.name + "`, created at " +
+                       placeText(a, entry.command);
+    if (a.inDocument(entry.command)) {
+        text += ":\n```f2\n" + std::string(a.document.line(entry.command.line - 1)) + "\n```\n";
+    } else {
+        text += "\n\n";
+    }
+    if (const std::string size = sizeText(o); !size.empty()) text += "- " + size + "\n";
+    const auto keys = keyCounts(a, index);
+    text += "- keys: " + std::to_string(keys[0]);
+    if (isModel(o.kind)) {
+        text += " (own)";
+        for (int i = 0; i < kPartCount; ++i) {
+            text += ", " + std::string(kPartNames[static_cast<std::size_t>(i)]) + " " +
+                    std::to_string(keys[static_cast<std::size_t>(i + 1)]);
+        }
+        text += "\n- parts: body, head, lhand, rhand";
+    }
+    text += "\n";
+    // The pose at frame 0 needs the keys, which only a scene without errors has.
+    if (a.result.ok() && index < a.result.scene->objects.size()) {
+        const SceneObject& parsed = a.result.scene->objects[index];
+        const Pose pose = evaluateTrack(parsed.track, 0.0, parsed.rest);
+        text += "- at frame 0: position " + vec(pose.position) + ", rotation " + vec(pose.rotation) + "\n";
+    } else {
+        text += "- as created: position " + vec(o.rest.position) + ", rotation " + vec(o.rest.rotation) +
+                " (the scene has errors, so keys are not evaluated)\n";
+    }
+    return text;
+}
+
+std::string partHover(const Analysis& a, std::size_t index, int part) {
+    const SceneObject& o = a.index.objects[index].object;
+    const std::string_view name = kPartNames[static_cast<std::size_t>(part)];
+    std::string text = "**part** `" + o.name + "." + std::string(name) + "` of " +
+                       std::string(objectKindName(o.kind)) + " `" + o.name + "`\n";
+    if (!isModel(o.kind)) return text;
+    const ModelDef& model = modelOf(o.kind);
+    const ModelPart& mp = model.parts[static_cast<std::size_t>(part)];
+    const std::string parent =
+        mp.parent < 0 ? "the root" : kPartNames[static_cast<std::size_t>(mp.parent)];
+    text += "- pivot " + vec(mp.pivot) + " in " + parent + "'s frame\n";
+    for (const ModelShape& s : model.shapes) {
+        if (static_cast<int>(s.part) != part) continue;
+        text += "- " + shapeText(s) + " centred at " + vec(s.centre) + (s.ownColor ? " (keeps its colour)" : "") +
+                "\n";
+    }
+    const auto keys = keyCounts(a, index);
+    text += "- keys: " + std::to_string(keys[static_cast<std::size_t>(part + 1)]) + "\n";
+    return text;
+}
+
+}  // namespace
+
+Json hover(const Analysis& a, Position p) {
+    const SymbolAt at = symbolAt(a, p);
+    switch (at.kind) {
+        case SymbolAt::Kind::None:
+            return nullptr;
+        case SymbolAt::Kind::Command: {
+            const CommandDoc* doc = findCommandDoc(at.command);
+            if (!doc) return nullptr;
+            return markdown("```f2\n" + std::string(doc->syntax) + "\n```\n" + std::string(doc->meaning), at.range);
+        }
+        case SymbolAt::Kind::Object:
+            return markdown(objectHover(a, at.object), at.range);
+        case SymbolAt::Kind::Part:
+            return markdown(partHover(a, at.object, at.part), at.range);
+    }
+    return nullptr;
+}
+
+}  // namespace f2::lsp
