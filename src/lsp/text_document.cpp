@@ -51,23 +51,24 @@ std::size_t byteOffsetOfUtf16(std::string_view line, int character) {
 }
 
 TextDocument::TextDocument(std::string text, int version) : text_(std::move(text)), version_(version) {
-    std::string_view rest = text_;
     // Lines as the parser counts them: "\n" or "\r\n" ends a line. A client
     // counts a lone "\r" as a line end too, but the scene language does not.
+    std::size_t start = 0;
     for (;;) {
-        const std::size_t nl = rest.find('\n');
-        std::string_view line = rest.substr(0, nl);
-        if (line.ends_with('\r')) line.remove_suffix(1);
-        lines_.push_back(line);
-        if (nl == std::string_view::npos) break;
-        rest.remove_prefix(nl + 1);
+        const std::size_t nl = text_.find('\n', start);
+        std::size_t end = nl == std::string::npos ? text_.size() : nl;
+        if (end > start && text_[end - 1] == '\r') --end;
+        lines_.emplace_back(start, end - start);
+        if (nl == std::string::npos) break;
+        start = nl + 1;
     }
     bom_ = text_.starts_with(kUtf8Bom);
 }
 
 std::string_view TextDocument::line(int index) const {
     if (index < 0 || index >= lineCount()) return {};
-    return lines_[static_cast<std::size_t>(index)];
+    const auto [start, length] = lines_[static_cast<std::size_t>(index)];
+    return std::string_view(text_).substr(start, length);
 }
 
 std::size_t TextDocument::byteOfColumn(int index, int byteColumn) const {

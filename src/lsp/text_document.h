@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace f2::lsp {
@@ -63,7 +64,9 @@ class TextDocument {
 
     std::string text_;
     int version_ = 0;
-    std::vector<std::string_view> lines_;  ///< views into text_
+    /// Start and length in text_ of each line (offsets, not views, so that a
+    /// copied or moved document stays valid).
+    std::vector<std::pair<std::size_t, std::size_t>> lines_;
     bool bom_ = false;
 };
 

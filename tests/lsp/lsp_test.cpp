@@ -22,6 +22,8 @@ std::vector<MessageReader::Item> readAll(MessageReader& reader) {
     return items;
 }
 
+Analysis analysed(std::string text) { return analyze("file:///t/a.f2", TextDocument(std::move(text), 1)); }
+
 TEST(MessageReader, SplitsFramesFedByteByByte) {
     const std::string stream = frameMessage("{\"a\":1}") + "content-length:  2\r\nX-Other: y\r\n\r\n{}";
     MessageReader reader;
@@ -104,6 +106,32 @@ TEST(Positions, TokenRangesFromParserPlaces) {
     EXPECT_EQ(doc.lineCount(), 3);
 }
 
+TEST(Positions, ShortDocumentsSurviveCopiesAndMoves) {
+    // Short texts live inside the string object (small-string optimisation):
+    // lines kept as views would point into the old object after a move.
+    TextDocument a("/fps 1\n/x", 1);
+    TextDocument b = a;
+    TextDocument c = std::move(a);
+    a = TextDocument("zzzzzzzzzz", 2);
+    EXPECT_EQ(b.line(0), "/fps 1");
+    EXPECT_EQ(c.line(1), "/x");
+    EXPECT_EQ(a.line(0), "zzzzzzzzzz");
+}
+
+TEST(Server, HandlesALargeDocument) {
+    // 100,000 objects and keys: every request answers (no size-dependent failure).
+    std::string text = "/amb_light 1\n";
+    for (int i = 0; i < 50'000; ++i) {
+        text += "/sphere s" + std::to_string(i) + " 1 " + std::to_string(i) + " 0 0\n/key 1 s" + std::to_string(i) + "\n";
+    }
+    const Analysis a = analysed(text);
+    EXPECT_TRUE(a.result.ok());
+    const Json refs = references(a, {100'000, 8}, true);  // "/key 1 s49999"
+    ASSERT_TRUE(refs.is_array());
+    EXPECT_EQ(refs.size(), 2u);
+    EXPECT_EQ(documentSymbols(a).size(), 50'001u);
+}
+
 TEST(Changes, ApplyRangesInUtf16Units) {
     const std::string text = "/paint \xF0\x9F\x98\x80 1\n/fps 24\n";
     const Json change = {{"range", {{"start", {{"line", 0}, {"character", 7}}}, {"end", {{"line", 0}, {"character", 9}}}}},
@@ -116,7 +144,18 @@ TEST(Changes, ApplyRangesInUtf16Units) {
     EXPECT_THROW(applyChange(text, reversed), RequestError);
 }
 
-Analysis analysed(std::string text) { return analyze("file:///t/a.f2", TextDocument(std::move(text), 1)); }
+TEST(Diagnostics, WarningsAndErrorsWithTokenRanges) {
+    const Analysis a = analysed("/amb_light 1\n/sphere ball 10 0 0 0\n/key 5 ball\n/key 5 ball\n/fps 24x\n");
+    const Json published = publishDiagnostics(a);
+    ASSERT_EQ(published.size(), 1u);
+    EXPECT_EQ(published[0]["uri"], "file:///t/a.f2");
+    const Json& list = published[0]["diagnostics"];
+    ASSERT_EQ(list.size(), 2u) << list.dump();
+    EXPECT_EQ(list[0]["severity"], kSeverityWarning);
+    EXPECT_EQ(list[0]["range"], toJson(Range{{3, 5}, {3, 6}}));  // the frame of the later key
+    EXPECT_EQ(list[1]["severity"], kSeverityError);
+    EXPECT_EQ(list[1]["range"], toJson(Range{{4, 5}, {4, 8}}));
+}
 
 TEST(Outline, SymbolsListObjectsPartsCameraAndLights) {
     const Analysis a = analysed(

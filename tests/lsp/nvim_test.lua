@@ -24,9 +24,9 @@ check("diagnostics arrived", arrived, true)
 local got = vim.diagnostic.get(buf)
 table.sort(got, function(a, b) return a.lnum < b.lnum or (a.lnum == b.lnum and a.col < b.col) end)
 local want = {
-  { lnum = 3, col = 10, end_col = 14, message = "expected a number, got '\u{1F600}'" },
+  { lnum = 3, col = 10, end_col = 14, message = "expected a number, got '\u{1F600}' (it contains U+1F600 at column 11, but commands, names and numbers are plain ASCII)" },
   { lnum = 3, col = 15, end_col = 18, message = "green must be a whole number from 0 to 255, got 300" },
-  { lnum = 4, col = 10, end_col = 14, message = "unknown part 'lhnd' (expected body, head, lhand or rhand)" },
+  { lnum = 4, col = 10, end_col = 14, message = "unknown part 'lhnd' (did you mean 'lhand'?)" },
 }
 check("number of diagnostics", #got, #want)
 for i, w in ipairs(want) do

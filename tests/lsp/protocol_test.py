@@ -36,6 +36,7 @@ def doc_params(line, character, **extra):
 
 BROKEN = "\n".join([
     "/camera 320 240 0.5",
+    "/amb_light 0.3",
     "/robot r1 0 0 200 0 180 0",
     "/human h1 300 0 150 0 90 0  # приве́т",
     "/paint h1 \U0001F600 300 0",     # a 4-byte character: 2 UTF-16 units
@@ -78,12 +79,13 @@ def main():
     published = client.next_notification("textDocument/publishDiagnostics")["params"]
     expect("diagnostics of the broken scene", published, {
         "uri": URI, "version": 1, "diagnostics": [
-            {"range": rng(3, 10, 12), "severity": 1, "source": "f2",
-             "message": "expected a number, got '\U0001F600'"},
-            {"range": rng(3, 13, 16), "severity": 1, "source": "f2",
+            {"range": rng(4, 10, 12), "severity": 1, "source": "f2",
+             "message": "expected a number, got '\U0001F600' (it contains U+1F600 at column 11, "
+                        "but commands, names and numbers are plain ASCII)"},
+            {"range": rng(4, 13, 16), "severity": 1, "source": "f2",
              "message": "green must be a whole number from 0 to 255, got 300"},
-            {"range": rng(4, 10, 14), "severity": 1, "source": "f2",
-             "message": "unknown part 'lhnd' (expected body, head, lhand or rhand)"},
+            {"range": rng(5, 10, 14), "severity": 1, "source": "f2",
+             "message": "unknown part 'lhnd' (did you mean 'lhand'?)"},
         ]})
 
     # didChange (whole text) fixes them.
@@ -92,41 +94,41 @@ def main():
     published = client.next_notification("textDocument/publishDiagnostics")["params"]
     expect("diagnostics after the fix", published, {"uri": URI, "version": 2, "diagnostics": []})
 
-    # Completion after `r1.` (line 4 is "/key 0 r1.lhand"): the robot's parts.
-    reply = client.request("textDocument/completion", doc_params(4, 10))
+    # Completion after `r1.` (line 5 is "/key 0 r1.lhand"): the robot's parts.
+    reply = client.request("textDocument/completion", doc_params(5, 10))
     expect("completion after r1.", reply["result"], [
         {"label": "r1." + part, "kind": 5, "detail": "part of robot r1",
-         "textEdit": {"range": rng(4, 7, 10), "newText": "r1." + part}}
+         "textEdit": {"range": rng(5, 7, 10), "newText": "r1." + part}}
         for part in ("body", "head", "lhand", "rhand")])
 
-    # Hover on a name (line 5 is "/key 5 r1 0 0 200 0 135 0").
-    reply = client.request("textDocument/hover", doc_params(5, 8))
+    # Hover on a name (line 6 is "/key 5 r1 0 0 200 0 135 0").
+    reply = client.request("textDocument/hover", doc_params(6, 8))
     expect("hover on r1", reply["result"], {
-        "range": rng(5, 7, 9),
+        "range": rng(6, 7, 9),
         "contents": {"kind": "markdown", "value":
-                     "**robot** `r1`, created at line 2:\n"
+                     "**robot** `r1`, created at line 3:\n"
                      "```f2\n/robot r1 0 0 200 0 180 0\n```\n"
                      "- keys: 1 (own), body 0, head 0, lhand 1, rhand 0\n"
                      "- parts: body, head, lhand, rhand\n"
                      "- at frame 0: position (0, 0, 200), rotation (0, 135, 0)\n"}})
 
-    # Definition from a use in `r1.head` (line 6).
-    reply = client.request("textDocument/definition", doc_params(6, 8))
-    expect("definition of r1", reply["result"], {"uri": URI, "range": rng(1, 7, 9)})
+    # Definition from a use in `r1.head` (line 7).
+    reply = client.request("textDocument/definition", doc_params(7, 8))
+    expect("definition of r1", reply["result"], {"uri": URI, "range": rng(2, 7, 9)})
 
-    reply = client.request("textDocument/references", doc_params(6, 8, context={"includeDeclaration": True}))
+    reply = client.request("textDocument/references", doc_params(7, 8, context={"includeDeclaration": True}))
     expect("references of r1", reply["result"],
-           [{"uri": URI, "range": rng(line, 7, 9)} for line in (1, 4, 5, 6)])
+           [{"uri": URI, "range": rng(line, 7, 9)} for line in (2, 5, 6, 7)])
 
     # Rename r1 -> f2 everywhere; bad names are refused.
-    reply = client.request("textDocument/prepareRename", doc_params(4, 8))
-    expect("prepareRename", reply["result"], {"range": rng(4, 7, 9), "placeholder": "r1"})
-    reply = client.request("textDocument/rename", doc_params(4, 8, newName="f2"))
+    reply = client.request("textDocument/prepareRename", doc_params(5, 8))
+    expect("prepareRename", reply["result"], {"range": rng(5, 7, 9), "placeholder": "r1"})
+    reply = client.request("textDocument/rename", doc_params(5, 8, newName="f2"))
     expect("rename r1 -> f2", reply["result"], {"changes": {URI: [
-        {"range": rng(line, 7, 9), "newText": "f2"} for line in (1, 4, 5, 6)]}})
-    reply = client.request("textDocument/rename", doc_params(4, 8, newName="2x"))
+        {"range": rng(line, 7, 9), "newText": "f2"} for line in (2, 5, 6, 7)]}})
+    reply = client.request("textDocument/rename", doc_params(5, 8, newName="2x"))
     expect("rename to an invalid name", reply.get("error", {}).get("code"), -32602)
-    reply = client.request("textDocument/rename", doc_params(4, 8, newName="h1"))
+    reply = client.request("textDocument/rename", doc_params(5, 8, newName="h1"))
     expect("rename to an existing name", reply.get("error", {}).get("code"), -32803)
 
     # Whatever a client sends, an answer and no crash.
