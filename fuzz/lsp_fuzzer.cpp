@@ -4,7 +4,7 @@
 //    with bad headers), cut into chunks and fed to the framing reader; every
 //    body goes to an initialized server;
 //  - odd: the rest is a scene (up to the first NUL byte) opened as a
-//    document, then each following byte pair is a position at which every
+//    document, then each of up to 8 following byte pairs is a position at which every
 //    feature is asked (completion, hover, definition, references, rename,
 //    symbols, folding, formatting) and an edit is applied there.
 //
@@ -98,7 +98,7 @@ void documentMode(f2::lsp::Server& server, std::string_view bytes) {
     if (nul == std::string_view::npos) return;
     const std::string_view positions = bytes.substr(nul + 1);
     long long id = 10;
-    for (std::size_t k = 0; k + 1 < positions.size() && k < 64; k += 2) {
+    for (std::size_t k = 0; k + 1 < positions.size() && k < 16; k += 2) {
         // Lines and characters around and beyond the text, negative ones included.
         const int line = static_cast<signed char>(positions[k]) / 4;
         const int character = static_cast<signed char>(positions[k + 1]);

@@ -37,9 +37,12 @@ async function openInViewer() {
 async function renderFrame() {
   const scene = await activeScene();
   if (!scene) return;
+  // On a /key line, "this frame" is that key's frame.
+  const editor = vscode.window.activeTextEditor;
+  const key = /^\s*\/key\s+(\d+(?:\.\d+)?)(?=\s|$)/.exec(editor.document.lineAt(editor.selection.active.line).text);
   const frame = await vscode.window.showInputBox({
     prompt: "Frame to render",
-    value: "0",
+    value: key ? key[1] : "0",
     validateInput: (v) => (/^\d+(\.\d+)?$/.test(v.trim()) ? undefined : "a frame number, such as 0 or 120"),
   });
   if (frame === undefined) return;

@@ -19,29 +19,15 @@ std::string number(double v) {
 
 std::string vec(const Vec3& v) { return "(" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + ")"; }
 
-std::string shapeText(const ModelShape& s) {
-    switch (s.kind) {
+/// "sphere r 6", "cylinder r 10, h 100", "box 60 × 50 × 50".
+std::string shapeText(ShapeKind kind, const Vec3& size) {
+    switch (kind) {
         case ShapeKind::Sphere:
-            return "sphere r " + number(s.size.x);
+            return "sphere r " + number(size.x);
         case ShapeKind::Cylinder:
-            return "cylinder r " + number(s.size.x) + ", h " + number(s.size.y);
+            return "cylinder r " + number(size.x) + ", h " + number(size.y);
         case ShapeKind::Box:
-            return "box " + number(s.size.x) + " × " + number(s.size.y) + " × " + number(s.size.z);
-    }
-    return {};
-}
-
-std::string sizeText(const SceneObject& o) {
-    switch (o.kind) {
-        case ObjectKind::Sphere:
-            return "radius " + number(o.size.x);
-        case ObjectKind::Cylinder:
-            return "radius " + number(o.size.x) + ", height " + number(o.size.y);
-        case ObjectKind::Box:
-            return "sides " + number(o.size.x) + " × " + number(o.size.y) + " × " + number(o.size.z);
-        case ObjectKind::Robot:
-        case ObjectKind::Human:
-            break;
+            return "box " + number(size.x) + " × " + number(size.y) + " × " + number(size.z);
     }
     return {};
 }
@@ -66,7 +52,7 @@ std::string objectHover(const Analysis& a, std::size_t index) {
     } else {
         text += "\n\n";
     }
-    if (const std::string size = sizeText(o); !size.empty()) text += "- " + size + "\n";
+    if (!isModel(o.kind)) text += "- " + shapeText(shapeKindOf(o.kind), o.size) + "\n";
     const auto keys = keyCounts(a, index);
     text += "- keys: " + std::to_string(keys[0]);
     if (isModel(o.kind)) {
@@ -103,7 +89,7 @@ std::string partHover(const Analysis& a, std::size_t index, int part) {
     text += "- pivot " + vec(mp.pivot) + " in " + parent + "'s frame\n";
     for (const ModelShape& s : model.shapes) {
         if (static_cast<int>(s.part) != part) continue;
-        text += "- " + shapeText(s) + " centred at " + vec(s.centre) + (s.ownColor ? " (keeps its colour)" : "") +
+        text += "- " + shapeText(s.kind, s.size) + " centred at " + vec(s.centre) + (s.ownColor ? " (keeps its colour)" : "") +
                 "\n";
     }
     const auto keys = keyCounts(a, index);

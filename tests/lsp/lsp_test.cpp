@@ -202,6 +202,21 @@ TEST(KeyFormat, AlignsRunsOfKeysIntoColumns) {
     EXPECT_TRUE(formatKeys(analysed(text)).empty());
 }
 
+TEST(Hover, PrimitiveSizeCommandSyntaxAndBrokenScenes) {
+    const Analysis a = analysed("/amb_light 1\n/box crate 10 20 30 1 2 3\n/key 4 crate 0 0 0 0 90 0\n/fps x\n");
+    const Json onName = hover(a, {2, 9});
+    ASSERT_TRUE(onName.is_object());
+    const std::string text = onName["contents"]["value"];
+    EXPECT_NE(text.find("**box** `crate`, created at line 2"), std::string::npos) << text;
+    EXPECT_NE(text.find("- box 10 × 20 × 30\n- keys: 1\n"), std::string::npos) << text;
+    // The scene has an error (line 4): the pose shown is the one it was created with.
+    EXPECT_NE(text.find("as created: position (1, 2, 3), rotation (0, 0, 0)"), std::string::npos) << text;
+    const Json onCommand = hover(a, {1, 2});
+    EXPECT_EQ(onCommand["range"], toJson(Range{{1, 0}, {1, 4}}));
+    EXPECT_EQ(onCommand["contents"]["value"].get<std::string>().rfind("```f2\n/box <name> <sx>", 0), 0u);
+    EXPECT_TRUE(hover(a, {1, 17}).is_null());  // a number
+}
+
 TEST(Completion, OffersTheParsersCommandsAsSnippets) {
     const Analysis a = analysed("/ro\n");
     const Json items = completion(a, {0, 3});
