@@ -75,6 +75,7 @@ Analysis analyze(std::string uri, TextDocument document) {
     a.uri = std::move(uri);
     a.document = std::move(document);
     a.result = parseScene(a.document.text(), a.path, ParseLimits{}, a.index);
+    a.variables = scanVariables(a.document);
     return a;
 }
 
@@ -110,13 +111,14 @@ SymbolAt symbolAt(const Analysis& a, Position p) {
                     const std::string_view line = a.document.line(p.line);
                     at = {SymbolAt::Kind::Part, object, suffix->part, {},
                           {{p.line, utf16Length(line.substr(0, suffix->begin))},
-                           {p.line, utf16Length(line.substr(0, suffix->end))}}};
+                           {p.line, utf16Length(line.substr(0, suffix->end))}},
+                          {}};
                     return true;
                 }
             }
             return false;
         }
-        at = {SymbolAt::Kind::Object, object, -1, {}, a.rangeOf(span)};
+        at = {SymbolAt::Kind::Object, object, -1, {}, a.rangeOf(span), {}};
         return true;
     };
     for (std::size_t i = 0; i < a.index.objects.size(); ++i) {
@@ -124,6 +126,26 @@ SymbolAt symbolAt(const Analysis& a, Position p) {
     }
     for (const NameUse& use : a.index.uses) {
         if (onName(use.name, use.object)) return at;
+    }
+
+    // A variable, or the path of an /include.
+    const std::string_view lineText = a.document.line(p.line);
+    auto rangeInLine = [&](std::size_t begin, std::size_t end) {
+        return Range{{p.line, utf16Length(lineText.substr(0, begin))}, {p.line, utf16Length(lineText.substr(0, end))}};
+    };
+    for (const VariableOccurrence& v : a.variables) {
+        if (v.line == p.line && byte >= v.begin && byte <= v.end) {
+            at.kind = SymbolAt::Kind::Variable;
+            at.range = rangeInLine(v.begin, v.end);
+            at.text = v.name;
+            return at;
+        }
+    }
+    if (const auto include = includeOn(a.document, p.line); include && byte >= include->begin && byte <= include->end) {
+        at.kind = SymbolAt::Kind::Include;
+        at.range = rangeInLine(include->begin, include->end);
+        at.text = include->path;
+        return at;
     }
 
     // A command word.

@@ -10,6 +10,7 @@
 
 #include "core/parse/parser.h"
 #include "core/parse/symbol_index.h"
+#include "lsp/source_scan.h"
 #include "lsp/text_document.h"
 
 namespace f2::lsp {
@@ -26,6 +27,7 @@ struct Analysis {
     TextDocument document;
     ParseResult result;
     SymbolIndex index;
+    std::vector<VariableOccurrence> variables;  ///< of this document's text
 
     /// True when a place is in this document (not in an included file).
     bool inDocument(const SourceLoc& loc) const { return loc.file == path; }
@@ -39,11 +41,12 @@ Analysis analyze(std::string uri, TextDocument document);
 
 /// What is under a position.
 struct SymbolAt {
-    enum class Kind { None, Command, Object, Part } kind = Kind::None;
+    enum class Kind { None, Command, Object, Part, Variable, Include } kind = Kind::None;
     std::size_t object = 0;     ///< Object and Part: index into index.objects
     int part = -1;              ///< Part: PartId index
     std::string_view command;   ///< Command: its name
     Range range;                ///< the token (or the name or part within it)
+    std::string text;           ///< Variable: its name; Include: the path as written
 };
 
 SymbolAt symbolAt(const Analysis& a, Position p);

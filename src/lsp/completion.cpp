@@ -1,6 +1,8 @@
 // textDocument/completion: commands (as snippets), object names, parts after
 // `name.`, interpolation modes, `camera` — what fits the argument under the cursor.
 #include <algorithm>
+#include <cctype>
+#include <filesystem>
 
 #include "core/parse/lexer.h"
 #include "core/scene/scene_desc.h"
@@ -80,6 +82,60 @@ void addParts(Json& items, const Analysis& a, std::string_view objectName, const
     }
 }
 
+/// Inside `( … )` or `{ … }`: the variables defined above, pi and the functions.
+Json expressionItems(const Analysis& a, Position p, std::string_view line, std::size_t byte) {
+    std::size_t begin = byte;
+    while (begin > 0 && (std::isalnum(static_cast<unsigned char>(line[begin - 1])) || line[begin - 1] == '_')) --begin;
+    const Range replace{{p.line, utf16Length(line.substr(0, begin))}, p};
+    Json items = Json::array();
+    std::vector<std::string> seen;
+    for (const VariableOccurrence& v : a.variables) {
+        if (!v.definition || v.line > p.line || std::find(seen.begin(), seen.end(), v.name) != seen.end()) continue;
+        seen.push_back(v.name);
+        items.push_back(item(v.name, kCompletionVariable,
+                             (v.loop ? "loop variable, line " : "variable, line ") + std::to_string(v.line + 1),
+                             replace, v.name));
+    }
+    items.push_back(item("pi", kCompletionVariable, "3.14159…", replace, "pi"));
+    for (std::string_view f : expressionFunctions()) {
+        items.push_back(item(f, kCompletionFunction, f == "atan2" ? "atan2(y, x), degrees" : "function", replace,
+                             std::string(f) + "($1)", true));
+    }
+    return items;
+}
+
+/// The argument of `/include`: directories and .f2 files next to the typed path.
+Json includeItems(const Analysis& a, Position p, std::string_view partial, std::size_t begin) {
+    namespace fs = std::filesystem;
+    const bool quoted = partial.starts_with('"');
+    const std::string_view typed = quoted ? partial.substr(1) : partial;
+    const std::size_t slash = typed.rfind('/');
+    const std::string_view directory = slash == std::string_view::npos ? "" : typed.substr(0, slash + 1);
+    const std::string_view rest = slash == std::string_view::npos ? typed : typed.substr(slash + 1);
+    const std::size_t restBegin = begin + partial.size() - rest.size();
+    const std::string_view line = a.document.line(p.line);
+    const Range replace{{p.line, utf16Length(line.substr(0, restBegin))}, p};
+    Json items = Json::array();
+    std::error_code ec;
+    const fs::path where = resolveInclude(a.path, directory.empty() ? "." : directory);
+    constexpr int kMaxEntries = 200;
+    int count = 0;
+    for (fs::directory_iterator it(where, ec), end; !ec && it != end && count < kMaxEntries; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        if (name.starts_with('.')) continue;
+        std::error_code typeError;
+        if (it->is_directory(typeError)) {
+            items.push_back(item(name + "/", kCompletionFile, "directory", replace, name + "/"));
+        } else if (it->path().extension() == ".f2" && it->path() != fs::path(a.path)) {
+            items.push_back(item(name, kCompletionFile, "scene file", replace, name));
+        } else {
+            continue;
+        }
+        ++count;
+    }
+    return items;
+}
+
 }  // namespace
 
 Json completion(const Analysis& a, Position p) {
@@ -91,6 +147,9 @@ Json completion(const Analysis& a, Position p) {
     if (!typing) return items;
     const Range replace{{p.line, utf16Length(line.substr(0, typing->begin))}, p};
     const LanguageFeatures& language = languageFeatures();
+    if (typing->index > 0 && insideExpression(line, static_cast<std::size_t>(byteLong))) {
+        return expressionItems(a, p, line, static_cast<std::size_t>(byteLong));
+    }
 
     if (typing->index == 0) {
         for (const CommandDoc& doc : commandDocs()) {
@@ -142,9 +201,11 @@ Json completion(const Analysis& a, Position p) {
             // A /key may end with a mode after the target or after the six numbers.
             if (doc->name == "/key" && arg == 2 && language.keyModes) addModes(items, replace);
             break;
+        case ArgKind::Path:
+            if (arg == 0) return includeItems(a, p, typing->partial, typing->begin);
+            break;
         case ArgKind::NewName:
         case ArgKind::Variable:
-        case ArgKind::Path:
             break;
     }
     return items;

@@ -1,6 +1,7 @@
 // textDocument/hover: a command's syntax and meaning; an object's kind, where
 // it is created, its parts and keys and its pose at frame 0; a part's shape and pivot.
 #include <cstdio>
+#include <filesystem>
 
 #include "core/anim/track.h"
 #include "core/scene/models.h"
@@ -97,6 +98,20 @@ std::string partHover(const Analysis& a, std::size_t index, int part) {
     return text;
 }
 
+std::string variableHover(const Analysis& a, const std::string& name, int line) {
+    const auto def = definitionOf(a.variables, name, line);
+    if (!def) return "**variable** `" + name + "`: not defined in this file (in an included file, or unknown)";
+    return "**" + std::string(def->loop ? "loop variable" : "variable") + "** `" + name + "`, defined at line " +
+           std::to_string(def->line + 1) + ":\n```f2\n" + std::string(a.document.line(def->line)) + "\n```";
+}
+
+std::string includeHover(const Analysis& a, const std::string& path) {
+    const std::string file = resolveInclude(a.path, path);
+    std::error_code ec;
+    const bool exists = std::filesystem::is_regular_file(file, ec);
+    return "**include** `" + file + "`" + (exists ? "" : " (not a readable file)");
+}
+
 }  // namespace
 
 Json hover(const Analysis& a, Position p) {
@@ -113,6 +128,10 @@ Json hover(const Analysis& a, Position p) {
             return markdown(objectHover(a, at.object), at.range);
         case SymbolAt::Kind::Part:
             return markdown(partHover(a, at.object, at.part), at.range);
+        case SymbolAt::Kind::Variable:
+            return markdown(variableHover(a, at.text, p.line), at.range);
+        case SymbolAt::Kind::Include:
+            return markdown(includeHover(a, at.text), at.range);
     }
     return nullptr;
 }

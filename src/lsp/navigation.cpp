@@ -46,15 +46,52 @@ std::optional<std::size_t> objectAt(const Analysis& a, Position p) {
     return at.object;
 }
 
+Range rangeOf(const Analysis& a, const VariableOccurrence& v) {
+    const std::string_view line = a.document.line(v.line);
+    return {{v.line, utf16Length(line.substr(0, v.begin))}, {v.line, utf16Length(line.substr(0, v.end))}};
+}
+
+/// References of the variable under the cursor, in text order.
+Json variableReferences(const Analysis& a, const std::string& name, bool includeDeclaration) {
+    Json out = Json::array();
+    for (const VariableOccurrence& v : a.variables) {
+        if (v.name == name && (includeDeclaration || !v.definition)) out.push_back(location(a.uri, rangeOf(a, v)));
+    }
+    return out;
+}
+
+Json renameVariable(const Analysis& a, const std::string& name, const std::string& newName) {
+    if (newName == "pi") throw RequestError(kRequestFailed, "'pi' is predefined and cannot be a variable");
+    if (newName != name && definitionOf(a.variables, newName, a.document.lineCount())) {
+        throw RequestError(kRequestFailed, "a variable named '" + newName + "' already exists");
+    }
+    Json edits = Json::array();
+    for (const VariableOccurrence& v : a.variables) {
+        if (v.name == name) edits.push_back({{"range", toJson(rangeOf(a, v))}, {"newText", newName}});
+    }
+    return {{"changes", {{a.uri, std::move(edits)}}}};
+}
+
 }  // namespace
 
 Json definition(const Analysis& a, Position p) {
+    const SymbolAt at = symbolAt(a, p);
+    if (at.kind == SymbolAt::Kind::Variable) {
+        const auto def = definitionOf(a.variables, at.text, p.line);
+        return def ? location(a.uri, rangeOf(a, *def)) : Json();
+    }
+    if (at.kind == SymbolAt::Kind::Include) {
+        return location(uriFromPath(resolveInclude(a.path, at.text)), Range{});
+    }
     const auto object = objectAt(a, p);
     if (!object) return nullptr;
     return locationOf(a, a.index.objects[*object].name);
 }
 
 Json references(const Analysis& a, Position p, bool includeDeclaration) {
+    if (const SymbolAt at = symbolAt(a, p); at.kind == SymbolAt::Kind::Variable) {
+        return variableReferences(a, at.text, includeDeclaration);
+    }
     const auto object = objectAt(a, p);
     if (!object) return nullptr;
     Json out = Json::array();
@@ -64,19 +101,23 @@ Json references(const Analysis& a, Position p, bool includeDeclaration) {
 
 Json prepareRename(const Analysis& a, Position p) {
     const SymbolAt at = symbolAt(a, p);
+    if (at.kind == SymbolAt::Kind::Variable) return {{"range", toJson(at.range)}, {"placeholder", at.text}};
     if (at.kind != SymbolAt::Kind::Object) return nullptr;
     return {{"range", toJson(at.range)}, {"placeholder", a.index.objects[at.object].object.name}};
 }
 
 Json rename(const Analysis& a, Position p, const std::string& newName) {
-    const auto object = objectAt(a, p);
-    if (!object) throw RequestError(kRequestFailed, "there is no object name here to rename");
-    const std::string& oldName = a.index.objects[*object].object.name;
     if (!isValidName(newName)) {
         throw RequestError(kInvalidParams, "'" + newName +
                                                "' is not a valid name (a letter or '_', then letters, digits "
                                                "or '_')");
     }
+    if (const SymbolAt at = symbolAt(a, p); at.kind == SymbolAt::Kind::Variable) {
+        return renameVariable(a, at.text, newName);
+    }
+    const auto object = objectAt(a, p);
+    if (!object) throw RequestError(kRequestFailed, "there is no object or variable name here to rename");
+    const std::string& oldName = a.index.objects[*object].object.name;
     if (newName != oldName && findObject(a.index, newName)) {
         throw RequestError(kRequestFailed, "an object named '" + newName + "' already exists");
     }

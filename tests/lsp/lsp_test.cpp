@@ -3,6 +3,10 @@
 // (symbols, folding, key alignment, command completion, robustness).
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
 #include <random>
 #include <string>
 
@@ -11,6 +15,7 @@
 #include "lsp/features.h"
 #include "lsp/message_reader.h"
 #include "lsp/server.h"
+#include "lsp/source_scan.h"
 
 namespace f2::lsp {
 namespace {
@@ -215,6 +220,71 @@ TEST(Hover, PrimitiveSizeCommandSyntaxAndBrokenScenes) {
     EXPECT_EQ(onCommand["range"], toJson(Range{{1, 0}, {1, 4}}));
     EXPECT_EQ(onCommand["contents"]["value"].get<std::string>().rfind("```f2\n/box <name> <sx>", 0), 0u);
     EXPECT_TRUE(hover(a, {1, 17}).is_null());  // a number
+}
+
+// Second edition (SPEC 9.4, 9.5): variables and includes are found in the text.
+constexpr const char* kLoops =
+    "/let n 3\n"                                 // 0
+    "/repeat i 1 (n)  # (ignored) \n"           // 1
+    "  /sphere s{i} 10 (i * 30 + sin(n)) 0 0\n"  // 2
+    "/end\n"                                     // 3
+    "/let n (n + 1)\n"                           // 4
+    "/fps (n)\n";                                // 5
+
+TEST(Variables, FoundInTheText) {
+    const TextDocument doc(kLoops, 1);
+    const auto all = scanVariables(doc);
+    std::vector<std::string> seen;
+    for (const VariableOccurrence& v : all) {
+        seen.push_back(std::to_string(v.line) + ":" + v.name + (v.definition ? "=" : ""));
+    }
+    EXPECT_EQ(seen, (std::vector<std::string>{"0:n=", "1:i=", "1:n", "2:i", "2:i", "2:n", "4:n=", "4:n", "5:n"}));
+    EXPECT_EQ(definitionOf(all, "n", 5)->line, 4);
+    EXPECT_EQ(definitionOf(all, "n", 2)->line, 0);
+    EXPECT_TRUE(definitionOf(all, "i", 2)->loop);
+    EXPECT_FALSE(definitionOf(all, "zz", 2));
+}
+
+TEST(Variables, DefinitionReferencesRenameHoverCompletion) {
+    const Analysis a = analysed(kLoops);
+    // From the use of n in "(i * 30 + sin(n))" (line 2, column 32) to "/let n 3".
+    EXPECT_EQ(definition(a, {2, 32}), location(a.uri, Range{{0, 5}, {0, 6}}));
+    EXPECT_EQ(definition(a, {5, 6}), location(a.uri, Range{{4, 5}, {4, 6}}));
+    EXPECT_EQ(references(a, {2, 32}, false).size(), 4u);
+    EXPECT_EQ(references(a, {2, 32}, true).size(), 6u);
+    const Json edit = rename(a, {2, 13}, "k");
+    ASSERT_EQ(edit["changes"][a.uri].size(), 3u);  // the /repeat's i and two uses
+    EXPECT_EQ(edit["changes"][a.uri][0]["range"], toJson(Range{{1, 8}, {1, 9}}));
+    EXPECT_THROW(rename(a, {2, 13}, "pi"), RequestError);
+    EXPECT_THROW(rename(a, {2, 13}, "n"), RequestError);
+    EXPECT_EQ(prepareRename(a, {5, 6})["placeholder"], "n");
+    const std::string text = hover(a, {2, 13})["contents"]["value"];
+    EXPECT_EQ(text, "**loop variable** `i`, defined at line 2:\n```f2\n/repeat i 1 (n)  # (ignored) \n```");
+    // In an expression: the variables defined so far, pi and the functions.
+    const Json items = completion(a, {2, 20});
+    ASSERT_GE(items.size(), 3u);
+    EXPECT_EQ(items[0]["label"], "n");
+    EXPECT_EQ(items[1]["label"], "i");
+    EXPECT_EQ(items[2]["label"], "pi");
+    EXPECT_EQ(items[3]["label"], "sin");
+    EXPECT_EQ(items[3]["textEdit"]["newText"], "sin($1)");
+}
+
+TEST(Includes, DefinitionHoverAndPathCompletion) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("f2_lsp_include_" + std::to_string(::getpid()));
+    fs::create_directories(dir / "parts");
+    std::ofstream(dir / "parts" / "floor.f2") << "/box floor 10 10 10 0 0 0\n";
+    std::ofstream(dir / "parts" / "notes.txt") << "x";
+    const std::string main = (dir / "main.f2").string();
+    const Analysis a = analyze(uriFromPath(main), TextDocument("/include \"parts/floor.f2\"\n/include parts/\n", 1));
+    EXPECT_EQ(definition(a, {0, 12}), location(uriFromPath((dir / "parts" / "floor.f2").string()), Range{}));
+    EXPECT_EQ(hover(a, {0, 12})["contents"]["value"], "**include** `" + (dir / "parts" / "floor.f2").string() + "`");
+    const Json items = completion(a, {1, 15});
+    ASSERT_EQ(items.size(), 1u);  // floor.f2; not the .txt
+    EXPECT_EQ(items[0]["label"], "floor.f2");
+    EXPECT_EQ(items[0]["textEdit"]["range"], toJson(Range{{1, 15}, {1, 15}}));
+    fs::remove_all(dir);
 }
 
 TEST(Completion, OffersTheParsersCommandsAsSnippets) {
