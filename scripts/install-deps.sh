@@ -8,8 +8,10 @@ PACKAGES=(
   g++ cmake ninja-build pkg-config git
   # libraries
   libpng-dev libcli11-dev qt6-base-dev libgl-dev libegl-dev nlohmann-json3-dev
-  # tests and benchmarks
-  libgtest-dev libbenchmark-dev locales xvfb xauth imagemagick x11-apps
+  # tests and benchmarks (GNU parallel: the render-farm test)
+  libgtest-dev libbenchmark-dev locales xvfb xauth imagemagick x11-apps parallel
+  # the Embree peer renderer f2 is compared with (bench/embree_peer)
+  libembree-dev libtbb-dev
   # the language server's end-to-end test with a real client
   neovim
   # video and POV-Ray output, plots for `f2 bench --study`
