@@ -121,14 +121,7 @@ SymbolAt symbolAt(const Analysis& a, Position p) {
         at = {SymbolAt::Kind::Object, object, -1, {}, a.rangeOf(span), {}};
         return true;
     };
-    for (std::size_t i = 0; i < a.index.objects.size(); ++i) {
-        if (onName(a.index.objects[i].name, i)) return at;
-    }
-    for (const NameUse& use : a.index.uses) {
-        if (onName(use.name, use.object)) return at;
-    }
-
-    // A variable, or the path of an /include.
+    // A variable (also inside the braces of a name such as s{i}), or the path of an /include.
     const std::string_view lineText = a.document.line(p.line);
     auto rangeInLine = [&](std::size_t begin, std::size_t end) {
         return Range{{p.line, utf16Length(lineText.substr(0, begin))}, {p.line, utf16Length(lineText.substr(0, end))}};
@@ -146,6 +139,13 @@ SymbolAt symbolAt(const Analysis& a, Position p) {
         at.range = rangeInLine(include->begin, include->end);
         at.text = include->path;
         return at;
+    }
+
+    for (std::size_t i = 0; i < a.index.objects.size(); ++i) {
+        if (onName(a.index.objects[i].name, i)) return at;
+    }
+    for (const NameUse& use : a.index.uses) {
+        if (onName(use.name, use.object)) return at;
     }
 
     // A command word.

@@ -268,6 +268,11 @@ TEST(Variables, DefinitionReferencesRenameHoverCompletion) {
     EXPECT_EQ(items[2]["label"], "pi");
     EXPECT_EQ(items[3]["label"], "sin");
     EXPECT_EQ(items[3]["textEdit"]["newText"], "sin($1)");
+    // The name s{i} is the objects s1, s2, s3; the parser sees it written as `s{i}`.
+    const std::string object = hover(a, {2, 10})["contents"]["value"];
+    EXPECT_EQ(object.rfind("**sphere** `s1`, created at line 3", 0), 0u) << object;
+    EXPECT_EQ(hover(a, {2, 10})["range"], toJson(Range{{2, 10}, {2, 14}}));
+    EXPECT_THROW(rename(a, {2, 10}, "t"), RequestError);  // written as an expression
 }
 
 TEST(Includes, DefinitionHoverAndPathCompletion) {
@@ -284,6 +289,24 @@ TEST(Includes, DefinitionHoverAndPathCompletion) {
     ASSERT_EQ(items.size(), 1u);  // floor.f2; not the .txt
     EXPECT_EQ(items[0]["label"], "floor.f2");
     EXPECT_EQ(items[0]["textEdit"]["range"], toJson(Range{{1, 15}, {1, 15}}));
+    fs::remove_all(dir);
+}
+
+TEST(Includes, DiagnosticsInAnIncludedFileAreItsOwn) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("f2_lsp_diag_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    std::ofstream(dir / "part.f2") << "# \xD0\xBF\n/sphere ball 1 0 0 0\n/key 0 bal\n";
+    const Analysis a = analyze(uriFromPath((dir / "main.f2").string()),
+                               TextDocument("/amb_light 1\n/include part.f2\n/key 1 ball\n", 1));
+    const Json published = publishDiagnostics(a);
+    ASSERT_EQ(published.size(), 2u) << published.dump();
+    EXPECT_EQ(published[0]["diagnostics"], Json::array());
+    EXPECT_EQ(published[1]["uri"], uriFromPath((dir / "part.f2").string()));
+    ASSERT_EQ(published[1]["diagnostics"].size(), 1u);
+    EXPECT_EQ(published[1]["diagnostics"][0]["range"], toJson(Range{{2, 7}, {2, 10}}));
+    // The object created in the included file: definition goes there.
+    EXPECT_EQ(definition(a, {2, 8}), location(uriFromPath((dir / "part.f2").string()), Range{{1, 8}, {1, 12}}));
     fs::remove_all(dir);
 }
 
