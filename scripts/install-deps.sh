@@ -8,8 +8,10 @@ PACKAGES=(
   g++ cmake ninja-build pkg-config git
   # libraries
   libpng-dev libcli11-dev qt6-base-dev libgl-dev libegl-dev
-  # tests and benchmarks
-  libgtest-dev libbenchmark-dev locales xvfb xauth imagemagick x11-apps
+  # tests and benchmarks (GNU parallel: the render-farm test)
+  libgtest-dev libbenchmark-dev locales xvfb xauth imagemagick x11-apps parallel
+  # the Embree peer renderer f2 is compared with (bench/embree_peer)
+  libembree-dev libtbb-dev
   # video and POV-Ray output, plots for `f2 bench --study`
   ffmpeg povray gnuplot-nox
   # fuzzing (clang's libFuzzer runtime)

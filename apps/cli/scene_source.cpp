@@ -5,6 +5,7 @@
 
 #include "core/parse/parser.h"
 #include "core/scene/default_scene.h"
+#include "core/scene/limits.h"
 
 namespace f2::cli {
 
@@ -13,7 +14,8 @@ std::optional<LoadedScene> loadScene(const std::string& path) {
     ParseResult result = embedded ? parseScene(defaultSceneText(), kDefaultSceneName) : parseSceneFile(path);
     for (const Diagnostic& d : result.diagnostics) std::cerr << d.format() << '\n';
     if (!result.ok()) return std::nullopt;
-    return LoadedScene{std::move(*result.scene), embedded ? std::string(kDefaultSceneName) : path};
+    return LoadedScene{std::move(*result.scene), embedded ? std::string(kDefaultSceneName) : path,
+                       std::move(result.files), result.linesInFiles, result.linesRead};
 }
 
 bool parseSize(const std::string& text, int& width, int& height, std::string& error) {
@@ -26,8 +28,9 @@ bool parseSize(const std::string& text, int& width, int& height, std::string& er
         error = "--size: expected WIDTHxHEIGHT such as 800x600, got '" + text + "'";
         return false;
     }
-    if (w < 1 || h < 1 || w > 16384 || h > 16384 || std::int64_t(w) * h > (std::int64_t(1) << 26)) {
-        error = "--size: " + text + " is outside 1..16384 a side and 2^26 pixels in all";
+    if (!imageSizeAllowed(w, h)) {
+        error = "--size: " + text + " is outside 1.." + std::to_string(kMaxImageSide) + " a side and " +
+                std::to_string(kMaxImagePixels) + " pixels in all";
         return false;
     }
     width = w;

@@ -25,8 +25,11 @@ SceneDocument::SceneDocument(QObject* parent) : QObject(parent) {
     scene_ = std::make_shared<const SceneDesc>();
     reloadTimer_.setSingleShot(true);
     reloadTimer_.setInterval(kReloadDelayMs);
-    connect(&reloadTimer_, &QTimer::timeout, this, &SceneDocument::checkDisk);
-    connect(&watcher_, &QFileSystemWatcher::fileChanged, this, &SceneDocument::onFileChanged);
+    connect(&reloadTimer_, &QTimer::timeout, this, &SceneDocument::onSourcesChanged);
+    connect(&watcher_, &QFileSystemWatcher::fileChanged, this, [this](const QString& file) {
+        changedSources_.insert(file);
+        reloadTimer_.start();
+    });
     connect(&watcher_, &QFileSystemWatcher::directoryChanged, this, &SceneDocument::onDirectoryChanged);
     connect(&parseWatcher_, &QFutureWatcher<ParseResult>::finished, this, &SceneDocument::onParsed);
 }
@@ -46,6 +49,9 @@ std::string SceneDocument::sourceName() const {
 void SceneDocument::unwatchAll() {
     if (!watcher_.files().isEmpty()) watcher_.removePaths(watcher_.files());
     if (!watcher_.directories().isEmpty()) watcher_.removePaths(watcher_.directories());
+    sources_.clear();
+    sourceStamps_.clear();
+    changedSources_.clear();
 }
 
 void SceneDocument::loadDefault() {
@@ -78,7 +84,7 @@ bool SceneDocument::load(const QString& path) {
     unwatchAll();
     path_ = path;
     ++documentId_;
-    watchCurrent();
+    sources_ = {path};
     return reload();
 }
 
@@ -91,10 +97,7 @@ bool SceneDocument::reload() {
         }
         return !hasErrors_;
     }
-    watchCurrent();
-    lastStamp_ = currentStamp();
-    const QFileInfo info(path_);
-    lastSize_ = info.exists() ? info.size() : -1;
+    stampSources();  // before reading: a change made meanwhile is seen again
     const bool newDocument = goodDocument_ != documentId_;
     const std::optional<QString> disk = readDisk();
     if (!disk) {
@@ -122,7 +125,15 @@ void SceneDocument::setText(const QString& text) {
     startParse();
 }
 
+void SceneDocument::reparse() {
+    if (parsing_)
+        textWaiting_ = true;
+    else
+        startParse();
+}
+
 void SceneDocument::startParse() {
+    stampSources();
     parsing_ = true;
     textWaiting_ = false;
     parseDocument_ = documentId_;
@@ -149,9 +160,10 @@ void SceneDocument::markSaved(const QString& path, const QString& text) {
         goodDocument_ = documentId_;  // the same scene, now with a name: keep the view
     }
     diskText_ = text;
-    watchCurrent();
-    lastStamp_ = currentStamp();
-    lastSize_ = QFileInfo(path_).size();
+    if (sources_.isEmpty()) sources_ = {path_};
+    sources_[0] = path_;
+    stampSources();
+    watchSources();
     if (text != text_) setText(text);
 }
 
@@ -163,6 +175,7 @@ void SceneDocument::apply(ParseResult result, bool newDocument) {
     diagnostics_ = lines;
     diagnosticList_ = std::move(result.diagnostics);
     hasErrors_ = errors;
+    setSources(result.files);
 
     if (result.ok()) {
         scene_ = std::make_shared<const SceneDesc>(std::move(*result.scene));
@@ -178,52 +191,79 @@ void SceneDocument::apply(ParseResult result, bool newDocument) {
     if (diagnosticsDiffer) emit diagnosticsChanged();
 }
 
-void SceneDocument::watchCurrent() {
-    if (path_.isEmpty()) return;
-    // Editors often save by writing a new file and renaming it over the old
-    // one; the watcher then loses the path. Watching the directory too lets us
-    // notice the file coming back and watch it again.
-    const QFileInfo info(path_);
-    const QString dir = info.absolutePath();
-    if (!watcher_.directories().contains(dir)) watcher_.addPath(dir);
-    if (info.exists() && !watcher_.files().contains(path_)) watcher_.addPath(path_);
+void SceneDocument::setSources(const std::vector<std::string>& files) {
+    if (path_.isEmpty()) return;  // untitled text includes relative to the working folder, unwatched
+    QStringList list;
+    for (const std::string& f : files) list << QFile::decodeName(QByteArray::fromStdString(f));
+    if (list.isEmpty() || list.front() != path_) list.prepend(path_);
+    if (list != sources_) {
+        sources_ = list;
+        stampSources();
+    }
+    watchSources();
 }
 
-void SceneDocument::onFileChanged() {
-    watchCurrent();
-    reloadTimer_.start();
+void SceneDocument::stampSources() {
+    sourceStamps_.clear();
+    for (const QString& source : sources_) sourceStamps_ << stampOf(source);
+}
+
+void SceneDocument::watchSources() {
+    // Editors often save by writing a new file and renaming it over the old
+    // one; the watcher then loses the path. Watching the directories too lets
+    // us notice a file coming back (or an included file being created) and
+    // watch it again. Files no longer read are no longer watched.
+    QStringList files, directories;
+    for (const QString& source : sources_) {
+        const QFileInfo info(source);
+        if (!directories.contains(info.absolutePath())) directories << info.absolutePath();
+        if (info.exists() && !files.contains(source)) files << source;
+    }
+    for (const QString& f : watcher_.files())
+        if (!files.contains(f)) watcher_.removePath(f);
+    for (const QString& d : watcher_.directories())
+        if (!directories.contains(d)) watcher_.removePath(d);
+    for (const QString& d : directories)
+        if (!watcher_.directories().contains(d)) watcher_.addPath(d);
+    for (const QString& f : files)
+        if (!watcher_.files().contains(f)) watcher_.addPath(f);
 }
 
 void SceneDocument::onDirectoryChanged() {
-    if (path_.isEmpty()) return;
-    // Something in the folder changed; look only if our file did, so that
-    // exporting PNGs next to the scene does not reread it.
-    const QFileInfo info(path_);
-    if (currentStamp() == lastStamp_ && (info.exists() ? info.size() : -1) == lastSize_) return;
-    watchCurrent();
-    reloadTimer_.start();
+    // Something in a folder changed; look only if one of our files did, so
+    // that exporting PNGs next to the scene does not reread it.
+    for (qsizetype i = 0; i < sources_.size(); ++i)
+        if (i >= sourceStamps_.size() || stampOf(sources_[i]) != sourceStamps_[i])
+            changedSources_.insert(sources_[i]);
+    if (!changedSources_.isEmpty()) reloadTimer_.start();
 }
 
-void SceneDocument::checkDisk() {
+void SceneDocument::onSourcesChanged() {
     if (path_.isEmpty()) return;
-    watchCurrent();
-    lastStamp_ = currentStamp();
-    const QFileInfo info(path_);
-    lastSize_ = info.exists() ? info.size() : -1;
+    watchSources();
+    const bool sceneFileChanged = changedSources_.contains(path_);
+    const bool includeChanged = changedSources_.size() > (sceneFileChanged ? 1 : 0);
+    changedSources_.clear();
+    if (sceneFileChanged && checkDisk()) return;  // read again with its includes, or asked
+    if (includeChanged) reparse();
+}
+
+bool SceneDocument::checkDisk() {
     const std::optional<QString> disk = readDisk();
     // A file that vanished is kept in the editor; our own save is no change.
-    if (!disk || *disk == diskText_) return;
+    if (!disk || *disk == diskText_) return false;
     if (!holdsUnsavedEdits_) {
         reload();
-        return;
+        return true;
     }
     diskText_ = *disk;
     emit fileChangedOnDisk();
+    return true;
 }
 
-QDateTime SceneDocument::currentStamp() const {
-    const QFileInfo info(path_);
-    return info.exists() ? info.lastModified() : QDateTime();
+SceneDocument::Stamp SceneDocument::stampOf(const QString& path) {
+    const QFileInfo info(path);
+    return info.exists() ? Stamp{info.lastModified(), info.size()} : Stamp{};
 }
 
 }  // namespace f2::viewer

@@ -1,6 +1,7 @@
 #pragma once
 /// The open scene: its file, the text being edited, the last scene that parsed
-/// without errors and the diagnostics of the latest parse. The text comes from
+/// without errors and the diagnostics of the latest parse. The file and every
+/// file it includes (SPEC 9.5) are watched. The text comes from
 /// the file when it is opened or reloaded and from the editor while the user
 /// types; edits are parsed on a worker thread (latest text wins), so typing
 /// never waits for the parser.
@@ -8,6 +9,7 @@
 #include <QFileSystemWatcher>
 #include <QFutureWatcher>
 #include <QObject>
+#include <QSet>
 #include <QString>
 #include <QStringList>
 #include <QTimer>
@@ -49,6 +51,10 @@ class SceneDocument : public QObject {
 
     /// Empty for an untitled document (the default scene or a new one).
     QString path() const { return path_; }
+    /// The files the latest parse read or tried, the scene file first; each
+    /// is watched: a change of the scene file is read (or reported while there
+    /// are unsaved edits), a change of an included one parses the text again.
+    QStringList sources() const { return sources_; }
     QString displayName() const;
     /// The text last loaded or set.
     const QString& text() const { return text_; }
@@ -84,16 +90,29 @@ class SceneDocument : public QObject {
     void fileChangedOnDisk();
 
    private:
+    /// Modification time and size of a file (null time and -1 if missing).
+    struct Stamp {
+        QDateTime modified;
+        qint64 size = -1;
+        bool operator==(const Stamp&) const = default;
+    };
+
     void startParse();
+    /// Parses the current text again (an included file changed).
+    void reparse();
     void onParsed();
     void apply(ParseResult result, bool newDocument);
-    void watchCurrent();
+    void setSources(const std::vector<std::string>& files);
+    void stampSources();
+    void watchSources();
     void unwatchAll();
-    void onFileChanged();
     void onDirectoryChanged();
-    void checkDisk();
+    void onSourcesChanged();
+    /// The scene file changed on disk: reload it, or report it while there are
+    /// unsaved edits. False if its text is what was last read or saved.
+    bool checkDisk();
     std::optional<QString> readDisk() const;
-    QDateTime currentStamp() const;
+    static Stamp stampOf(const QString& path);
 
     QString path_;      // file being shown/watched; empty = untitled
     QString text_;      // the text of the latest load or edit
@@ -115,8 +134,9 @@ class SceneDocument : public QObject {
 
     QFileSystemWatcher watcher_;
     QTimer reloadTimer_;
-    QDateTime lastStamp_;  // modification time of the file when last read
-    qint64 lastSize_ = -1;
+    QStringList sources_;        // files of the latest parse, watched
+    QList<Stamp> sourceStamps_;  // parallel to sources_: as they were when read
+    QSet<QString> changedSources_;  // reported by the watcher since the last check
 };
 
 }  // namespace f2::viewer
