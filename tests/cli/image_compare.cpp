@@ -7,7 +7,7 @@
 //       background R G B in both or in neither, everywhere), and at most MAXOFF
 //       pixels differ by more than TOL in a channel
 //   image_compare diff A.png B.png              statistics only (exit 0 if same size)
-//   image_compare same A.png B.png              every pixel equal (else statistics, exit 1)
+//   image_compare same A.png B.png              every pixel identical (exit 1 otherwise)
 //   image_compare colours A.png MIN             A has at least MIN distinct colours
 //       (a rendered scene, not a blank or flat image)
 #include <algorithm>
@@ -103,8 +103,7 @@ int match(const Image& a, const Image& b, Rgb8 bg, int tolerance, long maxOff) {
     return 0;
 }
 
-/// Prints how A and B differ; returns the number of differing pixels.
-long diff(const Image& a, const Image& b) {
+int diff(const Image& a, const Image& b) {
     long differing = 0, over8 = 0, sum = 0;
     int maximum = 0;
     for (std::size_t i = 0; i < a.pixels.size(); ++i) {
@@ -116,8 +115,23 @@ long diff(const Image& a, const Image& b) {
     }
     std::printf("%ld of %zu pixels differ, %ld by more than 8, max %d, mean %.4f\n", differing,
                 a.pixels.size(), over8, maximum, double(sum) / double(a.pixels.size()));
-    return differing;
+    return 0;
 }
+/// Pixel-exact equality: the decoded bytes, not the PNG files, whose
+/// compression may differ between zlib versions.
+int same(const Image& a, const Image& b) {
+    long differing = 0;
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x) {
+            Rgb8 p = a.at(x, y), q = b.at(x, y);
+            if (p == q) continue;
+            if (differing++ < 5)
+                std::printf("  (%d, %d): %d %d %d vs %d %d %d\n", x, y, p.r, p.g, p.b, q.r, q.g, q.b);
+        }
+    std::printf("%ld of %zu pixels differ\n", differing, a.pixels.size());
+    return differing == 0 ? 0 : 1;
+}
+
 int colours(const Image& a, long minimum) {
     std::set<std::uint32_t> seen;
     for (Rgb8 p : a.pixels) seen.insert(std::uint32_t(p.r) << 16 | std::uint32_t(p.g) << 8 | p.b);
@@ -131,8 +145,9 @@ int main(int argc, char** argv) {
     bool known = (mode == "iou" && argc == 8) || (mode == "match" && argc == 9) ||
                  ((mode == "aa" || mode == "diff" || mode == "same") && argc == 4) || (mode == "colours" && argc == 4);
     if (!known) {
-        std::fprintf(stderr, "usage: image_compare iou A B R G B MIN | match A B R G B TOL MAXOFF | aa PLAIN AA | diff A B | "
-                             "same A B | colours A MIN\n");
+        std::fprintf(stderr,
+                     "usage: image_compare iou A B R G B MIN | match A B R G B TOL MAXOFF | aa PLAIN AA | diff A B | "
+                     "same A B | colours A MIN\n");
         return 2;
     }
     if (mode == "colours") {
@@ -150,8 +165,6 @@ int main(int argc, char** argv) {
                 std::uint8_t(std::atoi(argv[6]))};
         return mode == "iou" ? iou(a, b, bg, std::atof(argv[7])) : match(a, b, bg, std::atoi(argv[7]), std::atol(argv[8]));
     }
-    if (mode == "same") return diff(a, b) == 0 ? 0 : 1;
-    if (mode == "aa") return antialias(a, b);
-    diff(a, b);
-    return 0;
+    if (mode == "same") return same(a, b);
+    return mode == "aa" ? antialias(a, b) : diff(a, b);
 }
