@@ -13,20 +13,7 @@ using test::sceneFromText;
 
 constexpr const char* kFile = "m.f2";
 
-/// Exactly one diagnostic, an error at line:column whose message contains `what`.
-void expectError(std::string_view text, int line, int column, std::string_view what) {
-    SCOPED_TRACE(std::string(text));
-    const ParseResult r = parseScene(text, kFile);
-    EXPECT_FALSE(r.ok());
-    std::string all;
-    for (const Diagnostic& d : r.diagnostics) all += d.format() + "\n";
-    ASSERT_EQ(r.diagnostics.size(), 1u) << all;
-    const Diagnostic& d = r.diagnostics[0];
-    EXPECT_EQ(d.severity, Severity::Error);
-    EXPECT_EQ(d.loc.line, line) << d.format();
-    EXPECT_EQ(d.loc.column, column) << d.format();
-    EXPECT_NE(d.message.find(what), std::string::npos) << d.format() << "\nexpected: " << what;
-}
+using test::expectOnlyError;
 
 constexpr const char* kTwo = "/sphere a 1 0 0 0\n/robot r 0 0 0\n";
 
@@ -61,21 +48,21 @@ TEST(ParserCamera, RepeatedCameraKeyWarnsAtItsPlace) {
 }
 
 TEST(ParserCamera, CameraIsNotAName) {
-    expectError("/sphere camera 1 0 0 0\n", 1, 9, "'camera' is the name of the scene camera");
-    expectError("/robot camera 0 0 0\n", 1, 8, "'camera' is the name of the scene camera");
+    expectOnlyError("/sphere camera 1 0 0 0\n", 1, 9, "'camera' is the name of the scene camera");
+    expectOnlyError("/robot camera 0 0 0\n", 1, 8, "'camera' is the name of the scene camera");
 }
 
 TEST(ParserCamera, CameraIsNotATargetOfPaintMaterialLookAtOrAttach) {
-    expectError("/paint camera 1 1 1\n", 1, 8, "'/paint' does not apply to the camera");
-    expectError("/material camera 1 1 1 1\n", 1, 11, "'/material' does not apply to the camera");
-    expectError("/look_at camera\n", 1, 10, "'/look_at' does not apply to the camera");
-    expectError("/sphere a 1 0 0 0\n/attach a camera\n", 2, 11, "'/attach' does not apply to the camera");
+    expectOnlyError("/paint camera 1 1 1\n", 1, 8, "'/paint' does not apply to the camera");
+    expectOnlyError("/material camera 1 1 1 1\n", 1, 11, "'/material' does not apply to the camera");
+    expectOnlyError("/look_at camera\n", 1, 10, "'/look_at' does not apply to the camera");
+    expectOnlyError("/sphere a 1 0 0 0\n/attach a camera\n", 2, 11, "'/attach' does not apply to the camera");
 }
 
 TEST(ParserCamera, TheCameraHasNoParts) {
-    expectError("/key 0 camera.head\n", 1, 15, "the camera has no parts");
-    expectError("/anim camera head\n", 1, 14, "the camera has no parts");
-    expectError("/interp camera.lhand ease\n", 1, 16, "the camera has no parts");
+    expectOnlyError("/key 0 camera.head\n", 1, 15, "the camera has no parts");
+    expectOnlyError("/anim camera head\n", 1, 14, "the camera has no parts");
+    expectOnlyError("/interp camera.lhand ease\n", 1, 16, "the camera has no parts");
 }
 
 TEST(ParserCamera, LookAtAPointAnObjectOrAPart) {
@@ -87,12 +74,12 @@ TEST(ParserCamera, LookAtAPointAnObjectOrAPart) {
 }
 
 TEST(ParserCamera, LookAtErrors) {
-    expectError("/look_at 1 2 3\n/look_at 4 5 6\n", 2, 1, "second '/look_at' (the first is at 1:1)");
-    expectError("/look_at 1 2\n", 1, 1, "'/look_at' takes 1 or 3 arguments, got 2");
-    expectError("/look_at 1 x 3\n", 1, 12, "expected a number, got 'x'");
-    expectError("/look_at nobody\n", 1, 10, "unknown name 'nobody'");
-    expectError("/look_at a.head\n/sphere a 1 0 0 0\n", 1, 10, "unknown name 'a'");  // earlier lines only
-    expectError("/sphere a 1 0 0 0\n/look_at a.head\n", 2, 12, "on a part of a primitive");
+    expectOnlyError("/look_at 1 2 3\n/look_at 4 5 6\n", 2, 1, "second '/look_at' (the first is at 1:1)");
+    expectOnlyError("/look_at 1 2\n", 1, 1, "'/look_at' takes 1 or 3 arguments, got 2");
+    expectOnlyError("/look_at 1 x 3\n", 1, 12, "expected a number, got 'x'");
+    expectOnlyError("/look_at nobody\n", 1, 10, "unknown name 'nobody'");
+    expectOnlyError("/look_at a.head\n/sphere a 1 0 0 0\n", 1, 10, "unknown name 'a'");  // earlier lines only
+    expectOnlyError("/sphere a 1 0 0 0\n/look_at a.head\n", 2, 12, "on a part of a primitive");
 }
 
 // 9.2 Attachments
@@ -107,21 +94,21 @@ TEST(ParserAttach, ObjectsAndTheCameraRideOnObjectsOrParts) {
 
 TEST(ParserAttach, Errors) {
     const std::string two(kTwo);
-    expectError(two + "/attach a\n", 3, 1, "'/attach' takes 2 arguments, got 1");
-    expectError(two + "/attach b r\n", 3, 9, "unknown name 'b'");
-    expectError(two + "/attach a nobody.head\n", 3, 11, "unknown name 'nobody'");
-    expectError(two + "/attach a r.leg\n", 3, 13, "unknown part 'leg'");
-    expectError(two + "/attach r.head a\n", 3, 9, "only a whole object or the camera can be attached");
-    expectError(two + "/attach a r\n/attach a r.head\n", 4, 9, "'a' is already attached (at 3:1)");
-    expectError(two + "/attach camera a\n/attach camera r\n", 4, 9, "'camera' is already attached (at 3:1)");
-    expectError(two + "/attach a a\n", 3, 1, "'a' cannot be attached to itself");
-    expectError(two + "/attach r r.head\n", 3, 1, "'r' cannot be attached to its own part");
-    expectError(two + "/attach a r\n/attach r a\n", 4, 1,
+    expectOnlyError(two + "/attach a\n", 3, 1, "'/attach' takes 2 arguments, got 1");
+    expectOnlyError(two + "/attach b r\n", 3, 9, "unknown name 'b'");
+    expectOnlyError(two + "/attach a nobody.head\n", 3, 11, "unknown name 'nobody'");
+    expectOnlyError(two + "/attach a r.leg\n", 3, 13, "unknown part 'leg'");
+    expectOnlyError(two + "/attach r.head a\n", 3, 9, "only a whole object or the camera can be attached");
+    expectOnlyError(two + "/attach a r\n/attach a r.head\n", 4, 9, "'a' is already attached (at 3:1)");
+    expectOnlyError(two + "/attach camera a\n/attach camera r\n", 4, 9, "'camera' is already attached (at 3:1)");
+    expectOnlyError(two + "/attach a a\n", 3, 1, "'a' cannot be attached to itself");
+    expectOnlyError(two + "/attach r r.head\n", 3, 1, "'r' cannot be attached to its own part");
+    expectOnlyError(two + "/attach a r\n/attach r a\n", 4, 1,
                 "attaching 'r' to 'a' makes a cycle: 'a' already rides on 'r'");
     // A longer cycle is found at the /attach that closes it.
-    expectError(two + "/sphere c 1 0 0 0\n/attach a r\n/attach r c\n/attach c a\n", 6, 1,
+    expectOnlyError(two + "/sphere c 1 0 0 0\n/attach a r\n/attach r c\n/attach c a\n", 6, 1,
                 "attaching 'c' to 'a' makes a cycle: 'a' already rides on 'c'");
-    expectError(two + "/sphere c 1 0 0 0\n/attach c a\n/attach r a\n/attach a r.rhand\n", 6, 1,
+    expectOnlyError(two + "/sphere c 1 0 0 0\n/attach c a\n/attach r a\n/attach a r.rhand\n", 6, 1,
                 "attaching 'a' to 'r.rhand' makes a cycle: 'r' already rides on 'a'");
 }
 
@@ -151,14 +138,14 @@ TEST(ParserModes, EveryModeWordOnKeysAndInterp) {
 
 TEST(ParserModes, Errors) {
     const std::string a = "/sphere a 1 0 0 0\n";
-    expectError(a + "/key 0 a 1 2 3 4 5 6 wobble\n", 2, 22,
+    expectOnlyError(a + "/key 0 a 1 2 3 4 5 6 wobble\n", 2, 22,
                 "unknown interpolation 'wobble' (expected linear, ease, ease_in, ease_out, step or spline)");
-    expectError(a + "/key 0 a Ease\n", 2, 10, "unknown interpolation 'Ease'");  // lower case only
-    expectError(a + "/interp a easein\n", 2, 11, "unknown interpolation 'easein'");
-    expectError("/interp camera wobble\n", 1, 16, "unknown interpolation 'wobble'");
-    expectError(a + "/key 0 a 1 2 3 ease\n", 2, 1, "'/key' takes 0 or 6 numbers after the target, got 3");
-    expectError(a + "/key 0 a 1 2 3 4 5 6 7\n", 2, 1, "'/key' takes 0 or 6 numbers after the target, got 7");
-    expectError(a + "/key 0 a ease ease\n", 2, 1, "'/key' takes 0 or 6 numbers after the target, got 1");
+    expectOnlyError(a + "/key 0 a Ease\n", 2, 10, "unknown interpolation 'Ease'");  // lower case only
+    expectOnlyError(a + "/interp a easein\n", 2, 11, "unknown interpolation 'easein'");
+    expectOnlyError("/interp camera wobble\n", 1, 16, "unknown interpolation 'wobble'");
+    expectOnlyError(a + "/key 0 a 1 2 3 ease\n", 2, 1, "'/key' takes 0 or 6 numbers after the target, got 3");
+    expectOnlyError(a + "/key 0 a 1 2 3 4 5 6 7\n", 2, 1, "'/key' takes 0 or 6 numbers after the target, got 7");
+    expectOnlyError(a + "/key 0 a ease ease\n", 2, 1, "'/key' takes 0 or 6 numbers after the target, got 1");
 }
 
 }  // namespace
