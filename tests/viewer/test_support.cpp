@@ -28,7 +28,7 @@ QByteArray readFile(const QString& path) {
 Image coreRender(const SceneDesc& scene, double t, int width, int height) {
     Renderer renderer;
     Image image;
-    renderer.render(scene, t, Camera::fromDesc(scene.camera).resized(width, height), image);
+    renderer.render(scene, t, cameraAt(scene, t).resized(width, height), image);
     return image;
 }
 

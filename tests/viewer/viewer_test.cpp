@@ -55,6 +55,7 @@ class ViewerTest : public QObject {
     void playStepScrubShowsCoreImage();
     void keyboardShortcutsDrivePlayback();
     void stepGoesFromTheFrameShown();
+    void viewFollowsTheMovingCamera();
     void renderScaleFollowsWindow();
     void dragOrbitsWheelZoomsAndSceneCameraResets();
     void brokenFileShowsErrorsAndKeepsImage();
@@ -227,6 +228,25 @@ void ViewerTest::keyboardShortcutsDrivePlayback() {
     QVERIFY(w.playback()->isPlaying());
     QTest::keyClick(&w, Qt::Key_Space);
     QVERIFY(!w.playback()->isPlaying());
+}
+
+void ViewerTest::viewFollowsTheMovingCamera() {
+    // A keyed camera with /look_at (SPEC 9.1): at every frame the viewport
+    // shows what f2 render shows with the scene's camera at that time.
+    MainWindow w;
+    w.resizeForViewport({160, 120});
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    w.openFile(F2_SOURCE_DIR "/tests/cli/data/motion.f2");
+    QVERIFY(!w.document()->hasErrors());
+    w.playback()->pause();
+    const Vec3 startEye = w.viewport()->viewCamera().eye;
+    for (double t : {12.0, 30.0, 48.0}) {
+        w.playback()->seek(t);
+        QVERIFY(waitForShownFrame(w, t));
+        expectViewportMatchesCore(w, t);
+    }
+    QVERIFY(length(w.viewport()->viewCamera().eye - startEye) > 100.0f);  // it did move
 }
 
 void ViewerTest::stepGoesFromTheFrameShown() {
