@@ -8,7 +8,7 @@
 #include "io/pov_export.h"
 #include "io/prims_export.h"
 #include "options.h"
-#include "output_target.h"
+#include "output_kind.h"
 #include "scene_source.h"
 
 namespace f2::cli {

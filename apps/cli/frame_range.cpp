@@ -1,7 +1,6 @@
 #include "frame_range.h"
 
 #include <charconv>
-#include <numeric>
 
 namespace f2::cli {
 
@@ -15,12 +14,6 @@ bool parseInt(std::string_view text, T& value) {
 
 const std::string kFramesSyntax = "FIRST-LAST, FIRST or FIRST-, optionally :STEP";
 }  // namespace
-
-std::int64_t outputLastFrame(std::int64_t sceneLastFrame, int sceneFps, int outputFps) {
-    // Exact in 64 bits (at most 10^7 * 1000); the division rounds down: the
-    // last output frame is the last one within the animation.
-    return sceneLastFrame * outputFps / sceneFps;
-}
 
 std::optional<FrameRange> parseFrameRange(const std::string& text, std::int64_t lastFrame, std::string& error) {
     std::string_view s = text;
@@ -58,32 +51,15 @@ std::optional<FrameRange> parseFrameRange(const std::string& text, std::int64_t 
     return range;
 }
 
-std::string pastTheEndWarning(const FrameRange& range, std::int64_t lastFrame, int fps) {
+std::string pastTheEndWarning(const AnimationRange& range, std::int64_t lastFrame) {
     const std::int64_t from = range.first > lastFrame ? range.first : lastFrame + 1;
     const std::string frames = from == range.lastRendered()
                                    ? "frame " + std::to_string(from) + " is"
                                    : "frames " + std::to_string(from) + "-" + std::to_string(range.lastRendered()) +
                                          " are";
     return frames + " past the animation's last frame " + std::to_string(lastFrame) + " (at " +
-           std::to_string(fps) + " fps): " + (from == range.lastRendered() ? "it shows" : "they show") +
+           std::to_string(range.outputFps) + " fps): " + (from == range.lastRendered() ? "it shows" : "they show") +
            " its final pose";
-}
-
-std::int64_t Shard::countIn(const FrameRange& range) const {
-    // Frame first + k*step (k = 0..count-1) is ours when it is index mod N.
-    // Whether it is repeats in k with period N / gcd(step, N): count one
-    // period, then the whole periods and the rest.
-    const std::int64_t n = count;
-    const std::int64_t period = n / std::gcd(range.step % n, n);
-    const std::int64_t frames = range.count();
-    auto ours = [&](std::int64_t k) { return contains(range.first + k * range.step); };
-    std::int64_t perPeriod = 0, rest = 0;
-    for (std::int64_t k = 0; k < period && k < frames; ++k) {
-        if (!ours(k)) continue;
-        ++perPeriod;
-        if (k < frames % period) ++rest;
-    }
-    return frames / period * perPeriod + rest;
 }
 
 std::optional<Shard> parseShard(const std::string& text, std::string& error) {

@@ -7,23 +7,20 @@
 #include <optional>
 #include <string>
 
+#include "core/scene/limits.h"
+#include "io/render_animation.h"
+
 namespace f2::cli {
 
 /// The largest output frame number (`--frames`, and the last frame of the
 /// default range at the output --fps): SPEC 7's limit on key frame numbers.
-inline constexpr std::int64_t kMaxOutputFrame = 10'000'000;
+inline constexpr std::int64_t kMaxOutputFrame = kMaxKeyFrame;
 
 /// Output frames first, first + step, ... up to last (inclusive).
 struct FrameRange {
     std::int64_t first = 0, last = 0, step = 1;
     std::int64_t count() const { return (last - first) / step + 1; }
-    /// The last frame actually rendered (last, rounded down to the step).
-    std::int64_t lastRendered() const { return first + (count() - 1) * step; }
 };
-
-/// Last output frame of an animation whose last key is `sceneLastFrame` at
-/// `sceneFps`, played at `outputFps`: the animation keeps its duration.
-std::int64_t outputLastFrame(std::int64_t sceneLastFrame, int sceneFps, int outputFps);
 
 /// "A-B", "A" (one frame) or "A-" (A to `lastFrame`), each optionally followed
 /// by ":S" (every S-th frame from A); 0 <= A <= B <= kMaxOutputFrame.
@@ -31,7 +28,7 @@ std::optional<FrameRange> parseFrameRange(const std::string& text, std::int64_t 
 
 /// "frames 241-400 are past the animation's last frame 240 (at 24 fps): they
 /// show its final pose", for a range that ends after `lastFrame`.
-std::string pastTheEndWarning(const FrameRange& range, std::int64_t lastFrame, int fps);
+std::string pastTheEndWarning(const AnimationRange& range, std::int64_t lastFrame);
 
 /// Worker K of N takes every frame whose number is K modulo N (round-robin,
 /// not contiguous blocks): frame cost changes along an animation, so
@@ -39,9 +36,6 @@ std::string pastTheEndWarning(const FrameRange& range, std::int64_t lastFrame, i
 /// a frame's worker does not depend on --frames.
 struct Shard {
     int index = 0, count = 1;
-    bool contains(std::int64_t frame) const { return frame % count == index; }
-    /// How many frames of `range` this shard renders.
-    std::int64_t countIn(const FrameRange& range) const;
 };
 
 /// "K/N" with 0 <= K < N <= 100000.

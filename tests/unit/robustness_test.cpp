@@ -4,6 +4,7 @@
 // garbage, BOM, CRLF, missing file, directory, chmod 000) is not repeated here;
 // see docs/robustness.md for the whole list.
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -530,14 +531,20 @@ TEST_F(AtomicOutput, FailedPngWriteLeavesThePreviousFileIntact) {
     ASSERT_TRUE(writePng(smallImage(10), out.string(), error)) << error;
     const std::string before = slurp(out);
 
-    // 1. The temporary file cannot be created (a directory is in its way):
+    // 1. The temporary file cannot be created (no file descriptor is left):
     //    this works as root too, where permissions would not stop the write.
-    const fs::path blocker = out.string() + ".tmp-" + std::to_string(::getpid());
-    fs::create_directory(blocker);
-    EXPECT_FALSE(writePng(smallImage(200), out.string(), error));
+    {
+        rlimit saved{};
+        ASSERT_EQ(::getrlimit(RLIMIT_NOFILE, &saved), 0);
+        rlimit none = saved;
+        none.rlim_cur = 0;
+        ASSERT_EQ(::setrlimit(RLIMIT_NOFILE, &none), 0);
+        const bool written = writePng(smallImage(200), out.string(), error);
+        ::setrlimit(RLIMIT_NOFILE, &saved);
+        EXPECT_FALSE(written);
+    }
     EXPECT_NE(error.find("cannot write"), std::string::npos) << error;
     EXPECT_EQ(slurp(out), before);
-    fs::remove(blocker);
 
     // 2. An image that cannot be encoded.
     Image empty;

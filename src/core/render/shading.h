@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "core/anim/frame_scene.h"
+#include "core/render/frame_scene.h"
 
 namespace f2 {
 

@@ -1,8 +1,9 @@
 #pragma once
 /// What `f2 render -o NAME` writes, decided from the name alone: one PNG, a
 /// PNG to standard output (`-`), a numbered PNG sequence (`%04d`) or a video
-/// (.mp4, .webm, .gif). Anything else is refused with the known kinds, so a
-/// typo never silently writes PNG data under a .jpg name.
+/// (.mp4, .webm, .gif); an existing device or FIFO (`/dev/null`) takes one
+/// PNG. Anything else is refused with the known kinds, so a typo never
+/// silently writes PNG data under a .jpg name.
 #include <optional>
 #include <string>
 
@@ -11,7 +12,7 @@
 
 namespace f2::cli {
 
-struct OutputTarget {
+struct OutputKind {
     enum class Kind { Image, StandardOutput, Sequence, Video };
     Kind kind = Kind::Image;
     VideoFormat video = VideoFormat::Mp4;  ///< for Kind::Video
@@ -22,7 +23,7 @@ struct OutputTarget {
 
 /// Classifies `name`; nullopt with a usage `error` for an unknown extension,
 /// a bad frame pattern or a directory.
-std::optional<OutputTarget> classifyOutput(const std::string& name, std::string& error);
+std::optional<OutputKind> classifyOutput(const std::string& name, std::string& error);
 
 /// Creates the directory that will hold `path` (and its parents), as
 /// sequences do: false with `error` set if that is impossible.

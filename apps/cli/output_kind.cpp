@@ -1,4 +1,4 @@
-#include "output_target.h"
+#include "output_kind.h"
 
 #include <algorithm>
 #include <cctype>
@@ -18,10 +18,10 @@ std::string lowerExtension(const std::string& name) {
 }
 }  // namespace
 
-std::optional<OutputTarget> classifyOutput(const std::string& name, std::string& error) {
-    OutputTarget target;
+std::optional<OutputKind> classifyOutput(const std::string& name, std::string& error) {
+    OutputKind target;
     if (name == "-") {
-        target.kind = OutputTarget::Kind::StandardOutput;
+        target.kind = OutputKind::Kind::StandardOutput;
         return target;
     }
     std::error_code ec;
@@ -32,15 +32,18 @@ std::optional<OutputTarget> classifyOutput(const std::string& name, std::string&
         return std::nullopt;
     }
     if (auto video = videoFormatForPath(name)) {
-        target.kind = OutputTarget::Kind::Video;
+        target.kind = OutputKind::Kind::Video;
         target.video = *video;
         return target;
     }
+    // A device, FIFO or socket (`-o /dev/null`) takes one PNG whatever its name.
+    const auto status = std::filesystem::status(name, ec);
+    if (!ec && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) return target;
     const std::string ext = lowerExtension(name);
     if (looksLikeFramePattern(name)) {
         auto pattern = parseFramePattern(name, error);
         if (!pattern) return std::nullopt;
-        target.kind = OutputTarget::Kind::Sequence;
+        target.kind = OutputKind::Kind::Sequence;
         target.pattern = *pattern;
     }
     if (ext != ".png") {
