@@ -58,7 +58,8 @@ class RenderController : public QObject {
     quint64 framesSkipped() const { return skipped_.load(); }
 
     /// Test hook: the worker sleeps this long before each frame, to stand in
-    /// for a slow scene. 0 (the default) disables it.
+    /// for a slow scene. 0 (the default) disables it. Lowering it releases a
+    /// frame being held, so a test can hold one (a long delay) until it is done.
     void setDebugDelay(std::chrono::milliseconds delay) { debugDelayMs_.store(int(delay.count())); }
 
    signals:

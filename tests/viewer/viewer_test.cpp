@@ -418,33 +418,29 @@ void ViewerTest::windowRespondsDuringSlowFrame() {
     w.playback()->pause();
     QVERIFY(waitForShownFrame(w, 0));
 
-    // Every frame now takes at least 1.5 s on the worker.
-    w.renderController()->setDebugDelay(1500ms);
+    // The worker now holds every frame until the test releases it: no timing
+    // assumption, so a loaded machine cannot make this test fail.
+    w.renderController()->setDebugDelay(std::chrono::hours(1));
     int ticks = 0;
     QTimer ticker;
     connect(&ticker, &QTimer::timeout, [&ticks] { ++ticks; });
     ticker.start(10);
     QSignalSpy frames(w.renderController(), &RenderController::frameReady);
 
-    QElapsedTimer clock;
-    clock.start();
     w.playback()->seek(100);
     w.scheduleFrame();
-    QCoreApplication::processEvents();  // runs requestFrame(): it must return at once
-    QVERIFY2(clock.elapsed() < 200, "requesting a frame blocked the GUI thread");
+    // Runs requestFrame(); had it waited for the held frame, it would never return.
+    QCoreApplication::processEvents();
     QVERIFY(w.renderController()->hasPendingFrames());
 
     // Meanwhile the window keeps handling events: timers, resizes, repaints.
-    QTest::qWait(700);
-    QCOMPARE(frames.count(), 0);
-    QVERIFY2(ticks >= 20, qPrintable(QString("only %1 timer ticks in 700 ms").arg(ticks)));
+    QTRY_VERIFY_WITH_TIMEOUT(ticks >= 20, kWaitMs);
     w.resize(w.size() + QSize(30, 20));
     w.viewport()->repaint();  // synchronous paint of the old image, stretched
-    QVERIFY(clock.elapsed() < 1400);
+    QCOMPARE(frames.count(), 0);
 
+    w.renderController()->setDebugDelay(0ms);  // release the frame
     QVERIFY(frames.wait(kWaitMs));
-    QVERIFY(clock.elapsed() >= 1500);
-    w.renderController()->setDebugDelay(0ms);
 }
 
 void ViewerTest::latestRequestWins() {
