@@ -4,7 +4,7 @@
 
 namespace f2 {
 
-std::string FramePattern::format(int frame) const {
+std::string FramePattern::format(std::int64_t frame) const {
     std::string digits = std::to_string(frame);
     if (int(digits.size()) < width) digits.insert(0, std::size_t(width) - digits.size(), zeroPad ? '0' : ' ');
     return prefix + digits + suffix;
@@ -51,7 +51,7 @@ std::optional<FramePattern> parseFramePattern(const std::string& path, std::stri
         // printf's %4d pads with spaces: names that ffmpeg and most tools cannot read back.
         if (width > 0 && !zero) {
             error = "'" + path + "': %" + std::to_string(width) + "d would pad with spaces; write %0" +
-                    std::to_string(width) + "d (such as %04d) or %d";
+                    std::to_string(width) + "d (zero-padded) or %d";
             return std::nullopt;
         }
         if (found) {

@@ -4,6 +4,7 @@
 /// file names), `%%` for a literal percent sign.
 /// Parsed here rather than handed to printf, so a user's path can never be a
 /// format-string hole.
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -15,7 +16,7 @@ struct FramePattern {
     bool zeroPad = false;        ///< always true when width > 0
 
     /// The file name of frame `frame` (>= 0).
-    std::string format(int frame) const;
+    std::string format(std::int64_t frame) const;
 };
 
 /// True if `path` contains a `%` that is not `%%`: the user meant a pattern.
