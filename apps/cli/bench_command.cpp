@@ -130,7 +130,7 @@ Command addBenchCommand(CLI::App& app) {
                     "(default 0: every iteration renders --frame)")
         ->check(finiteNumberIn(0.0, 1e7, "a step"));
     sub->add_option("--size", args->size, "Image size WIDTHxHEIGHT (default 800x600)");
-    sub->add_option("--threads", args->settings.threads, "Render threads (default: all cores)")
+    sub->add_option("--threads", args->settings.threads, "Render threads, 0..1024 (default 0: all cores)")
         ->check(wholeNumberIn(0, 1024));
     sub->add_option("--seconds", args->seconds,
                     "Timed seconds, at least 3 frames (default 3; 1 per point with --study)")
@@ -138,7 +138,7 @@ Command addBenchCommand(CLI::App& app) {
     sub->add_option("--warmup", args->settings.warmupSeconds,
                     "Untimed warm-up seconds, at least 1 frame (default 0.5)")
         ->check(finiteNumberIn(0.0, 600.0, "a duration"));
-    sub->add_option("--aa", args->settings.antialias, "N x N samples per pixel (default 1)")
+    sub->add_option("--aa", args->settings.antialias, "N x N samples per pixel, N = 1..16 (default 1)")
         ->check(wholeNumberIn(1, 16));
     auto* json =
         sub->add_flag("--json", args->json,

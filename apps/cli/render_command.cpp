@@ -236,7 +236,7 @@ Command addRenderCommand(CLI::App& app) {
     sub->add_option("scene", args->scene, "Scene file; '-' reads standard input; none = the default scene")
         ->check(nonEmptyPath("render the default scene"));
     args->frameOption = sub->add_option("--frame", args->frame,
-                                        "One image: the scene time in frames; may be fractional (default 0)")
+                                        "One image: the scene time in frames, 0..1e7; may be fractional (default 0)")
                             ->check(finiteNumberIn(0.0, 1e7, "a frame time"));
     sub->add_option("--frames", args->frames,
                     "Frames of a sequence or video: FIRST-LAST, FIRST or FIRST- (default: 0 to the last key "
@@ -248,14 +248,15 @@ Command addRenderCommand(CLI::App& app) {
                     "(default f2.png)")
         ->check(nonEmptyPath("write f2.png"));
     sub->add_option("--size", args->size, "Image size WIDTHxHEIGHT (default: the scene's /camera)");
-    sub->add_option("--threads", args->threads, "Render threads (default: all cores)")
+    sub->add_option("--threads", args->threads, "Render threads, 0..1024 (default 0: all cores)")
         ->check(wholeNumberIn(0, 1024));
     sub->add_option(
            "--aa", args->antialias,
-           "Anti-aliasing: N x N stratified samples per pixel, averaged (default 1 = the pixel centre)")
+           "Anti-aliasing: N x N stratified samples per pixel, averaged; N = 1..16 (default 1 = the pixel "
+           "centre)")
         ->check(wholeNumberIn(1, 16));
     sub->add_option("--fps", args->fps,
-                    "Output frames per second (default: the scene's /fps). The animation keeps its length: "
+                    "Output frames per second, 1..1000 (default: the scene's /fps). The animation keeps its length: "
                     "output frame i shows scene time i * (scene fps) / FPS")
         ->check(wholeNumberIn(1, 1000));
     sub->add_option("--shard", args->shard,
