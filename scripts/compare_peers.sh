@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# compare_peers.sh — f2 against the Embree peer and POV-Ray 3.7 on the same frames,
-# in the same run (docs/performance.md).
+# compare_peers.sh — f2 against the Embree peer (bench/embree_peer) and POV-Ray 3.7
+# on the same frames, in the same run (docs/performance.md).
 #
 #   scripts/compare_peers.sh [--f2 PATH] [--threads N] [--frame T] [--seconds S]
 #                            [--scenes "default robots:1 ..."] [--pov-scenes "default ..."]
@@ -10,7 +10,11 @@
 # For every scene: `f2 bench --json` times the whole frame (evaluate + build +
 # trace); `f2 export --prims` writes that very frame for the peer, which then
 # runs once per --rebuild mode (a BVH update every frame, as f2 does); the
-# table shows the best of those modes and the ratio f2 FPS / Embree FPS.
+# table shows the best of those modes and the ratio f2 FPS / Embree FPS. Both
+# time --seconds per run after a warm-up and report the median frame. The
+# peer is built from this repository (CMake target f2_embree_peer, in f2's
+# build directory or in build/peers; Debian's libembree-dev and libtbb-dev are
+# installed if missing).
 # --rounds R (default 1) then runs f2 and the peer's best mode R-1 more times,
 # one after the other, and shows the medians and the range of the R ratios: on
 # a shared machine whose speed drifts for a minute at a time, the ratio of two
@@ -37,7 +41,7 @@ RUN_POV=1
 WORK=$ROOT/build/peers/work
 SIZE=800x600
 
-usage() { sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; }
+usage() { awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; }
 while [ $# -gt 0 ]; do
   case $1 in
     --f2) F2=$2; shift ;;
@@ -75,18 +79,30 @@ fi
 mkdir -p "$WORK"
 log "f2: $F2"
 
-# --- the Embree peer ------------------------------------------------------------
-PEER=$ROOT/build/peers/embree_f2
-PEER_SRC=${PEER_SRC:-/work/shared/peers/embree}
+# --- the Embree peer: bench/embree_peer, built from this repository -------------
+# In f2's own build directory when f2 came from one and it has the target (the
+# same sources, no second build of the core), else in build/peers.
+PEER=
 if [ "$RUN_EMBREE" = 1 ]; then
-  if ! [ -x "$PEER" ] || [ "$PEER_SRC/embree_f2.cpp" -nt "$PEER" ]; then
-    if ! dpkg -s libembree-dev libtbb-dev libpng-dev >/dev/null 2>&1; then
-      log "installing libembree-dev libtbb-dev libpng-dev"
-      as_root apt-get install -y libembree-dev libtbb-dev libpng-dev >&2
-    fi
-    mkdir -p "$(dirname "$PEER")"
-    sh "$PEER_SRC/build.sh" "$PEER" >&2
+  if ! dpkg -s libembree-dev libtbb-dev >/dev/null 2>&1; then
+    log "installing libembree-dev libtbb-dev"
+    as_root apt-get install -y libembree-dev libtbb-dev >&2
   fi
+  case $F2 in
+    "$ROOT"/build/*/apps/cli/f2)
+      dir=${F2%/apps/cli/f2}
+      if cmake --build "$dir" --target f2_embree_peer >&2 2>/dev/null; then PEER=$dir/bench/embree_peer/f2_embree_peer; fi ;;
+  esac
+  if [ -z "$PEER" ]; then
+    PEER_BUILD=$ROOT/build/peers
+    if ! [ -f "$PEER_BUILD/CMakeCache.txt" ]; then
+      cmake -S "$ROOT" -B "$PEER_BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release -DF2_BUILD_EMBREE_PEER=ON \
+        -DF2_BUILD_VIEWER=OFF -DF2_BUILD_TESTS=OFF -DF2_BUILD_BENCH=OFF >&2
+    fi
+    cmake --build "$PEER_BUILD" --target f2_embree_peer >&2
+    PEER=$PEER_BUILD/bench/embree_peer/f2_embree_peer
+  fi
+  log "peer: $PEER"
 fi
 
 # value KEY JSON|RESULT-line: the number after "KEY": or KEY=
@@ -140,18 +156,18 @@ if [ "$RUN_EMBREE" = 1 ]; then
     split="$(json_value ms_median "$json") ($(json_value ms_eval "$json") / $(json_value ms_build "$json") / $(json_value ms_trace "$json"))"
     best_fps=0 best_mode=none
     for mode in $REBUILD_MODES; do
-      log "$scene: embree_f2 --rebuild $mode"
-      line=$("$PEER" "$prims" --threads "$THREADS" --rebuild "$mode" | grep '^RESULT')
+      log "$scene: f2_embree_peer --rebuild $mode"
+      line=$("$PEER" "$prims" --threads "$THREADS" --seconds "$SECONDS_PER_RUN" --rebuild "$mode" | grep '^RESULT')
       fps=$(result_value total_fps "$line")
       if awk -v a="$fps" -v b="$best_fps" 'BEGIN { exit !(a > b) }'; then best_fps=$fps best_mode=$mode; fi
     done
     # Render-only yardstick: static BVH built once (not what an animation can do).
-    static=$(result_value fps "$("$PEER" "$prims" --threads "$THREADS" | grep '^RESULT')")
+    static=$(result_value fps "$("$PEER" "$prims" --threads "$THREADS" --seconds "$SECONDS_PER_RUN" | grep '^RESULT')")
     f2_all=$f2_fps embree_all=$best_fps ratios=$(ratio "$f2_fps" "$best_fps")
     for ((round = 2; round <= ROUNDS; ++round)); do
       log "$scene: round $round of $ROUNDS"
       f=$(json_value fps "$(f2_bench "$scene")")
-      e=$(result_value total_fps "$("$PEER" "$prims" --threads "$THREADS" --rebuild "$best_mode" | grep '^RESULT')")
+      e=$(result_value total_fps "$("$PEER" "$prims" --threads "$THREADS" --seconds "$SECONDS_PER_RUN" --rebuild "$best_mode" | grep '^RESULT')")
       f2_all+=$'\n'$f embree_all+=$'\n'$e ratios+=$'\n'$(ratio "$f" "$e")
     done
     f2_median[$scene]=$(median <<<"$f2_all") embree_median[$scene]=$(median <<<"$embree_all")

@@ -16,8 +16,10 @@ RUN_PACKAGES=(
 # Everything else: tests, benchmarks, video and POV-Ray output, plots, fuzzing.
 MORE_PACKAGES=(
   git
-  # tests and benchmarks
-  libgtest-dev libbenchmark-dev locales xvfb xauth imagemagick x11-apps
+  # tests and benchmarks (GNU parallel: the render-farm test)
+  libgtest-dev libbenchmark-dev locales xvfb xauth imagemagick x11-apps parallel
+  # the Embree peer renderer f2 is compared with (bench/embree_peer)
+  libembree-dev libtbb-dev
   # video and POV-Ray output, plots for `f2 bench --study`
   ffmpeg povray gnuplot-nox
   # fuzzing (clang's libFuzzer runtime)

@@ -25,31 +25,39 @@ void SceneDocument::loadDefault() {
     if (!watcher_.files().isEmpty()) watcher_.removePaths(watcher_.files());
     if (!watcher_.directories().isEmpty()) watcher_.removePaths(watcher_.directories());
     path_.clear();
+    sources_.clear();
+    sourceStamps_.clear();
     parseCurrent();
 }
 
 bool SceneDocument::load(const QString& path) {
-    if (!watcher_.files().isEmpty()) watcher_.removePaths(watcher_.files());
-    if (!watcher_.directories().isEmpty()) watcher_.removePaths(watcher_.directories());
     path_ = path;
-    watchCurrent();
+    sources_ = {path};
+    watchSources();
     return parseCurrent();
 }
 
-bool SceneDocument::reload() {
-    if (!path_.isEmpty()) watchCurrent();
-    return parseCurrent();
-}
+bool SceneDocument::reload() { return parseCurrent(); }
 
 bool SceneDocument::parseCurrent() {
     ParseResult result;
     if (path_.isEmpty()) {
         result = parseScene(defaultSceneText(), kDefaultSceneName);
     } else {
-        lastStamp_ = currentStamp();
-        const QFileInfo info(path_);
-        lastSize_ = info.exists() ? info.size() : -1;
+        // Stamped before reading: a change made while parsing triggers another reload.
+        QList<Stamp> before;
+        for (const QString& source : sources_) before << stampOf(source);
         result = parseSceneFile(QFile::encodeName(path_).toStdString());
+        QStringList files;
+        for (const std::string& f : result.files) files << QFile::decodeName(QByteArray::fromStdString(f));
+        if (files.isEmpty()) files << path_;
+        if (files != sources_) {
+            sources_ = files;
+            before.clear();
+            for (const QString& source : sources_) before << stampOf(source);
+        }
+        sourceStamps_ = before;
+        watchSources();
     }
 
     QStringList lines;
@@ -70,34 +78,52 @@ bool SceneDocument::parseCurrent() {
     return result.ok();
 }
 
-void SceneDocument::watchCurrent() {
+void SceneDocument::watchSources() {
     // Editors often save by writing a new file and renaming it over the old
-    // one; the watcher then loses the path. Watching the directory too lets us
-    // notice the file coming back and watch it again.
-    const QFileInfo info(path_);
-    const QString dir = info.absolutePath();
-    if (!watcher_.directories().contains(dir)) watcher_.addPath(dir);
-    if (info.exists() && !watcher_.files().contains(path_)) watcher_.addPath(path_);
+    // one; the watcher then loses the path. Watching the directories too lets
+    // us notice a file coming back (or an included file being created) and
+    // watch it again. Files no longer read are no longer watched.
+    QStringList files, directories;
+    for (const QString& source : sources_) {
+        const QFileInfo info(source);
+        if (!directories.contains(info.absolutePath())) directories << info.absolutePath();
+        if (info.exists() && !files.contains(source)) files << source;
+    }
+    for (const QString& f : watcher_.files()) {
+        if (!files.contains(f)) watcher_.removePath(f);
+    }
+    for (const QString& d : watcher_.directories()) {
+        if (!directories.contains(d)) watcher_.removePath(d);
+    }
+    for (const QString& d : directories) {
+        if (!watcher_.directories().contains(d)) watcher_.addPath(d);
+    }
+    for (const QString& f : files) {
+        if (!watcher_.files().contains(f)) watcher_.addPath(f);
+    }
 }
 
 void SceneDocument::onFileChanged() {
-    watchCurrent();
+    watchSources();
     reloadTimer_.start();
 }
 
 void SceneDocument::onDirectoryChanged() {
     if (path_.isEmpty()) return;
-    // Something in the folder changed; reload only if our file did, so that
-    // exporting PNGs next to the scene does not reparse it.
-    const QFileInfo info(path_);
-    if (currentStamp() == lastStamp_ && (info.exists() ? info.size() : -1) == lastSize_) return;
-    watchCurrent();
+    // Something in a folder changed; reload only if one of our files did, so
+    // that exporting PNGs next to the scene does not reparse it.
+    bool changed = false;
+    for (qsizetype i = 0; i < sources_.size() && !changed; ++i) {
+        changed = i >= sourceStamps_.size() || stampOf(sources_[i]) != sourceStamps_[i];
+    }
+    if (!changed) return;
+    watchSources();
     reloadTimer_.start();
 }
 
-QDateTime SceneDocument::currentStamp() const {
-    const QFileInfo info(path_);
-    return info.exists() ? info.lastModified() : QDateTime();
+SceneDocument::Stamp SceneDocument::stampOf(const QString& path) {
+    const QFileInfo info(path);
+    return info.exists() ? Stamp{info.lastModified(), info.size()} : Stamp{};
 }
 
 }  // namespace f2::viewer

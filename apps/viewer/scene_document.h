@@ -1,7 +1,7 @@
 #pragma once
-/// The open scene: loads and parses it, watches the file, keeps the last scene
-/// that parsed without errors and the diagnostics of the latest attempt.
-/// The viewer only ever reads the user's file.
+/// The open scene: loads and parses it, watches the file and every file it
+/// includes (SPEC 9.5), keeps the last scene that parsed without errors and
+/// the diagnostics of the latest attempt. The viewer only ever reads the user's files.
 #include <QDateTime>
 #include <QFileSystemWatcher>
 #include <QObject>
@@ -29,6 +29,9 @@ class SceneDocument : public QObject {
 
     /// Empty for the embedded default scene.
     QString path() const { return path_; }
+    /// The files the latest parse read or tried, the scene file first; each
+    /// is watched, so editing an included file reloads the scene.
+    QStringList sources() const { return sources_; }
     QString displayName() const;
     /// The last scene without errors; null only if nothing has parsed yet.
     std::shared_ptr<const SceneDesc> scene() const { return scene_; }
@@ -49,11 +52,18 @@ class SceneDocument : public QObject {
     void diagnosticsChanged();
 
    private:
+    /// Modification time and size of a file (null time and -1 if missing).
+    struct Stamp {
+        QDateTime modified;
+        qint64 size = -1;
+        bool operator==(const Stamp&) const = default;
+    };
+
     bool parseCurrent();
-    void watchCurrent();
+    void watchSources();
     void onFileChanged();
     void onDirectoryChanged();
-    QDateTime currentStamp() const;
+    static Stamp stampOf(const QString& path);
 
     QString path_;      // file being shown/watched; empty = default scene
     QString goodPath_;  // file the current good scene came from
@@ -63,8 +73,8 @@ class SceneDocument : public QObject {
     bool hasErrors_ = false;
     QFileSystemWatcher watcher_;
     QTimer reloadTimer_;
-    QDateTime lastStamp_;  // modification time of the file when last parsed
-    qint64 lastSize_ = -1;
+    QStringList sources_;          // files of the latest parse, watched
+    QList<Stamp> sourceStamps_;    // parallel to sources_: as they were when parsed
 };
 
 }  // namespace f2::viewer

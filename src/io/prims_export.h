@@ -1,8 +1,8 @@
 #pragma once
 /// One evaluated frame as the plain-text primitive list read by the Embree
-/// peer renderer (/work/shared/peers/embree/README.md): camera, background,
-/// lights, then every primitive in scene order with its 3x4 local-to-world
-/// matrix, colour and material.
+/// peer renderer (bench/embree_peer; the format is in docs/output.md): camera,
+/// background, lights, then every primitive in scene order with its 3x4
+/// local-to-world matrix, colour and material.
 #include <string>
 
 #include "core/render/camera.h"

@@ -3,6 +3,9 @@
 //       R G B) masks of A and B: intersection over union must be >= MIN
 //   image_compare aa PLAIN.png AA.png           AA differs from PLAIN somewhere,
 //       and only on edges (a step to a neighbour in either image)
+//   image_compare match A.png B.png R G B TOL MAXOFF   the same coverage (pixel !=
+//       background R G B in both or in neither, everywhere), and at most MAXOFF
+//       pixels differ by more than TOL in a channel
 //   image_compare diff A.png B.png              statistics only (exit 0 if same size)
 //   image_compare colours A.png MIN             A has at least MIN distinct colours
 //       (a rendered scene, not a blank or flat image)
@@ -79,6 +82,26 @@ int antialias(const Image& plain, const Image& aa) {
     return 0;
 }
 
+int match(const Image& a, const Image& b, Rgb8 bg, int tolerance, long maxOff) {
+    long coverage = 0, off = 0, foreground = 0;
+    int maximum = 0;
+    for (std::size_t i = 0; i < a.pixels.size(); ++i) {
+        bool fa = !(a.pixels[i] == bg), fb = !(b.pixels[i] == bg);
+        foreground += fa;
+        if (fa != fb && coverage++ < 5)
+            std::printf("  coverage differs at (%zu, %zu)\n", i % std::size_t(a.width), i / std::size_t(a.width));
+        int d = channelDiff(a.pixels[i], b.pixels[i]);
+        off += d > tolerance;
+        maximum = std::max(maximum, d);
+    }
+    std::printf("%ld foreground pixels; coverage differs in %ld; %ld differ by more than %d (max %d)\n", foreground,
+                coverage, off, tolerance, maximum);
+    if (foreground == 0) return std::puts("FAIL: no foreground at all"), 1;
+    if (coverage > 0) return std::puts("FAIL: the images cover different pixels"), 1;
+    if (off > maxOff) return std::printf("FAIL: more than %ld pixels beyond the tolerance\n", maxOff), 1;
+    return 0;
+}
+
 int diff(const Image& a, const Image& b) {
     long differing = 0, over8 = 0, sum = 0;
     int maximum = 0;
@@ -103,10 +126,10 @@ int colours(const Image& a, long minimum) {
 
 int main(int argc, char** argv) {
     std::string mode = argc > 1 ? argv[1] : "";
-    bool known = (mode == "iou" && argc == 8) || ((mode == "aa" || mode == "diff") && argc == 4) ||
+    bool known = (mode == "iou" && argc == 8) || (mode == "match" && argc == 9) || ((mode == "aa" || mode == "diff") && argc == 4) ||
                  (mode == "colours" && argc == 4);
     if (!known) {
-        std::fprintf(stderr, "usage: image_compare iou A B R G B MIN | aa PLAIN AA | diff A B | colours A MIN\n");
+        std::fprintf(stderr, "usage: image_compare iou A B R G B MIN | match A B R G B TOL MAXOFF | aa PLAIN AA | diff A B | colours A MIN\n");
         return 2;
     }
     if (mode == "colours") {
@@ -119,10 +142,10 @@ int main(int argc, char** argv) {
         std::printf("FAIL: sizes differ: %dx%d vs %dx%d\n", a.width, a.height, b.width, b.height);
         return 1;
     }
-    if (mode == "iou") {
+    if (mode == "iou" || mode == "match") {
         Rgb8 bg{std::uint8_t(std::atoi(argv[4])), std::uint8_t(std::atoi(argv[5])),
                 std::uint8_t(std::atoi(argv[6]))};
-        return iou(a, b, bg, std::atof(argv[7]));
+        return mode == "iou" ? iou(a, b, bg, std::atof(argv[7])) : match(a, b, bg, std::atoi(argv[7]), std::atol(argv[8]));
     }
     return mode == "aa" ? antialias(a, b) : diff(a, b);
 }

@@ -110,6 +110,7 @@ class ViewerTest : public QObject {
     void dragOrbitsWheelZoomsAndSceneCameraResets();
     void brokenFileShowsErrorsAndKeepsImage();
     void reloadsAfterEditorReplacesFile();
+    void reloadsWhenAnIncludedFileChanges();
     void windowRespondsDuringSlowFrame();
     void latestRequestWins();
     void exportWritesPngSequence();
@@ -408,6 +409,35 @@ void ViewerTest::reloadsAfterEditorReplacesFile() {
         QTRY_COMPARE_WITH_TIMEOUT(doc.scene()->fps, 30 + round, kWaitMs);
         QCOMPARE(changed.last().at(0).toBool(), false);  // same file: keep time and view
     }
+}
+
+void ViewerTest::reloadsWhenAnIncludedFileChanges() {
+    QTemporaryDir dir;
+    QVERIFY(QDir(dir.path()).mkpath("parts"));
+    const QString path = dir.filePath("scene.f2");
+    const QString part = dir.filePath("parts/speed.f2");
+    const QString later = dir.filePath("parts/later.f2");
+    writeFile(part, "/fps 30\n");
+    writeFile(path, QByteArray(kSmallScene).append("/include parts/speed.f2\n"));
+    SceneDocument doc;
+    QVERIFY(doc.load(path));
+    QCOMPARE(doc.scene()->fps, 30);
+    QCOMPARE(doc.sources(), (QStringList{path, part}));
+
+    // Editing only the included file reloads the scene.
+    writeFile(part, "/fps 31\n");
+    QTRY_COMPARE_WITH_TIMEOUT(doc.scene()->fps, 31, kWaitMs);
+
+    // An include of a file that does not exist yet: the error names it, and
+    // creating the file reloads (its folder is watched).
+    writeFile(part, "/include later.f2\n");
+    QTRY_VERIFY_WITH_TIMEOUT(doc.hasErrors(), kWaitMs);
+    QVERIFY2(doc.diagnostics().join("\n").contains(part + ":1:10: error: cannot include"),
+             qPrintable(doc.diagnostics().join("\n")));
+    QCOMPARE(doc.sources(), (QStringList{path, part, later}));
+    writeFile(later, "/fps 32\n");
+    QTRY_COMPARE_WITH_TIMEOUT(doc.scene()->fps, 32, kWaitMs);
+    QVERIFY(!doc.hasErrors());
 }
 
 void ViewerTest::windowRespondsDuringSlowFrame() {
