@@ -11,7 +11,7 @@ set -euo pipefail
 # Building and running f2 and the viewer.
 RUN_PACKAGES=(
   g++ cmake ninja-build pkg-config
-  libpng-dev libcli11-dev qt6-base-dev libgl-dev libegl-dev
+  libpng-dev libcli11-dev qt6-base-dev libgl-dev libegl-dev nlohmann-json3-dev
 )
 # Everything else: tests, benchmarks, video and POV-Ray output, plots, fuzzing.
 MORE_PACKAGES=(
@@ -20,6 +20,8 @@ MORE_PACKAGES=(
   libgtest-dev libbenchmark-dev locales xvfb xauth imagemagick x11-apps parallel
   # the Embree peer renderer f2 is compared with (bench/embree_peer)
   libembree-dev libtbb-dev
+  # the language server's end-to-end test with a real client
+  neovim
   # video and POV-Ray output, plots for `f2 bench --study`
   ffmpeg povray gnuplot-nox
   # fuzzing (clang's libFuzzer runtime)
@@ -32,6 +34,12 @@ case "$mode" in
   all | --check) PACKAGES=("${RUN_PACKAGES[@]}" "${MORE_PACKAGES[@]}") ;;
   *) echo "usage: $0 [--run | --check]" >&2; exit 2 ;;
 esac
+
+# Node.js and npm for the VS Code extension and its grammar test (not for
+# run.sh); a Node.js installed another way (with its own npm) is kept.
+if [ "$mode" != --run ] && ! command -v npm >/dev/null 2>&1; then
+  PACKAGES+=(nodejs npm)
+fi
 
 missing=()
 for p in "${PACKAGES[@]}"; do

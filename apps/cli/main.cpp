@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
         f2::cli::addInfoCommand(app),
         f2::cli::addExportCommand(app),
         f2::cli::addBenchCommand(app),
+        f2::cli::addLspCommand(app),
     };
     // `f2` alone: the short help (the commands), as a usage error.
     if (argc == 1) {
