@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/anim/frame_scene.h"
+#include "core/render/frame_scene.h"
 #include "core/scene/bench_scenes.h"
 
 namespace f2::bench {

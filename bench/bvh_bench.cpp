@@ -8,7 +8,7 @@
 
 #include "bench_inputs.h"
 #include "core/geometry/bvh.h"
-#include "core/render/thread_pool.h"
+#include "core/util/thread_pool.h"
 
 namespace f2::bench {
 namespace {

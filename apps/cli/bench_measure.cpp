@@ -17,9 +17,6 @@
 
 #include "core/parse/parser.h"
 #include "core/render/renderer.h"
-#include "core/render/shading.h"
-#include "core/render/thread_pool.h"
-#include "core/simd/simd.h"
 
 namespace f2::cli {
 
@@ -166,7 +163,7 @@ std::string benchJson(const BenchResult& r) {
     std::ostringstream j;
     j << "{\"scene\": " << jsonString(r.scene) << ", \"size\": \"" << r.width << 'x' << r.height << "\""
       << ", \"width\": " << r.width << ", \"height\": " << r.height << ", \"threads\": " << r.threads
-      << ", \"simd\": \"" << simd::kIsaName << "\", \"aa\": " << r.antialias << ", \"frame_t\": " << fixed(r.frame, 3)
+      << ", \"simd\": \"" << packetIsaName() << "\", \"aa\": " << r.antialias << ", \"frame_t\": " << fixed(r.frame, 3)
       << ", \"step\": " << fixed(r.step, 3) << ", \"primitives\": " << r.primitives
       << ", \"frames\": " << r.frames << ", \"warmup_frames\": " << r.warmupFrames
       << ", \"seconds\": " << fixed(r.seconds, 3) << ", \"fps\": " << fixed(r.fps(), 2)
@@ -185,7 +182,7 @@ void printBench(std::ostream& out, const BenchResult& r) {
     out << "f2 bench: " << r.scene << " frame " << r.frame
         << (r.step != 0 ? " stepping " + fixed(r.step, 3) : "") << " (" << r.primitives << " primitives), "
         << r.width << 'x' << r.height << (r.antialias > 1 ? " aa " + std::to_string(r.antialias) : "") << ", "
-        << r.threads << " threads, " << simd::kIsaName << " lanes (" << simd::kWidth << " wide)\n"
+        << r.threads << " threads, " << packetIsaName() << " lanes (" << packetWidth() << " wide)\n"
         << "  frames      " << r.frames << " timed in " << fixed(r.seconds, 2) << " s after "
         << r.warmupFrames << " warm-up\n"
         << "  frame time  median " << fixed(r.msMedian, 3) << " ms  (min " << fixed(r.msMin, 3) << ", p10 "

@@ -6,7 +6,7 @@
 #include <ostream>
 #include <string>
 
-#include "core/anim/frame_scene.h"
+#include "core/render/frame_scene.h"
 #include "core/render/camera.h"
 #include "core/render/renderer.h"
 #include "core/scene/bench_scenes.h"

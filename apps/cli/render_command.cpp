@@ -1,19 +1,17 @@
 // f2 render: one frame to a PNG, or an animation to a numbered PNG sequence
 // or a video (mp4, webm, gif through ffmpeg).
-#include <deque>
-#include <filesystem>
-#include <future>
 #include <iostream>
 #include <memory>
 #include <sstream>
 
 #include "commands.h"
-#include "core/render/renderer.h"
 #include "frame_range.h"
 #include "interrupt.h"
 #include "io/frame_pattern.h"
-#include "io/png_writer.h"
-#include "io/video_encoder.h"
+#include "io/image_sink.h"
+#include "io/render_animation.h"
+#include "io/sequence_sink.h"
+#include "io/video_sink.h"
 #include "progress.h"
 #include "scene_source.h"
 
@@ -38,14 +36,9 @@ struct RenderArgs {
 struct AnimationJob {
     const LoadedScene* loaded;
     Camera camera;
-    FrameRange range;
-    Shard shard;
-    int fps;  ///< output frames per second
+    AnimationRange range;
     int antialias;
     int threads;
-    /// Scene time (in scene frames) shown by output frame `i`: the animation
-    /// keeps its duration whatever the output rate.
-    double timeOf(int i) const { return double(i) * loaded->scene.fps / fps; }
 };
 
 constexpr int kUsageError = 2;
@@ -55,143 +48,94 @@ int interruptedExit() { return 128 + (interruptSignal() ? interruptSignal() : 2)
 std::string describe(const AnimationJob& job) {
     std::ostringstream s;
     s << job.loaded->name << " frames " << job.range.first << "-" << job.range.last;
-    if (job.shard.count > 1) s << " shard " << job.shard.index << "/" << job.shard.count;
-    s << " (" << job.camera.width << "x" << job.camera.height << ", " << job.fps << " fps, aa "
+    if (job.range.shardCount > 1) s << " shard " << job.range.shardIndex << "/" << job.range.shardCount;
+    s << " (" << job.camera.width << "x" << job.camera.height << ", " << job.range.outputFps << " fps, aa "
       << job.antialias << ")";
     return s.str();
 }
 
+/// f2::renderAnimation with the live progress bar and Ctrl+C.
+AnimationResult renderWithProgress(const AnimationJob& job, FrameSink& sink, Progress& progress) {
+    std::int64_t skipped = 0;
+    AnimationResult result = renderAnimation(
+        job.loaded->scene, job.range, job.camera, sink, &interruptFlag(),
+        [&](const AnimationProgress& p) {
+            progress.skipped(int(p.skipped - skipped));
+            skipped = p.skipped;
+            progress.update(int(p.done));
+        },
+        {job.threads, {job.antialias}});
+    progress.clear();
+    return result;
+}
+
 int renderSequence(const AnimationJob& job, const FramePattern& pattern, const std::string& output,
                    bool resume) {
-    // A sequence is a directory's worth of files: create the directory, so farm
-    // workers need no setup (creating an existing one is fine).
-    std::error_code ec;
-    std::filesystem::path dir = std::filesystem::path(pattern.format(0)).parent_path();
-    if (!dir.empty()) std::filesystem::create_directories(dir, ec);
-
-    Renderer renderer(job.threads);
-    Image image;
-    const int total = job.shard.countIn(job.range);
-    Progress progress(total, Progress::isInteractive());
-    int done = 0, skipped = 0;
-    // Compressing a PNG takes longer than tracing a frame on a few cores, so
-    // finished frames are written on their own threads while the next ones
-    // render; a couple in flight keep memory bounded.
-    constexpr std::size_t kWritesInFlight = 2;
-    std::deque<std::future<std::string>> writes;  // each write's error, empty on success
-    std::string error;
-    auto collectOldest = [&] {
-        std::string e = writes.front().get();
-        writes.pop_front();
-        if (e.empty()) progress.update(++done);
-        if (error.empty()) error = e;
-        return error.empty();
-    };
-    bool ok = true;
-    for (int f = job.range.first; f <= job.range.last && ok && !interruptFlag(); ++f) {
-        if (!job.shard.contains(f)) continue;
-        std::string path = pattern.format(f);
-        // Files appear only complete (temporary file, then rename), so one that
-        // exists is a finished frame.
-        if (resume && std::filesystem::exists(path, ec)) {
-            ++skipped;
-            progress.skipped(1);
-            progress.update(++done);
-            continue;
-        }
-        renderer.render(job.loaded->scene, job.timeOf(f), job.camera, image, {job.antialias},
-                        &interruptFlag());
-        if (interruptFlag()) break;  // the image is incomplete: drop it
-        if (writes.size() >= kWritesInFlight && !(ok = collectOldest())) break;
-        writes.push_back(std::async(std::launch::async, [frame = image, path] {
-            std::string e;
-            writePng(frame, path, e);
-            return e;
-        }));
+    PngSequenceSink sink(pattern, resume);
+    Progress progress(int(job.range.count()), Progress::isInteractive());
+    const AnimationResult result = renderWithProgress(job, sink, progress);
+    switch (result.outcome) {
+        case AnimationResult::Outcome::Failed:
+            std::cerr << "f2 render: " << result.error << '\n';
+            return 1;
+        case AnimationResult::Outcome::Cancelled:
+            std::cerr << "f2 render: interrupted after " << result.done << " of " << result.total
+                      << " frames; the finished frames are on disk (rerun with --resume to continue)\n";
+            return interruptedExit();
+        case AnimationResult::Outcome::Finished:
+            break;
     }
-    while (!writes.empty()) ok = collectOldest() && ok;  // frames in flight finish even when interrupted
-    progress.clear();
-    if (!ok) {
-        std::cerr << "f2 render: " << error << '\n';
-        return 1;
-    }
-    int rendered = done - skipped;
-    if (interruptFlag()) {
-        std::cerr << "f2 render: interrupted after " << done << " of " << total
-                  << " frames; the finished frames are on disk (rerun with --resume to continue)\n";
-        return interruptedExit();
-    }
-    std::cerr << "f2 render: " << describe(job) << " -> " << output << ": " << rendered << " rendered";
-    if (resume) std::cerr << ", " << skipped << " already on disk";
-    std::cerr << ", " << renderer.threadCount() << " threads, " << progress.summary() << "\n";
+    std::cerr << "f2 render: " << describe(job) << " -> " << output << ": " << result.rendered() << " rendered";
+    if (resume) std::cerr << ", " << result.skipped << " already on disk";
+    std::cerr << ", " << result.threads << " threads, " << progress.summary() << "\n";
     return 0;
 }
 
 int renderVideo(const AnimationJob& job, VideoFormat format, const std::string& output) {
-    VideoSettings settings{format, job.camera.width, job.camera.height, job.fps, {}};
+    VideoSettings settings{format, job.camera.width, job.camera.height, job.range.outputFps, {}};
     const Color8 bg = job.loaded->scene.background;
-    settings.padColor = {bg.r, bg.g, bg.b};
     if (videoNeedsPadding(settings))
         std::cerr << "f2 render: note: H.264 needs an even width and height; padding " << settings.width
                   << "x" << settings.height << " to " << (settings.width + 1) / 2 * 2 << "x"
                   << (settings.height + 1) / 2 * 2 << " with the background colour\n";
-    VideoEncoder encoder;
-    std::string error;
-    if (!encoder.open(settings, output, error)) {
-        std::cerr << "f2 render: " << error << '\n';
-        return 1;
-    }
-    Renderer renderer(job.threads);
-    Image image;
-    Progress progress(job.range.count(), Progress::isInteractive());
-    int done = 0;
-    for (int f = job.range.first; f <= job.range.last && !interruptFlag(); ++f) {
-        renderer.render(job.loaded->scene, job.timeOf(f), job.camera, image, {job.antialias},
-                        &interruptFlag());
-        if (interruptFlag()) break;
-        if (!encoder.write(image, error)) {
-            progress.clear();
-            std::cerr << "f2 render: " << error << '\n';
+    VideoSink sink(output, format, {bg.r, bg.g, bg.b});
+    Progress progress(int(job.range.count()), Progress::isInteractive());
+    const AnimationResult result = renderWithProgress(job, sink, progress);
+    switch (result.outcome) {
+        case AnimationResult::Outcome::Failed:
+            std::cerr << "f2 render: " << result.error;
+            if (findProgram("ffmpeg").empty()) std::cerr << "; or write a PNG sequence with -o frames/f_%04d.png";
+            std::cerr << '\n';
             return 1;
-        }
-        progress.update(++done);
+        case AnimationResult::Outcome::Cancelled:
+            std::cerr << "f2 render: interrupted after " << result.done << " of " << result.total << " frames; no "
+                      << output << " written\n";
+            return interruptedExit();
+        case AnimationResult::Outcome::Finished:
+            break;
     }
-    progress.clear();
-    // Ctrl+C while ffmpeg still encodes the last frames counts as well.
-    bool finished = !interruptFlag() && encoder.finish(error, &interruptFlag());
-    if (interruptFlag()) {
-        encoder.abort();
-        std::cerr << "f2 render: interrupted after " << done << " of " << job.range.count() << " frames; no "
-                  << output << " written\n";
-        return interruptedExit();
-    }
-    if (!finished) {
-        std::cerr << "f2 render: " << error << '\n';
-        return 1;
-    }
-    std::cerr << "f2 render: " << describe(job) << " -> " << output << ": " << done << " frames of "
-              << videoFormatName(format) << ", " << renderer.threadCount() << " threads, "
-              << progress.summary() << "\n";
+    std::cerr << "f2 render: " << describe(job) << " -> " << output << ": " << result.done << " frames of "
+              << videoFormatName(format) << ", " << result.threads << " threads, " << progress.summary() << "\n";
     return 0;
 }
 
 int renderImage(const RenderArgs& args, const LoadedScene& loaded, const Camera& camera, double t) {
-    Renderer renderer(args.threads);
-    Image image;
-    FrameTimings timings =
-        renderer.render(loaded.scene, t, camera, image, {args.antialias}, &interruptFlag());
-    if (interruptFlag()) {
-        std::cerr << "f2 render: interrupted; " << args.output << " not written\n";
-        return interruptedExit();
-    }
-    std::string error;
-    if (!writePng(image, args.output, error)) {
-        std::cerr << "f2 render: " << error << '\n';
-        return 1;
+    PngImageSink sink(args.output);
+    const AnimationResult result = renderAnimation(loaded.scene, AnimationRange::still(t, loaded.scene.fps), camera,
+                                                   sink, &interruptFlag(), {}, {args.threads, {args.antialias}});
+    switch (result.outcome) {
+        case AnimationResult::Outcome::Failed:
+            std::cerr << "f2 render: " << result.error << '\n';
+            return 1;
+        case AnimationResult::Outcome::Cancelled:
+            std::cerr << "f2 render: interrupted; " << args.output << " not written\n";
+            return interruptedExit();
+        case AnimationResult::Outcome::Finished:
+            break;
     }
     std::cerr << "f2 render: " << loaded.name << " frame " << t << " -> " << args.output << " ("
-              << camera.width << "x" << camera.height << ", " << renderer.threadCount() << " threads, "
-              << timings.totalMs() << " ms)\n";
+              << camera.width << "x" << camera.height << ", " << result.threads << " threads, "
+              << result.renderMs << " ms)\n";
     return 0;
 }
 
@@ -211,7 +155,7 @@ int runRender(const RenderArgs& args) {
 
     const int fps = args.fps > 0 ? args.fps : loaded->scene.fps;
     // Default range: the whole animation, frame 0 to the last key at the output rate.
-    const int lastFrame = int(double(loaded->scene.lastFrame()) * fps / loaded->scene.fps + 1e-9);
+    const int lastFrame = int(outputFrameAt(loaded->scene.lastFrame(), loaded->scene.fps, fps));
     FrameRange range{0, lastFrame};
     if (!args.frames.empty()) {
         auto parsed = parseFrameRange(args.frames, lastFrame, error);
@@ -225,7 +169,8 @@ int runRender(const RenderArgs& args) {
         shard = *parsed;
     }
     const bool oneFrameOption = args.frameOption->count() > 0;
-    AnimationJob job{&*loaded, camera, range, shard, fps, args.antialias, args.threads};
+    const AnimationRange frames{range.first, range.last, loaded->scene.fps, fps, 0, shard.index, shard.count};
+    AnimationJob job{&*loaded, camera, frames, args.antialias, args.threads};
 
     if (auto format = videoFormatForPath(args.output)) {
         if (oneFrameOption)
@@ -250,7 +195,7 @@ int runRender(const RenderArgs& args) {
     if (!args.frames.empty() && range.count() != 1)
         return usageError("'" + args.output + "' holds one image; for --frames " + args.frames +
                           " write a numbered sequence (-o f_%04d.png) or a video (-o out.mp4)");
-    double t = args.frames.empty() ? args.frame : job.timeOf(range.first);
+    double t = args.frames.empty() ? args.frame : frames.timeOf(range.first);
     return renderImage(args, *loaded, camera, t);
 }
 }  // namespace

@@ -5,6 +5,7 @@
 
 #include "core/parse/parser.h"
 #include "core/scene/default_scene.h"
+#include "core/scene/limits.h"
 
 namespace f2::cli {
 
@@ -26,8 +27,9 @@ bool parseSize(const std::string& text, int& width, int& height, std::string& er
         error = "--size: expected WIDTHxHEIGHT such as 800x600, got '" + text + "'";
         return false;
     }
-    if (w < 1 || h < 1 || w > 16384 || h > 16384 || std::int64_t(w) * h > (std::int64_t(1) << 26)) {
-        error = "--size: " + text + " is outside 1..16384 a side and 2^26 pixels in all";
+    if (!imageSizeAllowed(w, h)) {
+        error = "--size: " + text + " is outside 1.." + std::to_string(kMaxImageSide) + " a side and " +
+                std::to_string(kMaxImagePixels) + " pixels in all";
         return false;
     }
     width = w;

@@ -1,10 +1,13 @@
 #include "animation_exporter.h"
 
+#include <QDir>
+#include <QFile>
 #include <QMetaObject>
 #include <QProgressDialog>
+#include <algorithm>
 #include <functional>
 
-#include "core/render/renderer.h"
+#include "io/render_animation.h"
 
 namespace f2::viewer {
 
@@ -28,7 +31,6 @@ void AnimationExporter::start(ExportJob job) {
 }
 
 void AnimationExporter::run(ExportJob job) {
-    const int total = job.lastFrame - job.firstFrame + 1;
     auto report = [this](bool ok, QString message) {
         QMetaObject::invokeMethod(
             this,
@@ -39,27 +41,32 @@ void AnimationExporter::run(ExportJob job) {
             },
             Qt::QueuedConnection);
     };
-    std::string error;
-    if (!job.sink->begin(job.camera.width, job.camera.height, job.scene->fps, total, error))
-        return report(false, QString::fromStdString(error));
-
-    Renderer renderer;
-    Image image;
-    for (int i = 0; i < total; ++i) {
-        renderer.render(*job.scene, job.firstFrame + i, job.camera, image, {}, &cancel_);
-        if (cancel_.load()) {
-            job.sink->finish(true, error);
-            return report(false, tr("Export cancelled after %1 of %2 frames").arg(i).arg(total));
-        }
-        if (!job.sink->write(image, i, error)) {
-            job.sink->finish(true, error);
-            return report(false, QString::fromStdString(error));
-        }
-        QMetaObject::invokeMethod(
-            this, [this, i, total] { emit progress(i + 1, total); }, Qt::QueuedConnection);
+    AnimationRange range;
+    range.first = job.firstFrame;
+    range.last = job.lastFrame;
+    range.sceneFps = range.outputFps = job.scene->fps;
+    const AnimationResult result =
+        renderAnimation(*job.scene, range, job.camera, *job.sink, &cancel_, [this](const AnimationProgress& p) {
+            QMetaObject::invokeMethod(
+                this, [this, p] { emit progress(int(p.done), int(p.total)); }, Qt::QueuedConnection);
+        });
+    switch (result.outcome) {
+        case AnimationResult::Outcome::Cancelled:
+            return report(false, tr("Export cancelled after %1 of %2 frames").arg(result.done).arg(result.total));
+        case AnimationResult::Outcome::Failed:
+            return report(false, QString::fromStdString(result.error));
+        case AnimationResult::Outcome::Finished:
+            return report(true, tr("Exported %1 frames to %2").arg(result.done).arg(job.destination));
     }
-    if (!job.sink->finish(false, error)) return report(false, QString::fromStdString(error));
-    report(true, tr("Exported %1 frames to %2").arg(total).arg(job.sink->destination()));
+}
+
+FramePattern exportSequencePattern(const QString& directory, const QString& stem, int frameCount) {
+    FramePattern pattern;
+    pattern.prefix = QFile::encodeName(QDir(directory).filePath(stem + "_")).toStdString();
+    pattern.suffix = ".png";
+    pattern.width = std::max(4, int(QString::number(std::max(0, frameCount - 1)).size()));
+    pattern.zeroPad = true;
+    return pattern;
 }
 
 void exportWithProgress(QWidget* parent, ExportJob job,

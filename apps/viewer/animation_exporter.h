@@ -1,6 +1,7 @@
 #pragma once
-/// Renders a range of frames into a FrameSink on its own thread, reporting
-/// progress with queued signals and stopping promptly when cancelled.
+/// Runs f2::renderAnimation (the loop `f2 render` uses too) on its own thread
+/// for an export, reporting progress with queued signals and stopping promptly
+/// when cancelled.
 #include <QObject>
 #include <QString>
 #include <atomic>
@@ -10,7 +11,8 @@
 
 #include "core/render/camera.h"
 #include "core/scene/scene_desc.h"
-#include "frame_sink.h"
+#include "io/frame_pattern.h"
+#include "io/frame_sink.h"
 
 class QWidget;
 
@@ -22,7 +24,12 @@ struct ExportJob {
     int firstFrame = 0;
     int lastFrame = 0;
     std::unique_ptr<FrameSink> sink;
+    QString destination;  ///< where the sink writes, for the final message
 };
+
+/// The export's PNG sequence `<directory>/<stem>_0000.png`, ...: at least four
+/// digits, more if `frameCount` needs them.
+FramePattern exportSequencePattern(const QString& directory, const QString& stem, int frameCount);
 
 class AnimationExporter : public QObject {
     Q_OBJECT
@@ -31,8 +38,8 @@ class AnimationExporter : public QObject {
     /// Cancels and joins a running export.
     ~AnimationExporter() override;
 
-    /// Starts rendering on a worker thread (its own Renderer: the live view's
-    /// renderer belongs to RenderController's thread). One job at a time.
+    /// Starts rendering on a worker thread (renderAnimation's own Renderer: the
+    /// live view's renderer belongs to RenderController's thread). One job at a time.
     void start(ExportJob job);
     bool isRunning() const { return running_; }
 
@@ -40,7 +47,7 @@ class AnimationExporter : public QObject {
     void cancel() { cancel_.store(true); }
 
    signals:
-    /// `done` of `total` frames are written.
+    /// `done` of `total` frames are in the output (written, or handed to the encoder).
     void progress(int done, int total);
     /// `ok` false on error or cancel; `message` says what happened.
     void finished(bool ok, const QString& message);

@@ -2,6 +2,7 @@
 
 #include <QActionGroup>
 #include <QApplication>
+#include <QDir>
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QDropEvent>
@@ -19,8 +20,11 @@
 #include <QVBoxLayout>
 
 #include "animation_exporter.h"
+#include "core/anim/frame_time.h"
 #include "image_convert.h"
 #include "io/png_writer.h"
+#include "io/sequence_sink.h"
+#include "io/video_sink.h"
 #include "orbit_camera.h"
 #include "playback.h"
 #include "scene_document.h"
@@ -219,7 +223,7 @@ void MainWindow::updateStatus() {
         timeStatus_->setText(tr("– ms/frame"));
         sizeStatus_->setText(tr("–"));
     } else {
-        frameStatus_->setText(tr("frame %1/%2").arg(int(std::floor(shownFrame_.time + 1e-9))).arg(last));
+        frameStatus_->setText(tr("frame %1/%2").arg(frameAt(shownFrame_.time)).arg(last));
         timeStatus_->setText(tr("%1 ms/frame").arg(shownFrame_.timings.totalMs(), 0, 'f', 1));
         sizeStatus_->setText(tr("%1×%2").arg(shownFrame_.size.width()).arg(shownFrame_.size.height()));
     }
@@ -233,19 +237,26 @@ void MainWindow::openDialog() {
     if (!path.isEmpty()) openFile(path);
 }
 
+QString MainWindow::exportStem() const {
+    // "<default scene>" has no file name: its brackets do not belong in one.
+    return QFileInfo(document_->displayName()).completeBaseName().remove('<').remove('>');
+}
+
+bool MainWindow::refuseSceneFile(const QString& path, const QString& title) {
+    // The viewer never writes the scene file, whatever name the user picks.
+    if (document_->path().isEmpty() || QFileInfo(path) != QFileInfo(document_->path())) return false;
+    QMessageBox::warning(this, title, tr("Refusing to overwrite the scene file."));
+    return true;
+}
+
 void MainWindow::saveFrame() {
     if (viewport_->image().isNull()) return;
-    const QString stem = QFileInfo(document_->displayName()).completeBaseName().remove('<').remove('>');
+    const QString stem = exportStem();
     const QString suggested =
         QStringLiteral("%1_frame_%2.png").arg(stem).arg(playback_->frame(), 4, 10, QChar('0'));
     const QString path =
         QFileDialog::getSaveFileName(this, tr("Save Frame"), suggested, tr("PNG images (*.png)"));
-    if (path.isEmpty()) return;
-    // The viewer never writes the scene file, whatever name the user picks.
-    if (!document_->path().isEmpty() && QFileInfo(path) == QFileInfo(document_->path())) {
-        QMessageBox::warning(this, tr("Save Frame"), tr("Refusing to overwrite the scene file."));
-        return;
-    }
+    if (path.isEmpty() || refuseSceneFile(path, tr("Save Frame"))) return;
     std::string error;
     if (!writePng(fromQImage(viewport_->image()), QFile::encodeName(path).toStdString(), error))
         QMessageBox::warning(this, tr("Save Frame"), QString::fromStdString(error));
@@ -259,40 +270,41 @@ void MainWindow::exportPngSequence() {
     playback_->pause();  // the export gets the CPU
     const QString dir = QFileDialog::getExistingDirectory(this, tr("Export PNG Sequence to Folder"));
     if (dir.isEmpty()) return;
-    const QString stem = QFileInfo(document_->displayName()).completeBaseName().remove('<').remove('>');
-    runExport(std::move(scene), std::make_unique<PngSequenceSink>(dir, stem));
+    const QString stem = exportStem();
+    const FramePattern pattern = exportSequencePattern(dir, stem, scene->lastFrame() + 1);
+    runExport(std::move(scene), std::make_unique<PngSequenceSink>(pattern), QDir(dir).filePath(stem + "_*.png"));
 }
 
 void MainWindow::exportVideo() {
     auto scene = document_->scene();
     if (!scene) return;
     playback_->pause();
-    const QString stem = QFileInfo(document_->displayName()).completeBaseName().remove('<').remove('>');
-    QFileDialog dialog(this, tr("Export Video"), stem + ".mp4",
+    QFileDialog dialog(this, tr("Export Video"), exportStem() + ".mp4",
                        tr("MP4 video (*.mp4);;WebM video (*.webm);;GIF animation (*.gif)"));
     dialog.setAcceptMode(QFileDialog::AcceptSave);
     dialog.setDefaultSuffix("mp4");
     if (dialog.exec() != QDialog::Accepted || dialog.selectedFiles().isEmpty()) return;
     const QString path = dialog.selectedFiles().first();
-    if (!videoFormatForPath(QFile::encodeName(path).toStdString())) {
+    const std::string file = QFile::encodeName(path).toStdString();
+    const auto format = videoFormatForPath(file);
+    if (!format) {
         QMessageBox::warning(this, tr("Export Video"), tr("Use a .mp4, .webm or .gif file name."));
         return;
     }
-    if (!document_->path().isEmpty() && QFileInfo(path) == QFileInfo(document_->path())) {
-        QMessageBox::warning(this, tr("Export Video"), tr("Refusing to overwrite the scene file."));
-        return;
-    }
+    if (refuseSceneFile(path, tr("Export Video"))) return;
     const Color8 bg = scene->background;
-    runExport(std::move(scene), std::make_unique<VideoSink>(path, Rgb8{bg.r, bg.g, bg.b}));
+    runExport(std::move(scene), std::make_unique<VideoSink>(file, *format, Rgb8{bg.r, bg.g, bg.b}), path);
 }
 
-void MainWindow::runExport(std::shared_ptr<const SceneDesc> scene, std::unique_ptr<FrameSink> sink) {
+void MainWindow::runExport(std::shared_ptr<const SceneDesc> scene, std::unique_ptr<FrameSink> sink,
+                           const QString& destination) {
     ExportJob job;
     // Like `f2 render`: the scene's /camera size, seen from the current view.
     job.camera = viewport_->viewCamera(QSize(scene->camera.width, scene->camera.height));
     job.scene = std::move(scene);
     job.lastFrame = job.scene->lastFrame();
     job.sink = std::move(sink);
+    job.destination = destination;
     exportWithProgress(this, std::move(job), [this](bool ok, bool cancelled, const QString& message) {
         if (ok || cancelled)
             statusBar()->showMessage(message, 10000);

@@ -15,11 +15,11 @@ class QDockWidget;
 
 namespace f2 {
 struct SceneDesc;
-}
+class FrameSink;
+}  // namespace f2
 
 namespace f2::viewer {
 
-class FrameSink;
 class Playback;
 class SceneDocument;
 class TimelineWidget;
@@ -72,10 +72,15 @@ class MainWindow : public QMainWindow {
     void saveFrame();
     void exportPngSequence();
     void exportVideo();
+    /// The scene's name as the start of an exported file's name.
+    QString exportStem() const;
+    /// True (after saying so) if `path` is the scene file, which the viewer never writes.
+    bool refuseSceneFile(const QString& path, const QString& title);
     /// The export flow shared by both: renders frames 0..last of `scene` at its
     /// /camera size from the current view into `sink`, with progress; errors
-    /// go to a message box.
-    void runExport(std::shared_ptr<const SceneDesc> scene, std::unique_ptr<FrameSink> sink);
+    /// go to a message box. `destination` names the output in messages.
+    void runExport(std::shared_ptr<const SceneDesc> scene, std::unique_ptr<FrameSink> sink,
+                   const QString& destination);
     void addRecentFile(const QString& path);
     void rebuildRecentMenu();
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/anim/frame_time.h"
+
 namespace f2::viewer {
 
 namespace {
@@ -23,7 +25,7 @@ void Playback::setRange(int lastFrame, int fps) {
     restartClock();
 }
 
-int Playback::frame() const { return std::clamp(int(std::floor(time_ + 1e-9)), 0, lastFrame_); }
+int Playback::frame() const { return int(std::clamp<std::int64_t>(frameAt(time_), 0, lastFrame_)); }
 
 void Playback::play() {
     if (isPlaying()) return;
@@ -43,7 +45,7 @@ void Playback::togglePlaying() { isPlaying() ? pause() : play(); }
 void Playback::step(int frames) {
     pause();
     const int count = lastFrame_ + 1;
-    const int target = ((int(std::lround(time_)) + frames) % count + count) % count;
+    const int target = ((frame() + frames) % count + count) % count;
     setTime(target);
 }
 

@@ -27,7 +27,7 @@ class Playback : public QObject {
     void play();
     void pause();
     void togglePlaying();
-    /// Pauses and moves to the previous/next whole frame, wrapping around.
+    /// Pauses and moves `frames` whole frames from frame() (the frame shown), wrapping around.
     void step(int frames);
     /// Moves to `time` (clamped); keeps playing from there if playing.
     void seek(double time);

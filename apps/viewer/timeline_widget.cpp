@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/anim/frame_time.h"
+
 namespace f2::viewer {
 
 TimelineWidget::TimelineWidget(QWidget* parent) : QWidget(parent) {
@@ -73,7 +75,7 @@ void TimelineWidget::setRange(int lastFrame, int fps) {
 }
 
 void TimelineWidget::setTime(double time) {
-    const int frame = std::clamp(int(std::floor(time + 1e-9)), 0, lastFrame_);
+    const int frame = int(std::clamp<std::int64_t>(frameAt(time), 0, lastFrame_));
     {
         const QSignalBlocker block(slider_);
         if (!slider_->isSliderDown()) slider_->setValue(frame);

@@ -6,13 +6,9 @@
 #include <algorithm>
 #include <cmath>
 
-namespace f2::viewer {
+#include "core/scene/limits.h"
 
-namespace {
-// SPEC 7 limits on the image; a huge high-DPI window must not exceed them.
-constexpr int kMaxSide = 16384;
-constexpr qint64 kMaxPixels = qint64(1) << 26;
-}  // namespace
+namespace f2::viewer {
 
 ViewportWidget::ViewportWidget(QWidget* parent) : QWidget(parent) {
     setFocusPolicy(Qt::StrongFocus);
@@ -45,10 +41,11 @@ QSize ViewportWidget::renderSize() const {
     const double factor = scale_ == RenderScale::Quarter ? 0.25 : scale_ == RenderScale::Half ? 0.5 : 1.0;
     // Device pixels, so a high-DPI screen gets a sharp picture at 100 %.
     const double k = factor * devicePixelRatioF();
-    int w = std::clamp(int(std::lround(width() * k)), 1, kMaxSide);
-    int h = std::clamp(int(std::lround(height() * k)), 1, kMaxSide);
-    if (qint64(w) * h > kMaxPixels) {
-        const double shrink = std::sqrt(double(kMaxPixels) / (double(w) * h));
+    // SPEC 7 limits on the image; a huge high-DPI window must not exceed them.
+    int w = std::clamp(int(std::lround(width() * k)), 1, kMaxImageSide);
+    int h = std::clamp(int(std::lround(height() * k)), 1, kMaxImageSide);
+    if (!imageSizeAllowed(w, h)) {
+        const double shrink = std::sqrt(double(kMaxImagePixels) / (double(w) * h));
         w = std::max(1, int(w * shrink));
         h = std::max(1, int(h * shrink));
     }

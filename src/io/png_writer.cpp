@@ -2,8 +2,10 @@
 
 #include <png.h>
 
+#include <cerrno>
 #include <csetjmp>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 
 #include "io/atomic_file.h"
@@ -52,7 +54,10 @@ bool writePng(const Image& image, const std::string& path, std::string& error) {
         return false;
     }
     if (!writeRows(file.handle(), image, error)) {
-        error = "cannot write '" + path + "': " + error;
+        // libpng says only "Write Error"; the system says why (a full disk, /dev/full).
+        const int cause = errno;
+        error = "cannot write '" + path + "': " +
+                (std::ferror(file.handle()) && cause != 0 ? std::string(std::strerror(cause)) : error);
         return false;
     }
     if (!file.commit()) {

@@ -1,19 +1,13 @@
 #include "io/video_encoder.h"
 
-#include <fcntl.h>
-#include <signal.h>
-#include <spawn.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <cerrno>
+#include <climits>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-
-extern char** environ;
 
 namespace f2 {
 
@@ -34,17 +28,17 @@ std::string hexColor(Rgb8 c) {
     return text;
 }
 
-bool writeAll(int fd, const std::uint8_t* data, std::size_t size) {
-    while (size > 0) {
-        ssize_t n = ::write(fd, data, size);
-        if (n < 0) {
-            if (errno == EINTR) continue;  // a signal; the caller checks its cancel flag between frames
-            return false;
-        }
-        data += n;
-        size -= std::size_t(n);
+/// "; <program> said: <what it said>" with its lines joined by "; ", or "" if it said nothing.
+std::string messageFrom(const std::string& program, const std::string& said) {
+    std::string text;
+    std::size_t start = 0;
+    while (start < said.size()) {
+        std::size_t end = said.find_first_of("\r\n", start);
+        if (end == std::string::npos) end = said.size();
+        if (end > start) text += (text.empty() ? "" : "; ") + said.substr(start, end - start);
+        start = end + 1;
     }
-    return true;
+    return text.empty() ? "" : "; " + program + " said: " + text;
 }
 }  // namespace
 
@@ -138,78 +132,57 @@ std::string findProgram(const std::string& name) {
     return "";
 }
 
+std::string ffmpegFileName(const std::string& path) {
+    if (path.starts_with('/')) return "file:" + path;
+    std::string cwd(PATH_MAX, '\0');
+    if (!::getcwd(cwd.data(), cwd.size())) return "file:" + path;  // the relative name is still a file
+    cwd.resize(std::strlen(cwd.c_str()));
+    return "file:" + cwd + (cwd.ends_with('/') ? "" : "/") + path;
+}
+
 VideoEncoder::~VideoEncoder() {
     if (!finished_) abort();
 }
 
+bool VideoEncoder::fail(VideoFailure why, std::string message, std::string& error) {
+    failure_ = why;
+    error = std::move(message);
+    abort();
+    return false;
+}
+
 bool VideoEncoder::open(const VideoSettings& settings, const std::string& path, std::string& error) {
     settings_ = settings;
-    path_ = path;
+    failure_ = VideoFailure::None;
+    framesWritten_ = 0;
+    if (!resolveOutput(path, target_, error)) return false;
+    if (target_.kind == OutputTarget::Kind::Special) {
+        error = "cannot write a video to '" + path + "': it is " + specialFileDescription(target_.realPath) +
+                ", and a video is written only to a regular file";
+        return false;
+    }
     std::string ffmpeg = findProgram("ffmpeg");
     if (ffmpeg.empty()) {
         error = std::string("writing ") + videoFormatName(settings.format) +
                 " needs the ffmpeg program, which is not on PATH; install it (Debian/Ubuntu: "
-                "sudo apt-get install ffmpeg; macOS: brew install ffmpeg) or write a PNG sequence "
-                "with -o frames/f_%04d.png";
+                "sudo apt-get install ffmpeg; macOS: brew install ffmpeg)";
         return false;
     }
-    tempPath_ = path + ".tmp-" + std::to_string(::getpid());
-    // Fail early and clearly if the directory is not writable; ffmpeg's own
-    // message would be less plain.
-    int probe = ::open(tempPath_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    if (probe < 0) {
-        error = "cannot write '" + path + "': " + std::strerror(errno);
+    // Created here, so a directory we cannot write fails early and plainly,
+    // and the name is ours alone; ffmpeg (-y) writes into it.
+    int fd = createTemporaryBeside(target_.realPath, tempPath_, error);
+    if (fd < 0) return false;
+    ::close(fd);
+    finished_ = false;
+    if (!ffmpeg_.start(ffmpeg, ffmpegArguments(settings, ffmpegFileName(tempPath_)), error)) {
+        abort();
         return false;
     }
-    ::close(probe);
-
-    int fds[2];
-    if (::pipe2(fds, O_CLOEXEC) != 0) {
-        error = std::string("cannot create a pipe to ffmpeg: ") + std::strerror(errno);
-        std::remove(tempPath_.c_str());
-        return false;
-    }
-    ::signal(SIGPIPE, SIG_IGN);
-
-    std::vector<std::string> args = ffmpegArguments(settings, tempPath_);
-    args.insert(args.begin(), ffmpeg);
-    std::vector<char*> argv;
-    for (std::string& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_adddup2(&actions, fds[0], STDIN_FILENO);
-    posix_spawnattr_t attr;
-    posix_spawnattr_init(&attr);
-    // Own process group: Ctrl+C in the terminal reaches only f2, which then
-    // decides what happens to the file (ffmpeg would otherwise finish it).
-    // SIGPIPE back to default for ffmpeg, since the ignore above is inherited.
-    sigset_t defaults;
-    sigemptyset(&defaults);
-    sigaddset(&defaults, SIGPIPE);
-    sigaddset(&defaults, SIGINT);
-    sigaddset(&defaults, SIGTERM);
-    posix_spawnattr_setsigdefault(&attr, &defaults);
-    posix_spawnattr_setpgroup(&attr, 0);
-    posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGDEF);
-    int rc = ::posix_spawn(&pid_, ffmpeg.c_str(), &actions, &attr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    posix_spawnattr_destroy(&attr);
-    ::close(fds[0]);
-    if (rc != 0) {
-        ::close(fds[1]);
-        pid_ = -1;
-        std::remove(tempPath_.c_str());
-        error = "cannot start '" + ffmpeg + "': " + std::strerror(rc);
-        return false;
-    }
-    pipe_ = fds[1];
     return true;
 }
 
-bool VideoEncoder::write(const Image& frame, std::string& error) {
-    if (pipe_ < 0) {
+bool VideoEncoder::write(const Image& frame, std::string& error, const std::atomic<bool>* cancel) {
+    if (!ffmpeg_.running()) {
         error = "the video is not open";
         return false;
     }
@@ -218,78 +191,87 @@ bool VideoEncoder::write(const Image& frame, std::string& error) {
         return false;
     }
     static_assert(sizeof(Rgb8) == 3, "frames are sent as packed rgb24");
-    if (!writeAll(pipe_, reinterpret_cast<const std::uint8_t*>(frame.pixels.data()),
-                  frame.pixels.size() * 3)) {
-        std::string status;
-        ::close(pipe_);
-        pipe_ = -1;
-        waitForExit(status);
-        error = "ffmpeg stopped accepting frames (" + status + "); its messages, if any, are above";
-        abort();
-        return false;
+    switch (ffmpeg_.writeInput(frame.pixels.data(), frame.pixels.size() * 3, cancel)) {
+        case ChildProcess::Io::Done:
+            ++framesWritten_;
+            return true;
+        case ChildProcess::Io::Cancelled:
+            return fail(VideoFailure::Cancelled, "interrupted", error);
+        case ChildProcess::Io::Closed:
+            break;
     }
-    return true;
-}
-
-bool VideoEncoder::waitForExit(std::string& error, const std::atomic<bool>* cancel) {
-    if (pid_ < 0) return true;
-    int status = 0;
-    while (::waitpid(pid_, &status, 0) < 0) {
-        if (errno == EINTR && cancel && cancel->load()) {
-            error = "interrupted";
-            return false;  // ffmpeg still runs; the caller aborts
-        }
-        if (errno != EINTR) {
-            error = std::string("waiting for ffmpeg: ") + std::strerror(errno);
-            pid_ = -1;
-            return false;
-        }
-    }
-    pid_ = -1;
-    if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return true;
-    error = WIFEXITED(status) ? "ffmpeg exited with status " + std::to_string(WEXITSTATUS(status))
-                              : "ffmpeg was killed by signal " + std::to_string(WTERMSIG(status));
-    return false;
+    // ffmpeg closed its input: it has failed. Let it finish saying why.
+    ffmpeg_.closeInput();
+    if (ffmpeg_.wait(cancel) == ChildProcess::Io::Cancelled) return fail(VideoFailure::Cancelled, "interrupted", error);
+    std::string exit = ffmpeg_.describeExit();
+    return fail(VideoFailure::Failed,
+                "cannot write '" + target_.path + "': ffmpeg stopped accepting frames" +
+                    (exit.empty() ? "" : " (" + exit + ")") +
+                    messageFrom("ffmpeg", ffmpeg_.standardError()),
+                error);
 }
 
 bool VideoEncoder::finish(std::string& error, const std::atomic<bool>* cancel) {
-    if (pipe_ >= 0) {
-        ::close(pipe_);  // end of stream: ffmpeg flushes and writes the trailer
-        pipe_ = -1;
-    }
-    std::string status;
-    if (!waitForExit(status, cancel)) {
-        error = cancel && cancel->load() ? "interrupted"
-                                         : "ffmpeg failed (" + status + "); its messages, if any, are above";
-        abort();
+    if (finished_) {
+        error = "the video is not open";
         return false;
     }
-    // ffmpeg has closed the file; make it durable before it takes the real name.
-    int fd = ::open(tempPath_.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd >= 0) {
-        ::fsync(fd);
-        ::close(fd);
-    }
-    if (std::rename(tempPath_.c_str(), path_.c_str()) != 0) {
-        error = "cannot rename onto '" + path_ + "': " + std::strerror(errno);
-        abort();
-        return false;
-    }
+    ffmpeg_.closeInput();  // end of stream: ffmpeg flushes and writes the trailer
+    if (ffmpeg_.wait(cancel) == ChildProcess::Io::Cancelled) return fail(VideoFailure::Cancelled, "interrupted", error);
+    std::string exit = ffmpeg_.describeExit();
+    if (!exit.empty())
+        return fail(VideoFailure::Failed,
+                    "cannot write '" + target_.path + "': ffmpeg failed (" + exit + ")" +
+                        messageFrom("ffmpeg", ffmpeg_.standardError()),
+                    error);
+    // At log level "error" ffmpeg says nothing when all is well. It exits 0
+    // after some failures (a full disk), so anything it says is one.
+    if (!ffmpeg_.standardError().empty())
+        return fail(VideoFailure::Failed,
+                    "cannot write '" + target_.path + "': ffmpeg reported an error" +
+                        messageFrom("ffmpeg", ffmpeg_.standardError()),
+                    error);
+    if (!checkResult(error, cancel)) return false;
+    if (!replaceWithTemporary(tempPath_, target_, error)) return fail(VideoFailure::Failed, error, error);
     finished_ = true;
     return true;
 }
 
+bool VideoEncoder::checkResult(std::string& error, const std::atomic<bool>* cancel) {
+    struct stat info {};
+    if (::stat(tempPath_.c_str(), &info) != 0 || info.st_size == 0)
+        return fail(VideoFailure::Failed, "cannot write '" + target_.path + "': ffmpeg wrote an empty file", error);
+    // The frame count, where ffprobe is installed: a truncated file has fewer
+    // or none. Packets are counted, not decoded: one packet per frame here.
+    std::string ffprobe = findProgram("ffprobe");
+    if (ffprobe.empty()) return true;
+    std::string output, errors;
+    bool cancelled = false;
+    int status = runToCompletion(ffprobe,
+                                 {"-v", "error", "-select_streams", "v:0", "-count_packets", "-show_entries",
+                                  "stream=nb_read_packets", "-of", "csv=p=0", ffmpegFileName(tempPath_)},
+                                 output, errors, cancel, cancelled);
+    if (cancelled) return fail(VideoFailure::Cancelled, "interrupted", error);
+    long long frames = -1;
+    if (status == 0) {
+        try {
+            frames = std::stoll(output);
+        } catch (const std::exception&) {
+        }
+    }
+    if (frames != framesWritten_)
+        return fail(VideoFailure::Failed,
+                    "cannot write '" + target_.path + "': ffmpeg's video is broken: ffprobe " +
+                        (frames < 0 ? std::string("cannot read it") : "finds " + std::to_string(frames)) + " of " +
+                        std::to_string(framesWritten_) + " frames" + messageFrom("ffprobe", errors),
+                    error);
+    return true;
+}
+
 void VideoEncoder::abort() {
-    if (pipe_ >= 0) {
-        ::close(pipe_);
-        pipe_ = -1;
-    }
-    if (pid_ > 0) {
-        ::kill(pid_, SIGKILL);
-        std::string ignored;
-        waitForExit(ignored);
-    }
+    ffmpeg_.kill();
     if (!tempPath_.empty()) std::remove(tempPath_.c_str());
+    tempPath_.clear();
     finished_ = true;
 }
 

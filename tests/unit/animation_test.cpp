@@ -103,7 +103,7 @@ TEST(Animation, RobotRightHandPivotAfterTurnAndLean) {
 
 TEST(Animation, PositiveArmRxSwingsBackwardUp) {
     SceneDesc scene = test::sceneFromText("/robot r 0 0 0\n/key 0 r.rhand 0 0 0 90 0 0\n");
-    FrameScene frame;
+    EvaluatedFrame frame;
     evaluateFrame(scene, 0, frame);
     // Primitive order: body, head, left eye, right eye, lhand, rhand. The rhand
     // cylinder centre is 50 below its pivot (52, 35, 0); rx = 90 sends -y to -z.
@@ -115,7 +115,7 @@ TEST(Animation, PositiveArmRxSwingsBackwardUp) {
 
 TEST(Animation, HeadTurnCarriesTheEyes) {
     SceneDesc scene = test::sceneFromText("/robot r 0 0 0\n/key 0 r.head 0 0 0 0 90 0\n");
-    FrameScene frame;
+    EvaluatedFrame frame;
     evaluateFrame(scene, 0, frame);
     // Head pivot: (0, -105 + 150, 0) = (0, 45, 0). Right eye at (14, 30, 25) in
     // the head frame; Ry(90): x' = z = 25, z' = -x = -14.
@@ -127,7 +127,7 @@ TEST(Animation, HeadTurnCarriesTheEyes) {
 
 TEST(Animation, ModelsExpandToTheirPrimitivesWithColoursAndMaterials) {
     SceneDesc scene = test::sceneFromRepo("seed_example.f2");
-    FrameScene frame;
+    EvaluatedFrame frame;
     evaluateFrame(scene, 0, frame);
     ASSERT_EQ(frame.primitives.size(), 1u + 6u + 4u);
     // The floor is green; the robot default grey; its eyes keep 20 20 20.
@@ -142,7 +142,7 @@ TEST(Animation, ModelsExpandToTheirPrimitivesWithColoursAndMaterials) {
 TEST(Animation, EyesTakeTheHeadsMaterialAndKeepTheirColour) {
     SceneDesc scene = test::sceneFromText(
         "/robot r 0 0 0\n/paint r 255 0 0\n/paint r.head 0 0 255\n/material r.head 0.5 0.6 0.7 8\n");
-    FrameScene frame;
+    EvaluatedFrame frame;
     evaluateFrame(scene, 0, frame);
     EXPECT_EQ(frame.surfaces[2].color, (Vec3{20, 20, 20}) / 255.0f);
     EXPECT_EQ(frame.surfaces[2].material, (Material{0.5f, 0.6f, 0.7f, 8}));
@@ -170,7 +170,7 @@ TEST(Animation, DemoSceneStoryKeepsEveryoneInFrameAndLastsTenSeconds) {
     SceneDesc scene = test::sceneFromRepo("demo.f2");
     EXPECT_GE(scene.lastFrame(), 9 * scene.fps);
     EXPECT_LE(scene.lastFrame(), 11 * scene.fps);
-    FrameScene frame;
+    EvaluatedFrame frame;
     Camera camera = Camera::fromDesc(scene.camera);
     for (int t = 0; t <= scene.lastFrame(); t += 4) {
         evaluateFrame(scene, t, frame);

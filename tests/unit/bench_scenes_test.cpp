@@ -52,7 +52,7 @@ TEST(BenchScenes, RobotsParseAndAnimate) {
         EXPECT_EQ(scene.lights.size(), 1u);
         EXPECT_FLOAT_EQ(scene.ambient, 0.2f);
         // The arms move between frames, so evaluation and the BVH differ per frame.
-        FrameScene a, b;
+        EvaluatedFrame a, b;
         evaluateFrame(scene, 0.0, a);
         evaluateFrame(scene, 6.0, b);
         ASSERT_EQ(a.primitives.size(), b.primitives.size());

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/geometry/bvh.h"
+#include "core/geometry/bvh_packet.h"
 #include "core/render/camera.h"
 #include "test_scenes.h"
 
@@ -350,7 +351,7 @@ TEST(BvhProperty, EntryNodesOfATileLoseNoHit) {
                 }
                 EyeRays packetRays(camera.eye, Vec3P(simd::load(dx), simd::load(dy), simd::load(dz)));
                 PacketHit hit;
-                bvh.intersect(packetRays, simd::allLanes(), Float(0.0f), hit, entry);
+                intersectPacket(bvh, packetRays, simd::allLanes(), Float(0.0f), hit, entry);
                 alignas(64) float t[simd::kWidth];
                 alignas(64) std::int32_t prim[simd::kWidth];
                 simd::store(t, hit.t);
@@ -384,7 +385,7 @@ void expectShadowPacketMatchesBruteForce(const Bvh& bvh, const std::vector<Primi
         ox[i] = o.x, oy[i] = o.y, oz[i] = o.z;
     }
     ParallelRays packet(Vec3P(simd::load(ox), simd::load(oy), simd::load(oz)), direction);
-    std::uint32_t blocked = simd::bits(bvh.occluded(packet, simd::allLanes(), Float(0.0f), Float(kInfinity), Int(-1)));
+    std::uint32_t blocked = simd::bits(occludedPacket(bvh, packet, simd::allLanes(), Float(0.0f), Float(kInfinity), Int(-1)));
     for (int i = 0; i < simd::kWidth; ++i) {
         Ray ray{origins[std::size_t(i) % origins.size()], direction};
         ASSERT_EQ(((blocked >> i) & 1u) != 0, bruteAny(prims, ray, 0, kInfinity))
@@ -449,7 +450,7 @@ TEST(BvhProperty, BeamEntryNodesLoseNoOccluder) {
         }
         ParallelRays rays(Vec3P(simd::load(ox), simd::load(oy), simd::load(oz)), direction);
         std::uint32_t blocked =
-            simd::bits(bvh.occluded(rays, simd::allLanes(), Float(0.0f), Float(kInfinity), Int(-1), entry));
+            simd::bits(occludedPacket(bvh, rays, simd::allLanes(), Float(0.0f), Float(kInfinity), Int(-1), entry));
         for (int i = 0; i < simd::kWidth; ++i) {
             bool expected = bruteAny(prims, {{ox[i], oy[i], oz[i]}, direction}, 0, kInfinity);
             ASSERT_EQ(((blocked >> i) & 1u) != 0, expected) << "beam " << beam << " lane " << i;

@@ -407,7 +407,8 @@ TEST(Parser, DuplicateKeyReplacesWithWarning) {
     ParseResult r = parseScene(
         "/sphere s 1 0 0 0\n"
         "/key 5 s 1 0 0 0 0 0\n"
-        "/key 5 s 2 0 0 0 0 0\n",
+        "/key 5 s 2 0 0 0 0 0\n"
+        "/amb_light 1\n",
         kFile);
     ASSERT_TRUE(r.ok()) << dump(r);
     ASSERT_EQ(r.diagnostics.size(), 1u);
@@ -776,7 +777,7 @@ TEST(ParserError, InvalidName) {
 
 TEST(ParserError, DuplicateName) {
     expectError("/sphere r1 1 0 0 0\n\n  /robot r1 0 0 0\n", 3, 10,
-                "duplicate name 'r1' (first defined at 1:1)");
+                "duplicate name 'r1' (first defined at 1:9)");
     const SceneDesc s = parseOk("/sphere r1 1 0 0 0\n/sphere R1 1 0 0 0\n");  // case-sensitive
     EXPECT_EQ(s.objects.size(), 2u);
 }
@@ -850,7 +851,7 @@ TEST(ParserError, WarningsAloneKeepTheScene) {
     ParseResult r = parseScene("/sphere s 1 0 0 0\n/key 1 s\n/key 1 s\n", kFile);
     EXPECT_TRUE(r.ok());
     EXPECT_FALSE(hasErrors(r.diagnostics));
-    EXPECT_EQ(r.diagnostics.size(), 1u);
+    EXPECT_EQ(r.diagnostics.size(), 2u) << dump(r);  // the repeated key, and no light
 }
 
 // Hostile input
@@ -873,13 +874,17 @@ TEST(ParserError, BinaryGarbageGivesEscapedErrors) {
     ASSERT_EQ(r.diagnostics.size(), 4u) << dump(r);
     EXPECT_EQ(r.diagnostics[0].format(),
               "t.f2:1:9: error: invalid name '\\xff\\xfe\\x00\\x01' (expected a letter "
-              "or '_', then letters, digits or '_')");
+              "or '_', then letters, digits or '_'; it contains the bytes 0xFF 0xFE at column 9, a UTF-16 byte "
+              "order mark: save the file as UTF-8)");
     EXPECT_EQ(r.diagnostics[1].format(),
-              "t.f2:2:1: error: expected a command starting with '/', got '\\x00\\x00\\x00'");
+              "t.f2:2:1: error: expected a command starting with '/', got '\\x00\\x00\\x00' (it contains U+0000 "
+              "NULL at column 1, an invisible character: delete it)");
     EXPECT_EQ(r.diagnostics[2].format(),
-              "t.f2:3:1: error: expected a command starting with '/', got '\\x89PNG'");
+              "t.f2:3:1: error: expected a command starting with '/', got '\\x89PNG' (it contains the byte 0x89 "
+              "at column 1, which is not UTF-8 text)");
     EXPECT_EQ(r.diagnostics[3].format(),
-              "t.f2:4:1: error: expected a command starting with '/', got '\\x1a'");
+              "t.f2:4:1: error: expected a command starting with '/', got '\\x1a' (it contains U+001A at column "
+              "1, a control character)");
     // Messages are printable ASCII or valid UTF-8 only.
     for (const Diagnostic& d : r.diagnostics) {
         for (char c : d.message) EXPECT_TRUE(static_cast<unsigned char>(c) >= 0x20) << d.message;
@@ -986,6 +991,7 @@ TEST(ParserLimits, WarningsAreCountedBeyondTheCap) {
     l.maxWarnings = 2;
     std::string text = "/sphere s 1 0 0 0\n";
     for (int i = 0; i < 10; ++i) text += "/key 3 s\n";  // lines 2..11: 9 replacements
+    text += "/amb_light 1\n";
     ParseResult r = parseScene(text, kFile, l);
     ASSERT_TRUE(r.ok());
     ASSERT_EQ(r.diagnostics.size(), 3u) << dump(r);

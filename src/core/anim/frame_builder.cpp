@@ -1,6 +1,7 @@
 #include "core/anim/frame_builder.h"
 
 #include "core/anim/track.h"
+#include "core/scene/models.h"
 
 #include <algorithm>
 
@@ -68,7 +69,7 @@ constexpr std::size_t kPrefetchAhead = 8;
 constexpr std::size_t kObjectsPerChunk = 256;
 }  // namespace
 
-void evaluateFrame(const SceneDesc& scene, double t, FrameScene& frame, ThreadPool* pool) {
+void evaluateFrame(const SceneDesc& scene, double t, EvaluatedFrame& frame, ThreadPool* pool) {
     frame.lights.clear();
     frame.ambient = scene.ambient;
     frame.background = toUnitColor(scene.background);

@@ -1,9 +1,9 @@
 #pragma once
 /// Evaluates the animation of a scene at a time: key frames -> part frames ->
 /// world-space primitives.
-#include "core/anim/frame_scene.h"
+#include "core/anim/evaluated_frame.h"
 #include "core/math/transform.h"
-#include "core/render/thread_pool.h"
+#include "core/util/thread_pool.h"
 
 namespace f2 {
 
@@ -16,8 +16,8 @@ std::array<Transform, kPartCount> modelPartFrames(const SceneObject& object, con
 Transform objectFrame(const SceneObject& object, double t);
 
 /// Fills `frame` (primitives, surfaces, lights) for time `t` in frames, on the
-/// pool's threads when one is given. Does not build the BVH: call
-/// frame.bvh.update(frame.primitives) after.
-void evaluateFrame(const SceneDesc& scene, double t, FrameScene& frame, ThreadPool* pool = nullptr);
+/// pool's threads when one is given. The BVH is the renderer's business
+/// (FrameScene::bvh, updated from frame.primitives).
+void evaluateFrame(const SceneDesc& scene, double t, EvaluatedFrame& frame, ThreadPool* pool = nullptr);
 
 }  // namespace f2

@@ -314,14 +314,20 @@ bool Bvh::intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit) cons
     std::uint32_t current = 0;
     bool found = false;
     if (boxEntry(nodes_[0].bounds, ray.origin, invDir, tMin, tMax) == kInfinity) return false;
+    // Once something is hit, primitives at exactly its distance are tested too
+    // (up to `bound`), and the lower frame index wins the tie: the pixel must
+    // not depend on the order in which this frame's tree meets them.
+    float bound = tMax;
     for (;;) {
         const Node& node = nodes_[current];
         if (node.count > 0) {
             for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
                 float t;
                 Face face;
-                if (intersectPrimitive(ordered_[i], ray, tMin, tMax, t, face)) {
+                if (intersectPrimitive(ordered_[i], ray, tMin, bound, t, face) &&
+                    (!found || t < tMax || original_[i] < hit.primitive)) {
                     tMax = t;
+                    bound = nextUp(t);
                     hit = {t, original_[i], face};
                     found = true;
                 }

@@ -1,13 +1,14 @@
 #pragma once
-/// Bounding volume hierarchy over one frame's primitives (binned SAH), rebuilt
-/// every frame because everything may move. Buffers are reused across builds.
+/// Bounding volume hierarchy over one frame's primitives (binned SAH). The
+/// renderer keeps it from frame to frame: update() refits it to the moved
+/// primitives and rebuilds it only when its quality has drifted too far.
+/// Buffers are reused across builds.
 #include <cstdint>
 #include <span>
 #include <vector>
 
 #include "core/geometry/intersect.h"
-#include "core/geometry/packet.h"
-#include "core/render/thread_pool.h"
+#include "core/util/thread_pool.h"
 
 namespace f2 {
 
@@ -41,7 +42,8 @@ public:
     /// Expected cost of a ray under the SAH model, relative to the root's area.
     float sahCost() const;
 
-    /// Closest hit within (tMin, tMax).
+    /// Closest hit within (tMin, tMax); of hits at the same distance, the
+    /// primitive first in the frame (lowest index), whatever the tree's shape.
     bool intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit) const;
     /// Any hit within (tMin, tMax) on a primitive other than `skip`: shadow rays
     /// stop at the first occluder. A convex primitive cannot shadow its own lit
@@ -49,32 +51,17 @@ public:
     static constexpr std::uint32_t kNoPrimitive = 0xFFFFFFFFu;
     bool occluded(const Ray& ray, float tMin, float tMax, std::uint32_t skip = kNoPrimitive) const;
 
-    /// Packet versions: the `active` lanes traverse together; results as above per lane,
-    /// except that primitives are named by their leaf-order index (orderedPrimitives()),
-    /// whose data the traversal has just brought into cache; originalIndices() maps back.
-    /// intersect() narrows hit.t (the lanes' tMax on entry) and sets primitive and face.
-    void intersect(const EyeRays& rays, Mask active, Float tMin, PacketHit& hit) const;
-    /// The same, for rays that all lie inside one frustum: the traversal starts
-    /// from `roots`, the entryNodes() of that frustum, instead of the root.
-    void intersect(const EyeRays& rays, Mask active, Float tMin, PacketHit& hit,
-                   std::span<const std::uint32_t> roots) const;
     /// Up to out.size() nodes whose subtrees hold every primitive that a ray
     /// inside `frustum` can reach, nearest to `eye` first; returns how many.
     /// From the root, the node with the largest box is replaced by those of its
     /// children the frustum does not exclude, while they fit: a tile's packets
     /// then skip the top of the tree, which every one of them would walk alike.
     std::size_t entryNodes(const Frustum& frustum, Vec3 eye, std::span<std::uint32_t> out) const;
-    /// Lanes of `active` that hit something within (tMin, tMax) other than their `skip`
-    /// primitive (leaf order).
-    Mask occluded(const ParallelRays& rays, Mask active, Float tMin, Float tMax, Int skip) const;
-    /// The same, for rays that all start inside one box: the traversal starts
-    /// from `roots`, the beamEntryNodes() of that box and direction.
-    Mask occluded(const ParallelRays& rays, Mask active, Float tMin, Float tMax, Int skip,
-                  std::span<const std::uint32_t> roots) const;
     /// entryNodes() for the parallel rays that leave any point of `origins`
     /// along `direction`: the shadow rays of one tile toward one light.
     std::size_t beamEntryNodes(const Bounds& origins, Vec3 direction, std::span<std::uint32_t> out) const;
 
+    /// The tree, for the packet traversal (bvh_packet.h) and tests.
     std::span<const Node> nodes() const { return nodes_; }
     /// Primitives in leaf order, and each one's index in the frame.
     std::span<const Primitive> orderedPrimitives() const { return ordered_; }

@@ -3,7 +3,7 @@
 // lanes at once. Coherent rays (a 4x4 pixel block, or the parallel shadow
 // rays of such a block) share almost every node, so each box and primitive
 // test serves many rays.
-#include "core/geometry/bvh.h"
+#include "core/geometry/bvh_packet.h"
 
 #include <algorithm>
 
@@ -59,22 +59,26 @@ struct VisitOrder {
 };
 }  // namespace
 
-void Bvh::intersect(const EyeRays& rays, Mask active, Float tMin, PacketHit& hit) const {
+void intersectPacket(const Bvh& bvh, const EyeRays& rays, Mask active, Float tMin, PacketHit& hit) {
     const std::uint32_t root = 0;
-    intersect(rays, active, tMin, hit, {&root, 1});
+    intersectPacket(bvh, rays, active, tMin, hit, {&root, 1});
 }
 
-void Bvh::intersect(const EyeRays& rays, Mask active, Float tMin, PacketHit& hit,
-                    std::span<const std::uint32_t> roots) const {
-    if (nodes_.empty() || roots.empty() || simd::none(active)) return;
+void intersectPacket(const Bvh& bvh, const EyeRays& rays, Mask active, Float tMin, PacketHit& hit,
+                     std::span<const std::uint32_t> roots) {
+    const std::span<const Bvh::Node> nodes = bvh.nodes();
+    const std::span<const Primitive> ordered = bvh.orderedPrimitives();
+    const std::span<const std::uint32_t> original = bvh.originalIndices();
+    if (nodes.empty() || roots.empty() || simd::none(active)) return;
     VisitOrder order(rays, active);
+    Float bound = nextUp(hit.t);  // primitives are tested up to and including the lanes' nearest hit
     // The nearer child is visited next without a trip through the stack.
     std::uint32_t stack[kStackSize];
     int top = 0;
     for (std::size_t k = roots.size(); k-- > 1;) stack[top++] = roots[k];  // nearest root first
     std::uint32_t current = roots[0];
     for (;;) {
-        const Node& node = nodes_[current];
+        const Bvh::Node& node = nodes[current];
         Mask lanes = crossesBox(node.bounds, rays, tMin, hit.t) & active;
         if (simd::any(lanes)) {
             if (node.count == 0) {
@@ -84,8 +88,19 @@ void Bvh::intersect(const EyeRays& rays, Mask active, Float tMin, PacketHit& hit
                 continue;
             }
             for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
-                Mask hitLanes = intersectPrimitiveP(ordered_[i], rays, lanes, tMin, hit.t, hit.t, hit.face);
-                hit.primitive = simd::select(hitLanes, Int(std::int32_t(i)), hit.primitive);
+                // As in Bvh::intersect(const Ray&): a hit at exactly a lane's
+                // distance takes it when its frame index is lower.
+                Float t = hit.t;
+                Int face = hit.face;
+                Mask found = intersectPrimitiveP(ordered[i], rays, lanes, tMin, bound, t, face);
+                if (simd::none(found)) continue;
+                Int frameIndex(std::int32_t(original[i]));
+                Mask take = found & ((t < hit.t) | (frameIndex < hit.frameIndex));
+                hit.t = simd::select(take, t, hit.t);
+                hit.face = simd::select(take, face, hit.face);
+                hit.primitive = simd::select(take, Int(std::int32_t(i)), hit.primitive);
+                hit.frameIndex = simd::select(take, frameIndex, hit.frameIndex);
+                bound = nextUp(hit.t);
             }
         }
         if (top == 0) return;
@@ -93,22 +108,24 @@ void Bvh::intersect(const EyeRays& rays, Mask active, Float tMin, PacketHit& hit
     }
 }
 
-Mask Bvh::occluded(const ParallelRays& rays, Mask active, Float tMin, Float tMax, Int skip) const {
+Mask occludedPacket(const Bvh& bvh, const ParallelRays& rays, Mask active, Float tMin, Float tMax, Int skip) {
     const std::uint32_t root = 0;
-    return occluded(rays, active, tMin, tMax, skip, {&root, 1});
+    return occludedPacket(bvh, rays, active, tMin, tMax, skip, {&root, 1});
 }
 
-Mask Bvh::occluded(const ParallelRays& rays, Mask active, Float tMin, Float tMax, Int skip,
-                   std::span<const std::uint32_t> roots) const {
+Mask occludedPacket(const Bvh& bvh, const ParallelRays& rays, Mask active, Float tMin, Float tMax, Int skip,
+                    std::span<const std::uint32_t> roots) {
+    const std::span<const Bvh::Node> nodes = bvh.nodes();
+    const std::span<const Primitive> ordered = bvh.orderedPrimitives();
     Mask blocked = simd::noLanes();
-    if (nodes_.empty() || roots.empty() || simd::none(active)) return blocked;
+    if (nodes.empty() || roots.empty() || simd::none(active)) return blocked;
     VisitOrder order(rays, active);  // the nearer occluder first ends a lane sooner
     std::uint32_t stack[kStackSize];
     int top = 0;
     for (std::size_t k = roots.size(); k-- > 1;) stack[top++] = roots[k];
     std::uint32_t current = roots[0];
     for (;;) {
-        const Node& node = nodes_[current];
+        const Bvh::Node& node = nodes[current];
         Mask pending = simd::andNot(active, blocked);
         Mask lanes = crossesBox(node.bounds, rays, tMin, tMax) & pending;
         if (simd::any(lanes)) {
@@ -123,7 +140,7 @@ Mask Bvh::occluded(const ParallelRays& rays, Mask active, Float tMin, Float tMax
                 if (simd::none(test)) continue;
                 Float t = tMax;
                 Int face;
-                blocked = blocked | intersectPrimitiveP(ordered_[i], rays, test, tMin, tMax, t, face);
+                blocked = blocked | intersectPrimitiveP(ordered[i], rays, test, tMin, tMax, t, face);
                 lanes = simd::andNot(lanes, blocked);
                 if (simd::none(lanes)) break;
             }

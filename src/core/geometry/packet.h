@@ -74,8 +74,14 @@ using ParallelRays = Rays<Vec3P, Vec3>;  ///< shadow rays toward a directional l
 struct PacketHit {
     Float t{kInfinity};
     Int primitive{0};  ///< in leaf order: an index into Bvh::orderedPrimitives(), not the frame's
+    Int frameIndex{0};  ///< the frame's index of the same primitive: the lower one wins a tie
     Int face{0};
 };
+
+/// Lane version of nextUp() in intersect.h.
+inline Float nextUp(Float t) {
+    return simd::select(t < Float(kInfinity), simd::fromBits(simd::bitsOf(t) + Int(1)), t);
+}
 
 namespace detail {
 

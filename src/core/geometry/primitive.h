@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "core/math/transform.h"
-#include "core/scene/models.h"
+#include "core/geometry/shape_kind.h"
 
 namespace f2 {
 

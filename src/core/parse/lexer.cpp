@@ -9,36 +9,6 @@ constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
 /// Tokens quoted in messages are cut after this many bytes.
 constexpr std::size_t kMaxQuotedBytes = 48;
 
-/// Length of the valid UTF-8 sequence starting at s[i], or 0 if invalid.
-std::size_t utf8SequenceLength(std::string_view s, std::size_t i) {
-    const auto b0 = static_cast<std::uint8_t>(s[i]);
-    std::size_t len = 0;
-    std::uint32_t cp = 0;
-    if (b0 < 0x80) return 1;
-    if ((b0 & 0xE0) == 0xC0) {
-        len = 2;
-        cp = b0 & 0x1F;
-    } else if ((b0 & 0xF0) == 0xE0) {
-        len = 3;
-        cp = b0 & 0x0F;
-    } else if ((b0 & 0xF8) == 0xF0) {
-        len = 4;
-        cp = b0 & 0x07;
-    } else {
-        return 0;  // a continuation byte or 0xF8..0xFF cannot start a sequence
-    }
-    if (i + len > s.size()) return 0;
-    for (std::size_t k = 1; k < len; ++k) {
-        const auto b = static_cast<std::uint8_t>(s[i + k]);
-        if ((b & 0xC0) != 0x80) return 0;
-        cp = (cp << 6) | (b & 0x3F);
-    }
-    // Reject overlong forms, surrogates and values beyond U+10FFFF.
-    constexpr std::uint32_t kMinForLength[] = {0, 0, 0x80, 0x800, 0x10000};
-    if (cp < kMinForLength[len] || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) return 0;
-    return len;
-}
-
 void appendHex(std::string& out, std::uint8_t b) {
     constexpr char kHex[] = "0123456789abcdef";
     out += "\\x";
@@ -46,6 +16,35 @@ void appendHex(std::string& out, std::uint8_t b) {
     out += kHex[b & 0xF];
 }
 }  // namespace
+
+Utf8Char decodeUtf8(std::string_view s, std::size_t i) {
+    const auto b0 = static_cast<std::uint8_t>(s[i]);
+    if (b0 < 0x80) return {b0, 1};
+    std::size_t len = 0;
+    std::uint32_t cp = 0;
+    if ((b0 & 0xE0) == 0xC0) {
+        len = 2;
+        cp = b0 & 0x1Fu;
+    } else if ((b0 & 0xF0) == 0xE0) {
+        len = 3;
+        cp = b0 & 0x0Fu;
+    } else if ((b0 & 0xF8) == 0xF0) {
+        len = 4;
+        cp = b0 & 0x07u;
+    } else {
+        return {};  // a continuation byte or 0xF8..0xFF cannot start a sequence
+    }
+    if (i + len > s.size()) return {};
+    for (std::size_t k = 1; k < len; ++k) {
+        const auto b = static_cast<std::uint8_t>(s[i + k]);
+        if ((b & 0xC0) != 0x80) return {};
+        cp = (cp << 6) | (b & 0x3Fu);
+    }
+    // Reject overlong forms, surrogates and values beyond U+10FFFF.
+    constexpr std::uint32_t kMinForLength[] = {0, 0, 0x80, 0x800, 0x10000};
+    if (cp < kMinForLength[len] || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) return {};
+    return {cp, len};
+}
 
 LineReader::LineReader(std::string_view text) : rest_(text) {
     if (rest_.starts_with(kUtf8Bom)) rest_.remove_prefix(kUtf8Bom.size());
@@ -105,7 +104,7 @@ void appendPrintable(std::string& out, std::string_view token, std::size_t maxBy
             ++i;
             continue;
         }
-        const std::size_t len = b < 0x20 || b == 0x7F ? 0 : utf8SequenceLength(token, i);
+        const std::size_t len = b < 0x20 || b == 0x7F ? 0 : decodeUtf8(token, i).bytes;
         if (len == 0) {
             appendHex(out, b);
             ++i;

@@ -2,6 +2,8 @@
 /// Lines and tokens of the scene language (SPEC 7): one command per line,
 /// tokens separated by spaces or tabs, '#' to the end of the line is a comment.
 #include <array>
+#include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -46,6 +48,14 @@ struct LineTokens {
 
 /// Splits a line at spaces and tabs, stopping at the first '#'.
 void tokenizeLine(std::string_view line, LineTokens& out);
+
+/// One character decoded from UTF-8; `bytes` is 0 when s[i] does not start
+/// a valid sequence (overlong forms and surrogates are invalid too).
+struct Utf8Char {
+    std::uint32_t code = 0;
+    std::size_t bytes = 0;
+};
+Utf8Char decodeUtf8(std::string_view s, std::size_t i);
 
 /// A token as it should appear inside a message: wrapped in single quotes,
 /// control bytes and invalid UTF-8 written as \xNN, and cut after a few dozen

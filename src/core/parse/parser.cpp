@@ -15,6 +15,8 @@
 
 #include "core/parse/lexer.h"
 #include "core/parse/number.h"
+#include "core/parse/suggest.h"
+#include "core/parse/unusual_char.h"
 
 namespace f2 {
 
@@ -66,8 +68,9 @@ constexpr std::array<std::string_view, 5> kObjectKindNames = {"sphere", "cylinde
 
 std::string_view kindName(ObjectKind kind) { return kObjectKindNames[static_cast<std::size_t>(kind)]; }
 
-/// Only short tokens get a "did you mean": the distance is O(n·m).
-constexpr std::size_t kMaxSuggestLength = 32;
+/// Total work (distance table cells) spent on "did you mean" for names, so
+/// that a file with a million objects and many unknown names stays fast.
+constexpr std::size_t kMaxNameSuggestWork = 50'000'000;
 
 struct Pos {
     int line = 0;
@@ -90,20 +93,6 @@ int partIndex(std::string_view s) {
         if (s == kPartNames[static_cast<std::size_t>(i)]) return i;
     }
     return -1;
-}
-
-std::size_t editDistance(std::string_view a, std::string_view b) {
-    std::array<std::size_t, kMaxSuggestLength + 2> prev{}, cur{};
-    for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-        cur[0] = i;
-        for (std::size_t j = 1; j <= b.size(); ++j) {
-            const std::size_t subst = prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
-            cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, subst});
-        }
-        prev = cur;
-    }
-    return prev[b.size()];
 }
 
 /// The command closest to a mistyped one, if it is close enough to be a typo.
@@ -152,6 +141,8 @@ struct ObjectBook {
     Pos defined;
     /// Index into Parser::trackBooks_ for the object track (0) and each part (1 + PartId); -1 if none.
     std::array<int, kPartCount + 1> tracks{-1, -1, -1, -1, -1};
+    /// Where the target of each /interp of the object (0) and each part (1 + PartId) was given.
+    std::array<std::optional<Pos>, kPartCount + 1> interps{};
 };
 
 // Parser
@@ -169,6 +160,7 @@ class Parser {
         SourceLine line;
         while (!stopped_ && reader.next(line)) parseLine(line);
         sortUnsortedTracks();
+        if (errors_ == 0) warnAboutTheWholeScene();
         return finish();
     }
 
@@ -224,8 +216,29 @@ class Parser {
     std::string_view arg(int i) const { return tokens_.tokens[static_cast<std::size_t>(i + 1)].text; }
     Pos argPos(int i) const { return {line_, tokens_.tokens[static_cast<std::size_t>(i + 1)].column}; }
 
+    /// The line from its first token to the end of its last stored one (no comment).
+    std::string_view commandLine() const {
+        const Token& first = tokens_.tokens[0];
+        const Token& last = tokens_.tokens[static_cast<std::size_t>(std::min(tokens_.count, kMaxStoredTokens) - 1)];
+        const auto begin = static_cast<std::size_t>(first.column - 1);
+        return lineText_.substr(begin, static_cast<std::size_t>(last.column - 1) + last.text.size() - begin);
+    }
+
+    /// `message` with a note naming an invisible or unusual character of
+    /// `text` (found at `pos`): a no-break space looks like a space in the message.
+    static std::string noteCharacters(std::string message, std::string_view text, Pos pos) {
+        const std::string note = unusualCharacterNote(text, pos.column);
+        if (note.empty()) return message;
+        if (message.ends_with(')')) {
+            message.insert(message.size() - 1, (message.ends_with("?)") ? " " : "; ") + note);
+            return message;
+        }
+        return message + " (" + note + ")";
+    }
+
     void parseLine(const SourceLine& line) {
         line_ = line.number;
+        lineText_ = line.text;
         if (line.text.size() > limits_.maxLineBytes) {
             error({line_, 1}, "line is " + std::to_string(line.text.size()) +
                                   " bytes long, more than the limit of " +
@@ -244,7 +257,7 @@ class Parser {
                     if (c.name == slashed) message += " (did you mean '" + slashed + "'?)";
                 }
             }
-            error(commandPos(), std::move(message));
+            error(commandPos(), noteCharacters(std::move(message), head, commandPos()));
             return;
         }
         for (const CommandName& c : kCommands) {
@@ -257,7 +270,7 @@ class Parser {
         if (const std::string_view guess = suggestCommand(head); !guess.empty()) {
             message += " (did you mean '" + std::string(guess) + "'?)";
         }
-        error(commandPos(), std::move(message));
+        error(commandPos(), noteCharacters(std::move(message), head, commandPos()));
     }
 
     void dispatch(Command command) {
@@ -307,8 +320,11 @@ class Parser {
             ++i;
         }
         const bool plural = allowed.size() > 1 || *allowed.begin() != 1;
-        error(commandPos(), quoteToken(commandText()) + " takes " + list +
-                                (plural ? " arguments" : " argument") + ", got " + std::to_string(n));
+        // A no-break space glues two arguments into one, so the count is the first thing wrong.
+        error(commandPos(), noteCharacters(quoteToken(commandText()) + " takes " + list +
+                                               (plural ? " arguments" : " argument") + ", got " +
+                                               std::to_string(n),
+                                           commandLine(), commandPos()));
         return false;
     }
 
@@ -339,7 +355,7 @@ class Parser {
                 break;
             }
         }
-        error(argPos(i), std::move(message));
+        error(argPos(i), noteCharacters(std::move(message), text, argPos(i)));
         ok = false;
         return 0;
     }
@@ -405,8 +421,9 @@ class Parser {
     bool newName(int i) {
         const std::string_view name = arg(i);
         if (!isValidName(name)) {
-            error(argPos(i), "invalid name " + quoteToken(name) +
-                                 " (expected a letter or '_', then letters, digits or '_')");
+            error(argPos(i), noteCharacters("invalid name " + quoteToken(name) +
+                                                " (expected a letter or '_', then letters, digits or '_')",
+                                            name, argPos(i)));
             return false;
         }
         if (auto it = names_.find(name); it != names_.end()) {
@@ -420,22 +437,42 @@ class Parser {
     /// Looks up an existing object by name; `token` is the whole argument, for the message.
     std::optional<std::size_t> existing(std::string_view name, std::string_view token, Pos pos) {
         if (!isValidName(name)) {
-            error(pos, "invalid target " + quoteToken(token) + " (expected a name or name.part)");
+            error(pos, noteCharacters("invalid target " + quoteToken(token) + " (expected a name or name.part)",
+                                      token, pos));
             return std::nullopt;
         }
         auto it = names_.find(name);
         if (it == names_.end()) {
-            error(pos, "unknown name " + quoteToken(name));
+            std::string message = "unknown name " + quoteToken(name);
+            if (const std::string_view guess = suggestName(name); !guess.empty()) {
+                message += " (did you mean '" + std::string(guess) + "'?)";
+            }
+            error(pos, std::move(message));
             return std::nullopt;
         }
         return it->second;
+    }
+
+    /// The existing name closest to a mistyped one, in file order, within a
+    /// total work budget for the whole file.
+    std::string_view suggestName(std::string_view name) {
+        ClosestWord closest(name);
+        for (const SceneObject& o : scene_.objects) {
+            if (nameSuggestWork_ >= kMaxNameSuggestWork) break;
+            nameSuggestWork_ += closest.consider(o.name);
+        }
+        return closest.best();
     }
 
     /// Checks that `part` is a part name and the object has parts.
     std::optional<int> partOf(std::size_t object, std::string_view part, Pos pos) {
         const int index = partIndex(part);
         if (index < 0) {
-            error(pos, "unknown part " + quoteToken(part) + " (expected body, head, lhand or rhand)");
+            const std::string_view guess = suggestPart(part);
+            error(pos, noteCharacters("unknown part " + quoteToken(part) +
+                                          (guess.empty() ? std::string(" (expected body, head, lhand or rhand)")
+                                                         : " (did you mean '" + std::string(guess) + "'?)"),
+                                      part, pos));
             return std::nullopt;
         }
         const SceneObject& o = scene_.objects[object];
@@ -573,16 +610,26 @@ class Parser {
         if (kind == ObjectKind::Cylinder) sizeArgs = 2;
         if (kind == ObjectKind::Box) sizeArgs = 3;
         const int withoutRotation = 1 + sizeArgs + 3;
-        if (!expectArgs({withoutRotation, withoutRotation + 3})) return;
-        if (scene_.objects.size() >= limits_.maxObjects) {
+        SceneObject object;
+        object.kind = kind;
+        // After an error about the whole line, a valid new name is still
+        // registered with its kind, so later lines that use it do not add
+        // "unknown name" errors. The error count caps how far this goes past
+        // the object limit.
+        const bool countOk = expectArgs({withoutRotation, withoutRotation + 3});
+        const bool roomOk = scene_.objects.size() < limits_.maxObjects;
+        if (countOk && !roomOk) {
             error(commandPos(), "too many objects: at most " + std::to_string(limits_.maxObjects) +
                                     " allowed (a robot or human counts as one)");
+        }
+        if (!countOk || !roomOk) {
+            if (argCount() >= 1 && isValidName(arg(0)) && !names_.contains(arg(0))) {
+                addObject(std::move(object));
+            }
             return;
         }
 
         bool ok = true;
-        SceneObject object;
-        object.kind = kind;
         for (int k = 0; k < sizeArgs; ++k) {
             const std::string_view what = kind == ObjectKind::Box
                                               ? kBoxWhat[static_cast<std::size_t>(k)]
@@ -592,11 +639,32 @@ class Parser {
         object.rest = pose(1 + sizeArgs, argCount() == withoutRotation + 3, ok);
         // A valid new name is registered even if other arguments are wrong, so
         // later lines that use it do not add "unknown name" errors.
-        if (!newName(0)) return;
+        if (newName(0)) addObject(std::move(object));
+    }
+
+    /// Adds the object named by argument 0, which is valid and new.
+    void addObject(SceneObject object) {
         object.name = std::string(arg(0));
         names_.emplace(object.name, scene_.objects.size());
-        books_.push_back({commandPos(), {-1, -1, -1, -1, -1}});
+        books_.push_back({argPos(0), {-1, -1, -1, -1, -1}, {}});
         scene_.objects.push_back(std::move(object));
+    }
+
+    /// Warnings about a scene that parses but is almost certainly not what was
+    /// meant. Only for a scene without errors: a rejected scene is never shown.
+    void warnAboutTheWholeScene() {
+        if (scene_.objects.empty()) {
+            warning({1, 1}, "the scene has no objects: every frame shows only the background");
+            return;
+        }
+        const bool lit = scene_.ambient > 0 ||
+                         std::any_of(scene_.lights.begin(), scene_.lights.end(),
+                                     [](const DirectionalLight& l) { return l.intensity > 0; });
+        if (!lit) {
+            warning(books_.front().defined,
+                    "the scene has no light (no '/amb_light' or '/dir_light' with an intensity > 0): "
+                    "every object renders black");
+        }
     }
 
     void parsePaint() {
@@ -663,11 +731,19 @@ class Parser {
         } else if (word == "spline") {
             mode = Interpolation::Spline;
         } else {
-            error(argPos(1),
-                  "unknown interpolation " + quoteToken(word) + " (expected linear, ease or spline)");
+            error(argPos(1), noteCharacters("unknown interpolation " + quoteToken(word) +
+                                                " (expected linear, ease or spline)",
+                                            word, argPos(1)));
             return;
         }
-        if (t) trackOf(*t).interpolation = mode;  // the last /interp of a target wins
+        if (!t) return;
+        std::optional<Pos>& before = books_[t->object].interps[static_cast<std::size_t>(t->part + 1)];
+        if (before) {
+            warning(argPos(0), "interpolation of " + quoteToken(targetName(*t)) +
+                                   " is given again; it replaces the one at " + posText(*before));
+        }
+        before = argPos(0);
+        trackOf(*t).interpolation = mode;  // the last /interp of a target wins
     }
 
     void parseKey() {
@@ -679,12 +755,16 @@ class Parser {
         }
         const int n = argCount();
         if (n < 2) {
-            error(commandPos(), "'/key' takes 2 or 8 arguments (a frame, a target and 0 or 6 numbers), got " +
-                                    std::to_string(n));
+            error(commandPos(),
+                  noteCharacters("'/key' takes 2 or 8 arguments (a frame, a target and 0 or 6 numbers), got " +
+                                     std::to_string(n),
+                                 commandLine(), commandPos()));
             return;
         }
         if (n != 2 && n != 8) {
-            error(commandPos(), "'/key' takes 0 or 6 numbers after the target, got " + std::to_string(n - 2));
+            error(commandPos(),
+                  noteCharacters("'/key' takes 0 or 6 numbers after the target, got " + std::to_string(n - 2),
+                                 commandLine(), commandPos()));
             return;
         }
         bool ok = true;
@@ -764,7 +844,9 @@ class Parser {
     bool stopped_ = false;
 
     int line_ = 0;
+    std::string_view lineText_;
     LineTokens tokens_;
+    std::size_t nameSuggestWork_ = 0;
 
     std::unordered_map<std::string, std::size_t, StringHash, std::equal_to<>> names_;
     std::vector<ObjectBook> books_;  ///< parallel to scene_.objects

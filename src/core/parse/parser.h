@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/parse/diagnostic.h"
+#include "core/scene/limits.h"
 #include "core/scene/scene_desc.h"
 
 namespace f2 {
@@ -28,10 +29,10 @@ ParseResult parseScene(std::string_view text, std::string_view fileName);
 /// docs/scene-language.md for the ones SPEC leaves open). Each is checked
 /// before anything is allocated for it and breaking one is an error.
 struct ParseLimits {
-    int maxImageSide = 16384;
-    long long maxImagePixels = 1LL << 26;
+    int maxImageSide = kMaxImageSide;
+    long long maxImagePixels = kMaxImagePixels;
     std::size_t maxObjects = 1'000'000;  ///< a robot or human counts as one
-    int maxKeyFrame = 10'000'000;
+    int maxKeyFrame = kMaxKeyFrame;
     std::size_t maxKeyLines = 10'000'000;
     int maxFps = 1000;
     std::size_t maxLineBytes = std::size_t{1} << 20;     ///< 1 MiB

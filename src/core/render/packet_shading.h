@@ -1,8 +1,11 @@
 #pragma once
 /// Phong shading of a whole packet (SPEC 3), the lane version of shading.h:
 /// the same operations in the same order, except that pow() is the lane
-/// approximation of simd_math.h (within 1e-6 relative).
-#include "core/anim/frame_scene.h"
+/// approximation of simd_math.h (within 1e-6 relative). Private to the core
+/// (SIMD types).
+#include "core/geometry/bvh_packet.h"
+#include "core/render/frame_scene.h"
+#include "core/render/ray_counts.h"
 #include "core/render/shading.h"
 #include "core/simd/simd_math.h"
 
@@ -10,12 +13,6 @@ namespace f2 {
 
 struct ColorP {
     Float r, g, b;
-};
-
-/// Rays traced, counted as they are cast.
-struct RayCounts {
-    std::uint64_t primary = 0, shadow = 0;
-    std::uint64_t total() const { return primary + shadow; }
 };
 
 /// What the primary rays of a packet found: everything shading needs.
@@ -35,7 +32,7 @@ inline PacketSurface findSurfaces(const FrameScene& frame, const EyeRays& rays, 
                                   std::span<const std::uint32_t> entry, RayCounts& counts) {
     counts.primary += std::uint64_t(__builtin_popcount(simd::bits(active)));
     PacketHit hit;
-    frame.bvh.intersect(rays, active, Float(primaryRayStart(rays.origin)), hit, entry);
+    intersectPacket(frame.bvh, rays, active, Float(primaryRayStart(rays.origin)), hit, entry);
     PacketSurface s;
     s.hitLanes = active & (hit.t < Float(kInfinity));
     if (simd::none(s.hitLanes)) return s;
@@ -91,7 +88,7 @@ inline ColorP shadeSurfaces(const FrameScene& frame, const PacketSurface& s,
         if (simd::none(lit)) continue;
         counts.shadow += std::uint64_t(__builtin_popcount(simd::bits(lit)));
         std::span<const std::uint32_t> entry = i < shadowEntry.size() ? shadowEntry[i] : std::span{&root, 1};
-        lit = simd::andNot(lit, frame.bvh.occluded(ParallelRays(s.shadowOrigin, light.toLight), lit, Float(0.0f),
+        lit = simd::andNot(lit, occludedPacket(frame.bvh, ParallelRays(s.shadowOrigin, light.toLight), lit, Float(0.0f),
                                                     Float(kInfinity), s.skip, entry));
         if (simd::none(lit)) continue;
         Float intensity(light.intensity);

@@ -17,6 +17,9 @@ double millisecondsSince(Clock::time_point start) {
 
 Renderer::Renderer(int threads) : pool_(threads) {}
 
+const char* packetIsaName() { return simd::kIsaName; }
+int packetWidth() { return simd::kWidth; }
+
 Vec3 renderSample(const FrameScene& frame, const Camera& camera, float px, float py) {
     return traceRay(frame, camera.rayThrough(px, py));
 }

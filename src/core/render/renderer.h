@@ -1,13 +1,14 @@
 #pragma once
 /// Renders frames of a scene: evaluate the animation at t, build the BVH,
-/// trace the image in tiles over a persistent thread pool.
+/// trace the image in tiles over a persistent thread pool. Public API: no
+/// SIMD type appears here, so users compile without the core's CPU flags.
 #include <atomic>
 
-#include "core/anim/frame_scene.h"
+#include "core/render/frame_scene.h"
 #include "core/render/camera.h"
 #include "core/render/image.h"
-#include "core/render/packet_shading.h"
-#include "core/render/thread_pool.h"
+#include "core/render/ray_counts.h"
+#include "core/util/thread_pool.h"
 
 namespace f2 {
 
@@ -59,5 +60,10 @@ Vec3 renderSample(const FrameScene& frame, const Camera& camera, float px, float
 /// The whole image by the single-ray reference path, one thread, one sample per
 /// pixel. The packet path of Renderer::trace must agree with it (tests).
 void traceReference(const FrameScene& frame, const Camera& camera, Image& out);
+
+/// The instruction set the core's packets were built for ("AVX-512",
+/// "AVX2", "scalar") and their width in rays.
+const char* packetIsaName();
+int packetWidth();
 
 }  // namespace f2

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/anim/frame_scene.h"
+#include "core/render/frame_scene.h"
 
 namespace f2 {
 

@@ -3,11 +3,10 @@
 #include <array>
 #include <span>
 
+#include "core/geometry/shape_kind.h"
 #include "core/scene/scene_desc.h"
 
 namespace f2 {
-
-enum class ShapeKind : std::uint8_t { Sphere, Cylinder, Box };
 
 /// One part of a model: its parent (-1 = the model's root frame) and pivot in
 /// the parent's frame.
@@ -30,7 +29,7 @@ struct ModelShape {
 struct ModelDef {
     /// Parents come before children, so one pass computes every part frame.
     std::array<ModelPart, kPartCount> parts;
-    std::span<const ModelShape> shapes;  ///< in export order (docs/output.md, --prims)
+    std::span<const ModelShape> shapes;  ///< in the order `f2 export --prims` writes them
 };
 
 const ModelDef& robotModel();

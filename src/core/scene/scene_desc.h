@@ -1,6 +1,7 @@
 #pragma once
 /// The parsed scene: what the file says, before any animation is evaluated.
-/// Produced by the parser, consumed by the animator; plain data, no behaviour.
+/// Produced by the parser, evaluated at a time by anim/frame_builder; plain
+/// data, no behaviour.
 #include <array>
 #include <cstdint>
 #include <string>

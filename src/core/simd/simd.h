@@ -3,6 +3,8 @@
 /// at build time — 16 lanes with AVX-512, 8 with AVX2, 1 (plain C++) otherwise.
 /// Every operation is the lane-wise IEEE operation (no FMA, no approximate
 /// reciprocal), so a packet computes what the same code computes on floats.
+/// Private to the core: the lane count depends on -march, so only targets
+/// built with f2_opt may include this (docs/design.md, "Layers").
 #include <cstdint>
 
 #if defined(__AVX512F__) || defined(__AVX2__)
@@ -54,6 +56,7 @@ inline Mask operator>(Float a, Float b) { return {_mm512_cmp_ps_mask(a.v, b.v, _
 inline Mask operator>=(Float a, Float b) { return {_mm512_cmp_ps_mask(a.v, b.v, _CMP_GE_OQ)}; }
 inline Mask operator==(Float a, Float b) { return {_mm512_cmp_ps_mask(a.v, b.v, _CMP_EQ_OQ)}; }
 inline Mask operator==(Int a, Int b) { return {_mm512_cmpeq_epi32_mask(a.v, b.v)}; }
+inline Mask operator<(Int a, Int b) { return {_mm512_cmplt_epi32_mask(a.v, b.v)}; }
 
 inline Mask operator&(Mask a, Mask b) { return {__mmask16(a.m & b.m)}; }
 inline Mask operator|(Mask a, Mask b) { return {__mmask16(a.m | b.m)}; }
@@ -121,6 +124,7 @@ inline Mask operator>(Float a, Float b) { return {_mm256_cmp_ps(a.v, b.v, _CMP_G
 inline Mask operator>=(Float a, Float b) { return {_mm256_cmp_ps(a.v, b.v, _CMP_GE_OQ)}; }
 inline Mask operator==(Float a, Float b) { return {_mm256_cmp_ps(a.v, b.v, _CMP_EQ_OQ)}; }
 inline Mask operator==(Int a, Int b) { return {_mm256_castsi256_ps(_mm256_cmpeq_epi32(a.v, b.v))}; }
+inline Mask operator<(Int a, Int b) { return {_mm256_castsi256_ps(_mm256_cmpgt_epi32(b.v, a.v))}; }
 
 inline Mask operator&(Mask a, Mask b) { return {_mm256_and_ps(a.m, b.m)}; }
 inline Mask operator|(Mask a, Mask b) { return {_mm256_or_ps(a.m, b.m)}; }
@@ -187,6 +191,7 @@ inline Mask operator>(Float a, Float b) { return {a.v > b.v}; }
 inline Mask operator>=(Float a, Float b) { return {a.v >= b.v}; }
 inline Mask operator==(Float a, Float b) { return {a.v == b.v}; }
 inline Mask operator==(Int a, Int b) { return {a.v == b.v}; }
+inline Mask operator<(Int a, Int b) { return {a.v < b.v}; }
 
 inline Mask operator&(Mask a, Mask b) { return {a.m && b.m}; }
 inline Mask operator|(Mask a, Mask b) { return {a.m || b.m}; }

@@ -1,4 +1,4 @@
-#include "core/render/thread_pool.h"
+#include "core/util/thread_pool.h"
 
 #if defined(__x86_64__) || defined(__i386__)
 #include <immintrin.h>

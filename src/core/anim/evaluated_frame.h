@@ -1,10 +1,11 @@
 #pragma once
-/// One evaluated frame: every primitive in world space with its surface, the
-/// lights and the acceleration structure. Rebuilt in place each frame; its
-/// vectors keep their capacity so steady-state frames do not allocate.
+/// A scene evaluated at one time: every primitive in world space with its
+/// surface, and the lights. What animation produces; render adds the BVH
+/// (FrameScene). Refilled in place each frame; its vectors keep their
+/// capacity so steady-state frames do not allocate.
+#include <cstdint>
 #include <vector>
 
-#include "core/geometry/bvh.h"
 #include "core/geometry/primitive.h"
 #include "core/scene/scene_desc.h"
 
@@ -21,7 +22,9 @@ struct LightSample {
     float intensity;
 };
 
-struct FrameScene {
+/// Primitives are in scene order: object by object, each model's shapes in
+/// their fixed order. That index is what breaks ties between equal hits.
+struct EvaluatedFrame {
     std::vector<Primitive> primitives;
     std::vector<Surface> surfaces;  ///< parallel to primitives
     /// Object i's primitives are [firstPrimitive[i], firstPrimitive[i + 1]).
@@ -29,7 +32,6 @@ struct FrameScene {
     std::vector<LightSample> lights;
     float ambient = 0;
     Vec3 background;  ///< 0..1
-    Bvh bvh;
 };
 
 }  // namespace f2

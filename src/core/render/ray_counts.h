@@ -1,0 +1,13 @@
+#pragma once
+/// Rays a frame cast, for the timings and the benchmark's rays per second.
+#include <cstdint>
+
+namespace f2 {
+
+/// Rays traced, counted as they are cast.
+struct RayCounts {
+    std::uint64_t primary = 0, shadow = 0;
+    std::uint64_t total() const { return primary + shadow; }
+};
+
+}  // namespace f2

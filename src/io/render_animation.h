@@ -1,0 +1,66 @@
+#pragma once
+/// The one loop that renders a range of frames into an output: the command
+/// line (`f2 render`) and the viewer's export both call renderAnimation.
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include "core/anim/frame_time.h"
+#include "core/render/camera.h"
+#include "core/render/renderer.h"
+#include "core/scene/scene_desc.h"
+#include "io/frame_sink.h"
+
+namespace f2 {
+
+/// Which output frames to render, and which scene time each one shows.
+struct AnimationRange {
+    std::int64_t first = 0, last = 0;   ///< output frame numbers, inclusive
+    int sceneFps = 24, outputFps = 24;  ///< see sceneTimeOfOutputFrame
+    double timeOffset = 0;              ///< added to every frame's time (a still at a fractional time)
+    int shardIndex = 0, shardCount = 1; ///< only frames ≡ shardIndex (mod shardCount): a render farm's worker
+
+    /// One image at scene time `t` (frames, may be fractional).
+    static AnimationRange still(double t, int sceneFps);
+    /// Scene time of output frame `frame`.
+    double timeOf(std::int64_t frame) const {
+        return timeOffset + sceneTimeOfOutputFrame(frame, sceneFps, outputFps);
+    }
+    /// The frame belongs to this shard (whether or not it is in [first, last]).
+    bool inShard(std::int64_t frame) const { return frame % shardCount == shardIndex; }
+    /// Frames of [first, last] in this shard.
+    std::int64_t count() const;
+};
+
+struct AnimationProgress {
+    std::int64_t done = 0;     ///< complete in the output (rendered or skipped)
+    std::int64_t skipped = 0;  ///< of them, already there (a resumed sequence)
+    std::int64_t total = 0;
+};
+
+struct AnimationOptions {
+    int threads = 0;  ///< render threads; 0 = every core
+    RenderOptions render;
+};
+
+struct AnimationResult {
+    enum class Outcome { Finished, Cancelled, Failed };
+    Outcome outcome = Outcome::Finished;
+    std::string error;  ///< why it failed (empty when cancelled)
+    std::int64_t done = 0, skipped = 0, total = 0;  ///< as in AnimationProgress, at the end
+    int threads = 0;                                ///< render threads used
+    double renderMs = 0;                            ///< time spent rendering, summed over frames
+    std::int64_t rendered() const { return done - skipped; }
+};
+
+/// Renders the frames of `range` (in order) of `scene` seen by `camera` into
+/// `sink`. Stops inside the current frame when `cancel` is raised (that frame
+/// is dropped) and abandons the sink, as on any error; `progress` (optional)
+/// is called, on this thread, after every frame.
+AnimationResult renderAnimation(const SceneDesc& scene, const AnimationRange& range, const Camera& camera,
+                                FrameSink& sink, const std::atomic<bool>* cancel,
+                                const std::function<void(const AnimationProgress&)>& progress = {},
+                                const AnimationOptions& options = {});
+
+}  // namespace f2
