@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "core/math/vec3.h"
+#include "core/parse/parser.h"
 #include "core/scene/scene_desc.h"
 
 /// Each component of `actual` within `tol` of `expected`, printing both vectors.
@@ -21,6 +22,12 @@
 
 namespace f2::test {
 
+/// Every diagnostic of a parse, formatted, one per line.
+std::string formatDiagnostics(const ParseResult& result);
+/// Parses `text` as "t.f2": exactly one diagnostic, an error in "t.f2" at
+/// line:column whose message contains `what`.
+void expectOnlyError(std::string_view text, int line, int column, std::string_view what,
+                     const ParseLimits& limits = ParseLimits());
 /// Parses `text`; the test fails (with every diagnostic) if it has an error.
 SceneDesc sceneFromText(std::string_view text);
 /// Parses scenes/<name> of the source tree.

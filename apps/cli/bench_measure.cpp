@@ -72,7 +72,8 @@ std::optional<LoadedScene> loadBenchScene(const BenchSceneSpec& spec, int width,
     ParseResult parsed = parseScene(benchSceneText(spec, width, height), "<" + name + ">");
     for (const Diagnostic& d : parsed.diagnostics) std::cerr << d.format() << '\n';
     if (!parsed.ok()) return std::nullopt;
-    return LoadedScene{std::move(*parsed.scene), name};
+    return LoadedScene{std::move(*parsed.scene), name, std::move(parsed.files), parsed.linesInFiles,
+                       parsed.linesRead};
 }
 
 double peakRssMb() {

@@ -37,7 +37,10 @@ int runInfo(const std::string& path) {
               << '\n'
               << "  frames:     0.." << last << " at " << s.fps << " fps (" << double(last) / s.fps << " s)\n"
               << "  lights:     ambient " << s.ambient << ", " << s.lights.size() << " directional\n"
-              << "  objects:    " << s.objects.size() << " (" << s.primitiveCount() << " primitives)\n";
+              << "  objects:    " << s.objects.size() << " (" << s.primitiveCount() << " primitives)\n"
+              << "  source:     " << loaded->files.size() << (loaded->files.size() == 1 ? " file, " : " files, ")
+              << loaded->linesInFiles << " lines, " << loaded->linesRead
+              << " read with /repeat and /include expanded\n";
     for (const SceneObject& o : s.objects) {
         std::cout << "  " << kindName(o.kind) << ' ' << o.name << '\n';
         printTrack(o.name, o.track);

@@ -14,7 +14,8 @@ std::optional<LoadedScene> loadScene(const std::string& path) {
     ParseResult result = embedded ? parseScene(defaultSceneText(), kDefaultSceneName) : parseSceneFile(path);
     for (const Diagnostic& d : result.diagnostics) std::cerr << d.format() << '\n';
     if (!result.ok()) return std::nullopt;
-    return LoadedScene{std::move(*result.scene), embedded ? std::string(kDefaultSceneName) : path};
+    return LoadedScene{std::move(*result.scene), embedded ? std::string(kDefaultSceneName) : path,
+                       std::move(result.files), result.linesInFiles, result.linesRead};
 }
 
 bool parseSize(const std::string& text, int& width, int& height, std::string& error) {

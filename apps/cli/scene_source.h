@@ -1,7 +1,9 @@
 #pragma once
 /// Loading the scene named on the command line, with diagnostics on stderr.
+#include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/scene/scene_desc.h"
 
@@ -11,6 +13,10 @@ namespace f2::cli {
 struct LoadedScene {
     SceneDesc scene;
     std::string name;  ///< for messages: the path or the default scene's name
+    /// The files read (the main one, then every /include) and how many lines
+    /// they hold and were read with loops and includes expanded (SPEC 9.5).
+    std::vector<std::string> files;
+    std::uint64_t linesInFiles = 0, linesRead = 0;
 };
 
 /// Parses `path` ("" = embedded default, "-" = stdin), prints every diagnostic

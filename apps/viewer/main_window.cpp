@@ -2,6 +2,7 @@
 
 #include <QActionGroup>
 #include <QApplication>
+#include <QCloseEvent>
 #include <QDir>
 #include <QDockWidget>
 #include <QDragEnterEvent>
@@ -10,17 +11,21 @@
 #include <QFileInfo>
 #include <QFontDatabase>
 #include <QLabel>
+#include <QListWidget>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
-#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QSaveFile>
 #include <QScreen>
 #include <QSettings>
 #include <QStatusBar>
 #include <QVBoxLayout>
 
 #include "animation_exporter.h"
+#include "autosave.h"
 #include "core/anim/frame_time.h"
+#include "editor_dock.h"
 #include "image_convert.h"
 #include "io/png_writer.h"
 #include "io/sequence_sink.h"
@@ -28,6 +33,7 @@
 #include "orbit_camera.h"
 #include "playback.h"
 #include "scene_document.h"
+#include "scene_editor.h"
 #include "timeline_widget.h"
 #include "viewport_widget.h"
 
@@ -36,6 +42,10 @@ namespace f2::viewer {
 namespace {
 constexpr int kStatusRefreshMs = 500;
 constexpr int kProblemsDockHeight = 110;
+// Where a problem list item points: file, line, column.
+constexpr int kFileRole = Qt::UserRole;
+constexpr int kLineRole = Qt::UserRole + 1;
+constexpr int kColumnRole = Qt::UserRole + 2;
 const char* const kRecentKey = "recentFiles";
 const char* const kScaleKey = "renderScale";
 }  // namespace
@@ -57,13 +67,22 @@ MainWindow::MainWindow(QWidget* parent)
 
     diagnosticsDock_ = new QDockWidget(tr("Problems"), this);
     diagnosticsDock_->setObjectName("problemsDock");
-    diagnosticsView_ = new QPlainTextEdit(diagnosticsDock_);
-    diagnosticsView_->setReadOnly(true);
-    diagnosticsView_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
-    diagnosticsView_->setPlainText(tr("No problems."));
-    diagnosticsDock_->setWidget(diagnosticsView_);
+    problemsList_ = new QListWidget(diagnosticsDock_);
+    problemsList_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    problemsList_->addItem(tr("No problems."));
+    diagnosticsDock_->setWidget(problemsList_);
     addDockWidget(Qt::BottomDockWidgetArea, diagnosticsDock_);
     diagnosticsDock_->hide();
+    connect(problemsList_, &QListWidget::itemClicked, this, &MainWindow::onProblemClicked);
+    connect(problemsList_, &QListWidget::itemActivated, this, &MainWindow::onProblemClicked);
+
+    editorDock_ = new EditorDock(this);
+    addDockWidget(Qt::LeftDockWidgetArea, editorDock_);
+    connect(editorDock_, &EditorDock::textSettled, this, &MainWindow::onTextSettled);
+    connect(editorDock_, &EditorDock::modificationChanged, this, [this](bool modified) {
+        document_->setHoldsUnsavedEdits(modified);
+        updateTitle();
+    });
 
     frameStatus_ = new QLabel(this);
     timeStatus_ = new QLabel(this);
@@ -81,6 +100,8 @@ MainWindow::MainWindow(QWidget* parent)
 
     connect(document_, &SceneDocument::sceneChanged, this, &MainWindow::onSceneChanged);
     connect(document_, &SceneDocument::diagnosticsChanged, this, &MainWindow::onDiagnosticsChanged);
+    connect(document_, &SceneDocument::textLoaded, this, &MainWindow::onTextLoaded);
+    connect(document_, &SceneDocument::fileChangedOnDisk, this, &MainWindow::onFileChangedOnDisk);
     connect(controller_.get(), &RenderController::frameReady, this, &MainWindow::onFrameReady);
     connect(viewport_, &ViewportWidget::viewChanged, this, &MainWindow::scheduleFrame);
     connect(playback_, &Playback::timeChanged, this, [this](double t) {
@@ -105,29 +126,68 @@ MainWindow::MainWindow(QWidget* parent)
 
 MainWindow::~MainWindow() = default;
 
+SceneEditor* MainWindow::editor() const { return editorDock_->editor(); }
+
 void MainWindow::createActions() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(tr("&New Scene"), QKeySequence::New, this, &MainWindow::newFile);
     file->addAction(tr("&Open…"), QKeySequence::Open, this, &MainWindow::openDialog);
     recentMenu_ = file->addMenu(tr("Open &Recent"));
-    file->addAction(tr("Open &Default Scene"), this, [this] { document_->loadDefault(); });
-    file->addAction(tr("&Reload"), QKeySequence(Qt::Key_F5), this, [this] { document_->reload(); });
+    file->addAction(tr("Open &Default Scene"), this, &MainWindow::openDefaultScene);
+    file->addAction(tr("&Reload from Disk"), QKeySequence(Qt::Key_F5), this, [this] {
+        if (maybeSave()) document_->reload();
+    });
     file->addSeparator();
-    file->addAction(tr("&Save Frame as PNG…"), QKeySequence::Save, this, &MainWindow::saveFrame);
+    file->addAction(tr("&Save Scene"), QKeySequence::Save, this, &MainWindow::saveScene);
+    file->addAction(tr("Save Scene &As…"), QKeySequence::SaveAs, this, &MainWindow::saveSceneAs);
+    file->addSeparator();
+    file->addAction(tr("Save &Frame as PNG…"), QKeySequence(Qt::Key_F12), this, &MainWindow::saveFrame);
     file->addAction(tr("&Export PNG Sequence…"), this, &MainWindow::exportPngSequence);
     file->addAction(tr("Export &Video…"), this, &MainWindow::exportVideo);
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, qApp, &QApplication::closeAllWindows);
     rebuildRecentMenu();
 
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    SceneEditor* editor = editorDock_->editor();
+    QAction* undo = edit->addAction(tr("&Undo"), QKeySequence::Undo, editor, &QPlainTextEdit::undo);
+    QAction* redo = edit->addAction(tr("&Redo"), QKeySequence::Redo, editor, &QPlainTextEdit::redo);
+    undo->setEnabled(false);
+    redo->setEnabled(false);
+    connect(editor, &QPlainTextEdit::undoAvailable, undo, &QAction::setEnabled);
+    connect(editor, &QPlainTextEdit::redoAvailable, redo, &QAction::setEnabled);
+    edit->addSeparator();
+    edit->addAction(tr("&Find…"), QKeySequence::Find, editorDock_, &EditorDock::showFind);
+    edit->addAction(tr("Find &Next"), QKeySequence::FindNext, this, [this] { editorDock_->findNext(false); });
+    edit->addAction(tr("Find &Previous"), QKeySequence::FindPrevious, this,
+                    [this] { editorDock_->findNext(true); });
+    edit->addAction(tr("&Go to Line…"), QKeySequence(Qt::CTRL | Qt::Key_L), editorDock_,
+                    &EditorDock::goToLineDialog);
+    edit->addAction(tr("&Comment / Uncomment Lines"), QKeySequence(Qt::CTRL | Qt::Key_Slash), editor,
+                    &SceneEditor::toggleComment);
+
+    // One-key playback shortcuts act only while the picture or the timeline
+    // has the focus, so that they type into the editor.
+    QWidget* stage = centralWidget();
+    auto stageShortcut = [stage](QAction* action) {
+        action->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+        stage->addAction(action);
+    };
     QMenu* play = menuBar()->addMenu(tr("&Playback"));
-    play->addAction(tr("&Play / Pause"), QKeySequence(Qt::Key_Space), playback_, &Playback::togglePlaying);
-    play->addAction(tr("Step &Back"), QKeySequence(Qt::Key_Left), this, [this] { playback_->step(-1); });
-    play->addAction(tr("Step &Forward"), QKeySequence(Qt::Key_Right), this, [this] { playback_->step(1); });
-    play->addAction(tr("F&irst Frame"), QKeySequence(Qt::Key_Home), playback_, &Playback::seekToStart);
-    play->addAction(tr("&Last Frame"), QKeySequence(Qt::Key_End), playback_, &Playback::seekToEnd);
+    stageShortcut(play->addAction(tr("&Play / Pause"), QKeySequence(Qt::Key_Space), playback_,
+                                  &Playback::togglePlaying));
+    stageShortcut(play->addAction(tr("Step &Back"), QKeySequence(Qt::Key_Left), this,
+                                  [this] { playback_->step(-1); }));
+    stageShortcut(play->addAction(tr("Step &Forward"), QKeySequence(Qt::Key_Right), this,
+                                  [this] { playback_->step(1); }));
+    stageShortcut(play->addAction(tr("F&irst Frame"), QKeySequence(Qt::Key_Home), playback_,
+                                  &Playback::seekToStart));
+    stageShortcut(
+        play->addAction(tr("&Last Frame"), QKeySequence(Qt::Key_End), playback_, &Playback::seekToEnd));
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
-    view->addAction(tr("&Scene Camera"), QKeySequence(Qt::Key_C), viewport_, &ViewportWidget::resetView);
+    stageShortcut(view->addAction(tr("&Scene Camera"), QKeySequence(Qt::Key_C), viewport_,
+                                  &ViewportWidget::resetView));
     QMenu* scaleMenu = view->addMenu(tr("Render S&cale"));
     auto* scales = new QActionGroup(this);
     const std::pair<QString, RenderScale> choices[] = {{tr("25 %"), RenderScale::Quarter},
@@ -143,6 +203,7 @@ void MainWindow::createActions() {
         if (int(scale) == saved) viewport_->setRenderScale(scale);
     }
     view->addSeparator();
+    view->addAction(editorDock_->toggleViewAction());
     view->addAction(diagnosticsDock_->toggleViewAction());
 }
 
@@ -160,10 +221,149 @@ void MainWindow::setRenderScale(RenderScale scale) {
     viewport_->setRenderScale(scale);
 }
 
-void MainWindow::openFile(const QString& path) {
+bool MainWindow::openFile(const QString& path) {
+    if (!maybeSave()) return false;
     const QString absolute = QFileInfo(path).absoluteFilePath();
     document_->load(absolute);
     addRecentFile(absolute);
+    editorDock_->show();
+    offerAutosave();
+    return true;
+}
+
+bool MainWindow::newFile() {
+    if (!maybeSave()) return false;
+    document_->loadEmpty();
+    editorDock_->show();
+    offerAutosave();
+    editor()->setFocus();
+    return true;
+}
+
+bool MainWindow::openDefaultScene() {
+    if (!maybeSave()) return false;
+    document_->loadDefault();
+    offerAutosave();
+    return true;
+}
+
+void MainWindow::offerAutosave() {
+    const std::optional<QString> copy = Autosave::read(document_->path());
+    if (!copy) return;
+    if (*copy == document_->text() ||
+        ask(Question::RestoreAutosave,
+            tr("There are unsaved edits of %1 from an earlier session (the viewer did not close "
+               "normally). Restore them?")
+                .arg(document_->displayName())) != QMessageBox::Yes) {
+        Autosave::remove(document_->path());
+        return;
+    }
+    // One edit on top of the file's text: Undo goes back to what is on disk.
+    QTextCursor cursor(editor()->document());
+    cursor.select(QTextCursor::Document);
+    cursor.insertText(*copy);
+    document_->setText(*copy);
+}
+
+bool MainWindow::saveScene() {
+    if (document_->path().isEmpty()) return saveSceneAs();
+    return writeScene(document_->path());
+}
+
+bool MainWindow::saveSceneAs() {
+    const QString dir = document_->path().isEmpty() ? QString() : QFileInfo(document_->path()).absolutePath();
+    const QString suggested = QDir(dir).filePath(
+        document_->path().isEmpty() ? QStringLiteral("untitled.f2") : QFileInfo(document_->path()).fileName());
+    QFileDialog dialog(this, tr("Save Scene"), suggested, tr("F2 scenes (*.f2);;All files (*)"));
+    dialog.setAcceptMode(QFileDialog::AcceptSave);
+    dialog.setDefaultSuffix("f2");
+    if (dialog.exec() != QDialog::Accepted || dialog.selectedFiles().isEmpty()) return false;
+    return writeScene(QFileInfo(dialog.selectedFiles().first()).absoluteFilePath());
+}
+
+bool MainWindow::writeScene(const QString& path) {
+    const QString text = editor()->toPlainText();
+    QSaveFile file(path);  // a temporary file renamed over the old one
+    if (!file.open(QIODevice::WriteOnly) || file.write(text.toUtf8()) < 0 || !file.commit()) {
+        QMessageBox::warning(this, tr("Save Scene"), tr("Could not save %1: %2").arg(path, file.errorString()));
+        return false;
+    }
+    const QString oldPath = document_->path();
+    document_->markSaved(path, text);
+    editorDock_->setModified(false);
+    Autosave::remove(oldPath);
+    Autosave::remove(path);
+    addRecentFile(path);
+    updateTitle();
+    statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
+    return true;
+}
+
+bool MainWindow::maybeSave() {
+    if (!editorDock_->isModified()) return true;
+    switch (ask(Question::SaveChanges, tr("%1 has unsaved changes. Save them?").arg(document_->displayName()))) {
+        case QMessageBox::Save:
+            return saveScene();
+        case QMessageBox::Discard:
+            Autosave::remove(document_->path());
+            editorDock_->setModified(false);
+            return true;
+        default:
+            return false;
+    }
+}
+
+QMessageBox::StandardButton MainWindow::ask(Question question, const QString& text) {
+    if (asker_) return asker_(question, text);
+    switch (question) {
+        case Question::SaveChanges:
+            return QMessageBox::question(this, tr("Unsaved Changes"), text,
+                                         QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel,
+                                         QMessageBox::Save);
+        case Question::RestoreAutosave:
+            return QMessageBox::question(this, tr("Restore Unsaved Edits"), text,
+                                         QMessageBox::Yes | QMessageBox::No, QMessageBox::Yes);
+        case Question::ReloadChangedFile:
+            break;
+    }
+    QMessageBox box(QMessageBox::Question, tr("File Changed on Disk"), text, QMessageBox::NoButton, this);
+    box.addButton(tr("Load the File"), QMessageBox::YesRole);
+    QAbstractButton* keep = box.addButton(tr("Keep My Edits"), QMessageBox::NoRole);
+    box.exec();
+    return box.clickedButton() == keep ? QMessageBox::No : QMessageBox::Yes;
+}
+
+void MainWindow::onTextLoaded(const QString& text) {
+    editorDock_->setSceneText(text);
+    updateTitle();
+}
+
+void MainWindow::onTextSettled() {
+    const QString text = editor()->toPlainText();
+    document_->setText(text);
+    if (editorDock_->isModified()) Autosave::write(document_->path(), text);
+}
+
+void MainWindow::onFileChangedOnDisk() {
+    if (ask(Question::ReloadChangedFile,
+            tr("%1 changed on disk, and the editor has unsaved changes. Load the file (your edits are "
+               "lost) or keep your edits?")
+                .arg(document_->displayName())) == QMessageBox::No)
+        return;
+    Autosave::remove(document_->path());
+    document_->reload();
+}
+
+void MainWindow::updateTitle() {
+    setWindowTitle(tr("%1[*] — f2-viewer").arg(document_->displayName()));
+    setWindowModified(editorDock_->isModified());
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    if (maybeSave())
+        event->accept();
+    else
+        event->ignore();
 }
 
 void MainWindow::onSceneChanged(bool newDocument) {
@@ -175,13 +375,30 @@ void MainWindow::onSceneChanged(bool newDocument) {
     const Camera camera = Camera::fromDesc(scene->camera);
     // A reload of the same file keeps the user's look-around; a new file starts at its camera.
     viewport_->setSceneCamera(camera, orbitTargetDistance(*scene, camera), !newDocument);
-    setWindowTitle(tr("%1 — f2-viewer").arg(document_->displayName()));
+    updateTitle();
     scheduleFrame();
 }
 
 void MainWindow::onDiagnosticsChanged() {
     const QStringList lines = document_->diagnostics();
-    diagnosticsView_->setPlainText(lines.isEmpty() ? tr("No problems.") : lines.join('\n'));
+    problemsList_->clear();
+    std::vector<EditorProblem> inEditor;
+    const std::string ownFile = document_->sourceName();
+    const auto& list = document_->diagnosticList();
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        const Diagnostic& d = list[i];
+        auto* item = new QListWidgetItem(lines[qsizetype(i)], problemsList_);
+        item->setData(kFileRole, QString::fromStdString(d.loc.file));
+        item->setData(kLineRole, d.loc.line);
+        item->setData(kColumnRole, d.loc.column);
+        item->setForeground(d.severity == Severity::Error ? QColor(0xb0, 0x00, 0x20) : QColor(0x90, 0x60, 0x00));
+        // Problems in an included file are listed but not underlined here.
+        if (d.loc.file == ownFile)
+            inEditor.push_back({d.loc.line, d.loc.column, QString::fromStdString(d.message),
+                                d.severity == Severity::Error});
+    }
+    if (lines.isEmpty()) problemsList_->addItem(tr("No problems."));
+    editor()->setProblems(std::move(inEditor));
     if (document_->hasErrors()) {
         showDiagnostics();
         diagnosticsDock_->raise();
@@ -191,6 +408,13 @@ void MainWindow::onDiagnosticsChanged() {
         if (!lines.isEmpty()) showDiagnostics();  // warnings
         statusBar()->clearMessage();
     }
+}
+
+void MainWindow::onProblemClicked(QListWidgetItem* item) {
+    if (!item->data(kLineRole).isValid()) return;
+    if (item->data(kFileRole).toString().toStdString() != document_->sourceName()) return;
+    editorDock_->show();
+    editor()->goTo(item->data(kLineRole).toInt(), item->data(kColumnRole).toInt());
 }
 
 void MainWindow::showDiagnostics() {
@@ -243,10 +467,16 @@ QString MainWindow::exportStem() const {
 }
 
 bool MainWindow::refuseSceneFile(const QString& path, const QString& title) {
-    // The viewer never writes the scene file, whatever name the user picks.
-    if (document_->path().isEmpty() || QFileInfo(path) != QFileInfo(document_->path())) return false;
-    QMessageBox::warning(this, title, tr("Refusing to overwrite the scene file."));
-    return true;
+    // The viewer never writes the scene file or a file it includes, whatever
+    // name the user picks.
+    for (const QString& source : document_->sources()) {
+        if (QFileInfo(path) != QFileInfo(source)) continue;
+        QMessageBox::warning(this, title,
+                             source == document_->path() ? tr("Refusing to overwrite the scene file.")
+                                                         : tr("Refusing to overwrite a file the scene includes."));
+        return true;
+    }
+    return false;
 }
 
 void MainWindow::saveFrame() {

@@ -3,14 +3,17 @@
 /// document, the clock, the render controller and the widgets. The work is
 /// done by those classes; this one stays small.
 #include <QMainWindow>
+#include <QMessageBox>
 #include <QTimer>
+#include <functional>
 #include <memory>
 
 #include "render_controller.h"
 
 class QLabel;
+class QListWidget;
+class QListWidgetItem;
 class QMenu;
-class QPlainTextEdit;
 class QDockWidget;
 
 namespace f2 {
@@ -20,7 +23,9 @@ class FrameSink;
 
 namespace f2::viewer {
 
+class EditorDock;
 class Playback;
+class SceneEditor;
 class SceneDocument;
 class TimelineWidget;
 class ViewportWidget;
@@ -32,8 +37,35 @@ class MainWindow : public QMainWindow {
     explicit MainWindow(QWidget* parent = nullptr);
     ~MainWindow() override;
 
-    /// Opens a scene file (command line, dialog, recent files, drops).
-    void openFile(const QString& path);
+    /// Opens a scene file (command line, dialog, recent files, drops), after
+    /// asking about unsaved edits; offers back an autosaved copy of it.
+    /// Returns false if the user cancelled.
+    bool openFile(const QString& path);
+    /// Starts an empty untitled scene (after asking about unsaved edits).
+    bool newFile();
+    /// Opens the built-in default scene as untitled text.
+    bool openDefaultScene();
+    /// Writes the editor's text to the scene file (Save As for an untitled
+    /// one), atomically. Returns whether it was written.
+    bool saveScene();
+    /// Asks for a file name and writes the editor's text there.
+    bool saveSceneAs();
+    /// Writes the editor's text to `path` atomically and makes it the document's file.
+    bool writeScene(const QString& path);
+
+    /// Offers back the autosaved copy of the open document, if there is one
+    /// (opening a file does this; main() does it for the untitled start).
+    void offerAutosave();
+
+    /// The questions the window asks; tests answer them through setAsker().
+    enum class Question {
+        SaveChanges,        ///< Save / Discard / Cancel
+        RestoreAutosave,    ///< Yes (restore the copy) / No (discard it)
+        ReloadChangedFile,  ///< Yes (take the file on disk) / No (keep the editor's text)
+    };
+    using Asker = std::function<QMessageBox::StandardButton(Question, const QString& text)>;
+    /// Replaces the message boxes (tests).
+    void setAsker(Asker asker) { asker_ = std::move(asker); }
     /// Resizes the window so the picture area gets `viewportSize` (screen permitting).
     void resizeForViewport(QSize viewportSize);
 
@@ -43,8 +75,10 @@ class MainWindow : public QMainWindow {
     TimelineWidget* timeline() const { return timeline_; }
     ViewportWidget* viewport() const { return viewport_; }
     RenderController* renderController() const { return controller_.get(); }
-    QPlainTextEdit* diagnosticsView() const { return diagnosticsView_; }
+    QListWidget* problemsList() const { return problemsList_; }
     QDockWidget* diagnosticsDock() const { return diagnosticsDock_; }
+    EditorDock* editorDock() const { return editorDock_; }
+    SceneEditor* editor() const;
     /// The frame on screen (time, timings, size); serial 0 before the first.
     const FrameInfo& shownFrame() const { return shownFrame_; }
 
@@ -59,11 +93,20 @@ class MainWindow : public QMainWindow {
    protected:
     void dragEnterEvent(QDragEnterEvent* event) override;
     void dropEvent(QDropEvent* event) override;
+    void closeEvent(QCloseEvent* event) override;
 
    private:
     void createActions();
     void onSceneChanged(bool newDocument);
     void onDiagnosticsChanged();
+    void onProblemClicked(QListWidgetItem* item);
+    void onTextLoaded(const QString& text);
+    void onTextSettled();
+    void onFileChangedOnDisk();
+    /// True when there are no unsaved edits or the user saved or discarded them.
+    bool maybeSave();
+    QMessageBox::StandardButton ask(Question question, const QString& text);
+    void updateTitle();
     void showDiagnostics();
     void onFrameReady(const QImage& image, const FrameInfo& info);
     void requestFrame();
@@ -89,7 +132,9 @@ class MainWindow : public QMainWindow {
     ViewportWidget* viewport_ = nullptr;
     TimelineWidget* timeline_ = nullptr;
     QDockWidget* diagnosticsDock_ = nullptr;
-    QPlainTextEdit* diagnosticsView_ = nullptr;
+    QListWidget* problemsList_ = nullptr;
+    EditorDock* editorDock_ = nullptr;
+    Asker asker_;
     QMenu* recentMenu_ = nullptr;
     QLabel* frameStatus_ = nullptr;
     QLabel* timeStatus_ = nullptr;

@@ -76,7 +76,10 @@ ViewerOptions parseViewerOptions(const QApplication& app) {
 void applyViewerOptions(const ViewerOptions& options, MainWindow& window) {
     if (options.scale) window.setRenderScale(RenderScale(*options.scale));
     if (options.viewportSize.isValid()) window.resizeForViewport(options.viewportSize);
-    if (!options.scene.isEmpty()) window.openFile(options.scene);
+    if (!options.scene.isEmpty())
+        window.openFile(options.scene);
+    else
+        window.offerAutosave();
     if (options.frame) {
         window.playback()->pause();
         window.playback()->seek(*options.frame);

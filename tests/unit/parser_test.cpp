@@ -17,6 +17,7 @@
 
 #include "core/parse/lexer.h"
 #include "core/parse/number.h"
+#include "test_scenes.h"
 
 namespace f2 {
 namespace {
@@ -25,11 +26,7 @@ namespace fs = std::filesystem;
 
 constexpr const char* kFile = "t.f2";
 
-std::string dump(const ParseResult& r) {
-    std::string s;
-    for (const Diagnostic& d : r.diagnostics) s += d.format() + "\n";
-    return s;
-}
+std::string dump(const ParseResult& r) { return test::formatDiagnostics(r); }
 
 /// Parses text that must be valid (warnings allowed) and returns the scene.
 SceneDesc parseOk(std::string_view text) {
@@ -42,16 +39,7 @@ SceneDesc parseOk(std::string_view text) {
 /// Parses text with exactly one diagnostic, an error, and checks where it is
 /// and that its message contains `what`.
 void expectError(std::string_view text, int line, int column, std::string_view what) {
-    SCOPED_TRACE(std::string(text));
-    ParseResult r = parseScene(text, kFile);
-    EXPECT_FALSE(r.ok());
-    ASSERT_EQ(r.diagnostics.size(), 1u) << dump(r);
-    const Diagnostic& d = r.diagnostics[0];
-    EXPECT_EQ(d.severity, Severity::Error);
-    EXPECT_EQ(d.loc.file, kFile);
-    EXPECT_EQ(d.loc.line, line) << d.format();
-    EXPECT_EQ(d.loc.column, column) << d.format();
-    EXPECT_NE(d.message.find(what), std::string::npos) << "message: " << d.message << "\nexpected: " << what;
+    test::expectOnlyError(text, line, column, what);
 }
 
 const SceneObject& object(const SceneDesc& s, std::string_view name) {

@@ -43,7 +43,7 @@ exit \$status
 SCRIPT
 chmod +x "$work/run.sh"
 
-xvfb-run -a -s "-screen 0 1024x800x24" "$work/run.sh" "$viewer" "$@"
+xvfb-run -a -s "-screen 0 1400x800x24" "$work/run.sh" "$viewer" "$@"
 
 # Crop to the window (it sits at the top-left; Xvfb has no window manager).
 convert "$work/screen.png" -trim +repage "$out"

@@ -4,6 +4,7 @@
 #include <QDockWidget>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QListWidget>
 #include <QPlainTextEdit>
 #include <QProcess>
 #include <QProgressDialog>
@@ -19,6 +20,10 @@
 #include <thread>
 
 #include "animation_exporter.h"
+#include "autosave.h"
+#include "editor_dock.h"
+#include "scene_editor.h"
+#include "scene_highlighter.h"
 #include "core/parse/parser.h"
 #include "core/render/renderer.h"
 #include "image_convert.h"
@@ -30,71 +35,14 @@
 #include "playback.h"
 #include "render_controller.h"
 #include "scene_document.h"
+#include "test_support.h"
 #include "timeline_widget.h"
 #include "viewport_widget.h"
 
 using namespace f2;
 using namespace f2::viewer;
+using namespace f2::viewer::test;
 using namespace std::chrono_literals;
-
-namespace {
-
-constexpr int kWaitMs = 10000;  // generous: CI machines are slow and shared
-
-/// A tiny animated scene: a sphere moving right over frames 0..10.
-const char* const kSmallScene = R"(/camera 96 72 0.6 0 0 -10
-/background 20 30 40
-/amb_light 0.3
-/dir_light 0.8 0.3 -0.5 1
-/box floor 40 1 40 0 -2 10
-/sphere ball 1.5 -3 0 8
-/key 0 ball
-/key 10 ball 3 0 8 0 0 0
-)";
-
-void writeFile(const QString& path, const QByteArray& text) {
-    QFile f(path);
-    QVERIFY2(f.open(QIODevice::WriteOnly | QIODevice::Truncate), qPrintable(path));
-    QCOMPARE(f.write(text), text.size());
-}
-
-QByteArray readFile(const QString& path) {
-    QFile f(path);
-    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
-}
-
-/// What `f2 render --frame t --size WxH` gives for the scene's own camera.
-Image coreRender(const SceneDesc& scene, double t, int width, int height) {
-    Renderer renderer;
-    Image image;
-    renderer.render(scene, t, Camera::fromDesc(scene.camera).resized(width, height), image);
-    return image;
-}
-
-/// Waits until the window shows the latest requested frame and it is frame `t`.
-bool waitForShownFrame(MainWindow& w, double t) {
-    QElapsedTimer clock;
-    clock.start();
-    while (clock.elapsed() < kWaitMs) {
-        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
-        if (!w.renderController()->hasPendingFrames() && w.shownFrame().serial != 0 &&
-            w.shownFrame().time == t)
-            return true;
-        QTest::qWait(5);
-    }
-    return false;
-}
-
-void expectViewportMatchesCore(MainWindow& w, double t) {
-    const QImage shown = w.viewport()->image();
-    QVERIFY(!shown.isNull());
-    QCOMPARE(shown.size(), w.viewport()->renderSize());
-    const Image expected = coreRender(*w.document()->scene(), t, shown.width(), shown.height());
-    QVERIFY2(fromQImage(shown) == expected,
-             "viewer image differs from Renderer::render at the same camera/size");
-}
-
-}  // namespace
 
 class ViewerTest : public QObject {
     Q_OBJECT
@@ -106,10 +54,12 @@ class ViewerTest : public QObject {
     void imageConversionRoundTrips();
     void playStepScrubShowsCoreImage();
     void keyboardShortcutsDrivePlayback();
+    void stepGoesFromTheFrameShown();
     void renderScaleFollowsWindow();
     void dragOrbitsWheelZoomsAndSceneCameraResets();
     void brokenFileShowsErrorsAndKeepsImage();
     void reloadsAfterEditorReplacesFile();
+    void reloadsWhenAnIncludedFileChanges();
     void windowRespondsDuringSlowFrame();
     void latestRequestWins();
     void exportWritesPngSequence();
@@ -279,8 +229,30 @@ void ViewerTest::keyboardShortcutsDrivePlayback() {
     QVERIFY(!w.playback()->isPlaying());
 }
 
+void ViewerTest::stepGoesFromTheFrameShown() {
+    // Time 3.7 shows frame 3 (f2::frameAt, the rule `f2 render` uses); a step
+    // goes to frame 4, not 5 (stepping used to round the time instead).
+    Playback playback;
+    playback.setRange(15, 24);
+    playback.seek(3.7);
+    QCOMPARE(playback.frame(), 3);
+    playback.step(1);
+    QCOMPARE(playback.time(), 4.0);
+    playback.seek(3.7);
+    playback.step(-1);
+    QCOMPARE(playback.time(), 2.0);
+    playback.seek(0.1 * 3 * 10);  // 2.9999999999999996: frame 3, as everywhere
+    QCOMPARE(playback.frame(), 3);
+
+    TimelineWidget timeline;
+    timeline.setRange(15, 24);
+    timeline.setTime(3.7);
+    QCOMPARE(timeline.slider()->value(), 3);
+}
+
 void ViewerTest::renderScaleFollowsWindow() {
     MainWindow w;
+    w.editorDock()->hide();  // the offscreen screen is 800 pixels wide: all of it for the picture
     w.resizeForViewport({480, 300});  // wider than the transport bar needs
     w.show();
     QVERIFY(QTest::qWaitForWindowExposed(&w));
@@ -362,7 +334,7 @@ void ViewerTest::brokenFileShowsErrorsAndKeepsImage() {
     const QByteArray broken = QByteArray(kSmallScene).replace("/amb_light 0.3", "/amb_lite 0.3");
     writeFile(path, broken);
     QTRY_VERIFY_WITH_TIMEOUT(w.document()->hasErrors(), kWaitMs);
-    const QString shown = w.diagnosticsView()->toPlainText();
+    const QString shown = problemsText(w);
     QVERIFY2(shown.contains(path + ":3:1: error:"), qPrintable(shown));
     QVERIFY(w.diagnosticsDock()->isVisible());
     QCOMPARE(w.document()->scene(), goodScene);  // the last good scene stays
@@ -384,7 +356,7 @@ void ViewerTest::brokenFileShowsErrorsAndKeepsImage() {
     QVERIFY(waitForShownFrame(w, 5));
     QVERIFY(w.viewport()->image() != good);
     expectViewportMatchesCore(w, 5);
-    QCOMPARE(w.diagnosticsView()->toPlainText(), QStringLiteral("No problems."));
+    QCOMPARE(problemsText(w), QStringLiteral("No problems."));
 }
 
 void ViewerTest::reloadsAfterEditorReplacesFile() {
@@ -408,6 +380,35 @@ void ViewerTest::reloadsAfterEditorReplacesFile() {
         QTRY_COMPARE_WITH_TIMEOUT(doc.scene()->fps, 30 + round, kWaitMs);
         QCOMPARE(changed.last().at(0).toBool(), false);  // same file: keep time and view
     }
+}
+
+void ViewerTest::reloadsWhenAnIncludedFileChanges() {
+    QTemporaryDir dir;
+    QVERIFY(QDir(dir.path()).mkpath("parts"));
+    const QString path = dir.filePath("scene.f2");
+    const QString part = dir.filePath("parts/speed.f2");
+    const QString later = dir.filePath("parts/later.f2");
+    writeFile(part, "/fps 30\n");
+    writeFile(path, QByteArray(kSmallScene).append("/include parts/speed.f2\n"));
+    SceneDocument doc;
+    QVERIFY(doc.load(path));
+    QCOMPARE(doc.scene()->fps, 30);
+    QCOMPARE(doc.sources(), (QStringList{path, part}));
+
+    // Editing only the included file reloads the scene.
+    writeFile(part, "/fps 31\n");
+    QTRY_COMPARE_WITH_TIMEOUT(doc.scene()->fps, 31, kWaitMs);
+
+    // An include of a file that does not exist yet: the error names it, and
+    // creating the file reloads (its folder is watched).
+    writeFile(part, "/include later.f2\n");
+    QTRY_VERIFY_WITH_TIMEOUT(doc.hasErrors(), kWaitMs);
+    QVERIFY2(doc.diagnostics().join("\n").contains(part + ":1:10: error: cannot include"),
+             qPrintable(doc.diagnostics().join("\n")));
+    QCOMPARE(doc.sources(), (QStringList{path, part, later}));
+    writeFile(later, "/fps 32\n");
+    QTRY_COMPARE_WITH_TIMEOUT(doc.scene()->fps, 32, kWaitMs);
+    QVERIFY(!doc.hasErrors());
 }
 
 void ViewerTest::windowRespondsDuringSlowFrame() {

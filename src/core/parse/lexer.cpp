@@ -83,7 +83,14 @@ void tokenizeLine(std::string_view line, LineTokens& out) {
         }
         if (c == '#') break;  // comment to the end of the line
         const std::size_t start = i;
-        while (i < n && line[i] != ' ' && line[i] != '\t' && line[i] != '#') ++i;
+        // Inside ( ) and { } spaces do not split (SPEC 9.4: "( 1 + 2 )" is one
+        // argument); '#' still starts a comment.
+        int depth = 0;
+        while (i < n && line[i] != '#' && (depth > 0 || (line[i] != ' ' && line[i] != '\t'))) {
+            if (line[i] == '(' || line[i] == '{') ++depth;
+            if ((line[i] == ')' || line[i] == '}') && depth > 0) --depth;
+            ++i;
+        }
         if (out.count < kMaxStoredTokens) {
             out.tokens[static_cast<std::size_t>(out.count)] = {line.substr(start, i - start),
                                                                static_cast<int>(start) + 1};

@@ -46,7 +46,9 @@ struct LineTokens {
     int count = 0;
 };
 
-/// Splits a line at spaces and tabs, stopping at the first '#'.
+/// Splits a line at spaces and tabs, stopping at the first '#'. Spaces inside
+/// parentheses or braces do not split: "( 1 + 2 )" and "r{ i }" are one token
+/// each (an unclosed one runs to the end of the line or the comment).
 void tokenizeLine(std::string_view line, LineTokens& out);
 
 /// One character decoded from UTF-8; `bytes` is 0 when s[i] does not start

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <system_error>
 
+#include "core/parse/lexer.h"
+
 namespace f2 {
 
 ParsedNumber parseNumber(std::string_view token) {
@@ -42,6 +44,29 @@ ParsedNumber parseNumber(std::string_view token) {
     result.value = value == 0 ? 0.0 : value;  // -0 reads as 0
     result.status = NumberStatus::Ok;
     return result;
+}
+
+std::string numberErrorMessage(std::string_view token, NumberStatus status) {
+    switch (status) {
+        case NumberStatus::Ok:
+            break;
+        case NumberStatus::NotANumber: {
+            std::string message = "expected a number, got " + quoteToken(token);
+            if (token.find(',') != std::string_view::npos) message += " (the decimal separator is '.')";
+            return message;
+        }
+        case NumberStatus::Hexadecimal:
+            return "expected a decimal number, got " + quoteToken(token) + " (hexadecimal is not accepted)";
+        case NumberStatus::NotFinite:
+            return "expected a finite number, got " + quoteToken(token);
+        case NumberStatus::OutOfRange: {
+            const bool tiny =
+                token.find("e-") != std::string_view::npos || token.find("E-") != std::string_view::npos;
+            return "number " + quoteToken(token) + " is out of range" +
+                   (tiny ? " (too close to zero; write 0)" : " (the largest magnitude is 3.4e38)");
+        }
+    }
+    return {};
 }
 
 }  // namespace f2

@@ -1,6 +1,7 @@
 #pragma once
 /// Decimal numbers of the scene language (SPEC 7), read the same way whatever
 /// the process locale is.
+#include <string>
 #include <string_view>
 
 namespace f2 {
@@ -26,5 +27,9 @@ inline constexpr double kMaxNumberMagnitude = 3.4028234663852886e38;
 /// optional fraction and exponent). Uses std::from_chars, so the C locale's
 /// '.' is the decimal point regardless of setlocale().
 ParsedNumber parseNumber(std::string_view token);
+
+/// The message for a token that is not a number (status is not Ok), such as
+/// "expected a number, got 'abc'".
+std::string numberErrorMessage(std::string_view token, NumberStatus status);
 
 }  // namespace f2

@@ -13,9 +13,12 @@
 #include <numeric>
 #include <unordered_map>
 
+#include "core/parse/expression.h"
 #include "core/parse/lexer.h"
 #include "core/parse/number.h"
+#include "core/parse/source_expander.h"
 #include "core/parse/suggest.h"
+#include "core/parse/symbol_index.h"
 #include "core/parse/unusual_char.h"
 
 namespace f2 {
@@ -72,12 +75,8 @@ std::string_view kindName(ObjectKind kind) { return kObjectKindNames[static_cast
 /// that a file with a million objects and many unknown names stays fast.
 constexpr std::size_t kMaxNameSuggestWork = 50'000'000;
 
-struct Pos {
-    int line = 0;
-    int column = 0;
-};
-
-std::string posText(Pos p) { return std::to_string(p.line) + ":" + std::to_string(p.column); }
+/// A place in the source: file, line, column and reading order (SPEC 9.5).
+using Pos = SourcePos;
 
 bool isNameStart(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; }
 bool isNameChar(char c) { return isNameStart(c) || (c >= '0' && c <= '9'); }
@@ -145,29 +144,57 @@ struct ObjectBook {
     std::array<std::optional<Pos>, kPartCount + 1> interps{};
 };
 
-// Parser
-class Parser {
-   public:
-    Parser(std::string_view fileName, const ParseLimits& limits) : fileName_(fileName), limits_(limits) {}
+ExpansionLimits expansionLimits(const ParseLimits& limits) {
+    ExpansionLimits e;
+    e.maxLines = limits.maxExpandedLines;
+    e.maxBytes = limits.maxExpandedBytes;
+    e.maxLoopDepth = limits.maxLoopDepth;
+    e.maxIncludeDepth = limits.maxIncludeDepth;
+    e.maxLineBytes = limits.maxLineBytes;
+    e.maxFileBytes = limits.maxSceneBytes;
+    return e;
+}
 
-    ParseResult run(std::string_view text) {
-        if (text.size() > limits_.maxSceneBytes) {
+// Parser
+/// The commands of the scene; /let, /repeat, /end and /include are run by the
+/// SourceExpander before a line gets here.
+class Parser : private ExpansionSink {
+   public:
+    Parser(std::string_view fileName, const ParseLimits& limits, SymbolIndex* index)
+        : fileName_(fileName), limits_(limits), index_(index), expander_(expansionLimits(limits), *this) {}
+
+    /// `identity`: the main file's (device, inode), when it is a file.
+    ParseResult run(std::string_view text,
+                    std::optional<std::pair<std::uint64_t, std::uint64_t>> identity = std::nullopt) {
+        const bool tooLarge = text.size() > limits_.maxSceneBytes;
+        expander_.start(tooLarge ? std::string_view() : text, std::string(fileName_), identity);
+        if (tooLarge) {
             error({1, 1}, "the scene is " + std::to_string(text.size()) + " bytes, more than the limit of " +
                               std::to_string(limits_.maxSceneBytes) + " bytes");
             return finish();
         }
-        LineReader reader(text);
-        SourceLine line;
-        while (!stopped_ && reader.next(line)) parseLine(line);
+        while (!stopped_ && expander_.next(tokens_)) parseLine();
         sortUnsortedTracks();
         if (errors_ == 0) warnAboutTheWholeScene();
         return finish();
     }
 
    private:
+    void expansionError(Pos pos, std::string message) override {
+        report(Severity::Error, pos, message + expander_.loopNote(), false);
+    }
+
+    /// "3:5", or "FILE:3:5" when `p` is in another file than the current line.
+    std::string posText(Pos p) const {
+        std::string s = std::to_string(p.line) + ":" + std::to_string(p.column);
+        return p.file == tokens_.pos.file ? s : expander_.fileName(p.file) + ":" + s;
+    }
+
     // Diagnostics
-    void report(Severity severity, Pos pos, std::string message) {
+    /// `noted`: add the loop values when `pos` is on the line being read.
+    void report(Severity severity, Pos pos, std::string message, bool noted = true) {
         if (stopped_) return;
+        if (noted && pos.seq != 0 && pos.seq == tokens_.pos.seq) message += expander_.loopNote();
         if (severity == Severity::Warning) {
             // Warnings do not stop parsing, so a hostile file could make millions.
             if (warnings_ >= limits_.maxWarnings) {
@@ -178,13 +205,13 @@ class Parser {
         } else {
             ++errors_;
         }
-        diagnostics_.push_back(
-            {{std::string(fileName_), pos.line, pos.column}, severity, std::move(message)});
+        const SourceLoc loc{expander_.fileName(pos.file), pos.line, pos.column};
+        diagnostics_.push_back({loc, severity, std::move(message)});
+        order_.push_back(pos);
         if (severity == Severity::Error && errors_ >= limits_.maxErrors) {
             diagnostics_.push_back(
-                {{std::string(fileName_), pos.line, pos.column},
-                 Severity::Error,
-                 "too many errors (" + std::to_string(errors_) + "); parsing stopped here"});
+                {loc, Severity::Error, "too many errors (" + std::to_string(errors_) + "); parsing stopped here"});
+            order_.push_back(pos);
             stopped_ = true;
         }
     }
@@ -194,17 +221,27 @@ class Parser {
     ParseResult finish() {
         if (droppedWarnings_ > 0) {
             diagnostics_.push_back(
-                {{std::string(fileName_), firstDroppedWarning_.line, firstDroppedWarning_.column},
+                {{expander_.fileName(firstDroppedWarning_.file), firstDroppedWarning_.line,
+                  firstDroppedWarning_.column},
                  Severity::Warning,
                  std::to_string(droppedWarnings_) + " more warnings from here on are not shown"});
+            order_.push_back(firstDroppedWarning_);
         }
-        // Duplicate-key warnings of out-of-order tracks are found at the end.
-        std::stable_sort(
-            diagnostics_.begin(), diagnostics_.end(), [](const Diagnostic& a, const Diagnostic& b) {
-                return a.loc.line != b.loc.line ? a.loc.line < b.loc.line : a.loc.column < b.loc.column;
-            });
+        // Duplicate-key warnings of out-of-order tracks are found at the end;
+        // reading order, not line numbers, since loops read lines again.
+        std::vector<std::size_t> index(diagnostics_.size());
+        std::iota(index.begin(), index.end(), std::size_t{0});
+        std::stable_sort(index.begin(), index.end(), [&](std::size_t a, std::size_t b) {
+            const Pos& p = order_[a];
+            const Pos& q = order_[b];
+            return p.seq != q.seq ? p.seq < q.seq : p.column < q.column;
+        });
         ParseResult result;
-        result.diagnostics = std::move(diagnostics_);
+        result.diagnostics.reserve(index.size());
+        for (std::size_t i : index) result.diagnostics.push_back(std::move(diagnostics_[i]));
+        result.files = expander_.files();
+        result.linesRead = expander_.linesRead();
+        result.linesInFiles = expander_.linesInFiles();
         if (errors_ == 0) result.scene = std::move(scene_);
         return result;
     }
@@ -212,16 +249,25 @@ class Parser {
     // Tokens of the current line
     int argCount() const { return tokens_.count - 1; }
     std::string_view commandText() const { return tokens_.tokens[0].text; }
-    Pos commandPos() const { return {line_, tokens_.tokens[0].column}; }
-    std::string_view arg(int i) const { return tokens_.tokens[static_cast<std::size_t>(i + 1)].text; }
-    Pos argPos(int i) const { return {line_, tokens_.tokens[static_cast<std::size_t>(i + 1)].column}; }
+    Pos at(int column) const {
+        Pos p = tokens_.pos;
+        p.column = column;
+        return p;
+    }
+    Pos commandPos() const { return at(tokens_.tokens[0].column); }
+    const LogicalToken& argToken(int i) const { return tokens_.tokens[static_cast<std::size_t>(i + 1)]; }
+    std::string_view arg(int i) const { return argToken(i).text; }
+    Pos argPos(int i) const { return at(argToken(i).column); }
+    /// A `( … )` or `{ … }` of argument i failed; its error is already reported.
+    bool failed(int i) const { return argToken(i).form == TokenForm::Failed; }
 
-    /// The line from its first token to the end of its last stored one (no comment).
+    /// The line from its first token to the end of its last stored one (no comment), as written.
     std::string_view commandLine() const {
-        const Token& first = tokens_.tokens[0];
-        const Token& last = tokens_.tokens[static_cast<std::size_t>(std::min(tokens_.count, kMaxStoredTokens) - 1)];
+        const LogicalToken& first = tokens_.tokens[0];
+        const LogicalToken& last =
+            tokens_.tokens[static_cast<std::size_t>(std::min(tokens_.count, kMaxStoredTokens) - 1)];
         const auto begin = static_cast<std::size_t>(first.column - 1);
-        return lineText_.substr(begin, static_cast<std::size_t>(last.column - 1) + last.text.size() - begin);
+        return tokens_.raw.substr(begin, static_cast<std::size_t>(last.column - 1) + last.written.size() - begin);
     }
 
     /// `message` with a note naming an invisible or unusual character of
@@ -236,18 +282,7 @@ class Parser {
         return message + " (" + note + ")";
     }
 
-    void parseLine(const SourceLine& line) {
-        line_ = line.number;
-        lineText_ = line.text;
-        if (line.text.size() > limits_.maxLineBytes) {
-            error({line_, 1}, "line is " + std::to_string(line.text.size()) +
-                                  " bytes long, more than the limit of " +
-                                  std::to_string(limits_.maxLineBytes) + " bytes");
-            return;
-        }
-        tokenizeLine(line.text, tokens_);
-        if (tokens_.count == 0) return;  // blank or comment
-
+    void parseLine() {
         const std::string_view head = commandText();
         if (!head.starts_with('/')) {
             std::string message = "expected a command starting with '/', got " + quoteToken(head);
@@ -262,6 +297,7 @@ class Parser {
         }
         for (const CommandName& c : kCommands) {
             if (c.name == head) {
+                if (index_) index_->noteCommand(head, sourceLoc(commandPos()));
                 dispatch(c.command);
                 return;
             }
@@ -330,32 +366,22 @@ class Parser {
 
     // Argument readers: on a problem they report it, clear `ok` and return a harmless value.
     double number(int i, bool& ok) {
-        const std::string_view text = arg(i);
-        const ParsedNumber n = parseNumber(text);
-        std::string message;
-        switch (n.status) {
-            case NumberStatus::Ok:
-                return n.value;
-            case NumberStatus::NotANumber:
-                message = "expected a number, got " + quoteToken(text);
-                if (text.find(',') != std::string_view::npos) message += " (the decimal separator is '.')";
-                break;
-            case NumberStatus::Hexadecimal:
-                message =
-                    "expected a decimal number, got " + quoteToken(text) + " (hexadecimal is not accepted)";
-                break;
-            case NumberStatus::NotFinite:
-                message = "expected a finite number, got " + quoteToken(text);
-                break;
-            case NumberStatus::OutOfRange: {
-                const bool tiny =
-                    text.find("e-") != std::string_view::npos || text.find("E-") != std::string_view::npos;
-                message = "number " + quoteToken(text) + " is out of range" +
-                          (tiny ? " (too close to zero; write 0)" : " (the largest magnitude is 3.4e38)");
-                break;
-            }
+        const LogicalToken& token = argToken(i);
+        if (token.form == TokenForm::Failed) {
+            ok = false;
+            return 0;
         }
-        error(argPos(i), noteCharacters(std::move(message), text, argPos(i)));
+        if (token.form == TokenForm::Expression) {
+            // Scene values are single precision, as for a number written out (SPEC 7).
+            if (std::fabs(token.value) <= kMaxNumberMagnitude) return token.value;
+            error(argPos(i), "the value " + std::string(token.text) +
+                                 " of the expression is out of range (the largest magnitude is 3.4e38)");
+            ok = false;
+            return 0;
+        }
+        const ParsedNumber n = parseNumber(token.text);
+        if (n.status == NumberStatus::Ok) return n.value;
+        error(argPos(i), noteCharacters(numberErrorMessage(token.text, n.status), token.text, argPos(i)));
         ok = false;
         return 0;
     }
@@ -388,7 +414,9 @@ class Parser {
     /// A whole number in [lo, hi]; "1e3" and "-0" count as whole.
     int whole(int i, std::string_view what, int lo, int hi, bool& ok) {
         bool good = true;
-        const double v = number(i, good);
+        double v = number(i, good);
+        // SPEC 9.4: an expression within 1e-6 of a whole number gives that number.
+        if (good && argToken(i).form == TokenForm::Expression) v = nearWhole(v).value_or(v);
         if (good && (v != std::floor(v) || v < lo || v > hi)) {
             error(argPos(i), std::string(what) + " must be a whole number from " + std::to_string(lo) +
                                  " to " + std::to_string(hi) + ", got " + printable(arg(i)));
@@ -419,6 +447,7 @@ class Parser {
 
     /// A name for a new object: valid and not yet used.
     bool newName(int i) {
+        if (failed(i)) return false;
         const std::string_view name = arg(i);
         if (!isValidName(name)) {
             error(argPos(i), noteCharacters("invalid name " + quoteToken(name) +
@@ -450,6 +479,7 @@ class Parser {
             error(pos, std::move(message));
             return std::nullopt;
         }
+        if (index_) index_->uses.push_back({it->second, span(pos, name), std::string(commandText())});
         return it->second;
     }
 
@@ -486,15 +516,18 @@ class Parser {
 
     /// Resolves `name` or `name.part` in argument i.
     std::optional<Target> target(int i) {
+        if (failed(i)) return std::nullopt;
         const std::string_view text = arg(i);
         const Pos pos = argPos(i);
         const std::size_t dot = text.find('.');
         const std::optional<std::size_t> object = existing(text.substr(0, dot), text, pos);
         if (!object) return std::nullopt;
         if (dot == std::string_view::npos) return Target{*object, -1};
-        // Point at the part itself, just after the dot.
-        const std::optional<int> part =
-            partOf(*object, text.substr(dot + 1), {pos.line, pos.column + static_cast<int>(dot) + 1});
+        // Point at the part itself, just after the dot (of the token as written: "r{i}.head").
+        const std::size_t writtenDot = argToken(i).written.find('.');
+        Pos partPos = pos;
+        partPos.column += static_cast<int>(writtenDot == std::string_view::npos ? dot : writtenDot) + 1;
+        const std::optional<int> part = partOf(*object, text.substr(dot + 1), partPos);
         if (!part) return std::nullopt;
         return Target{*object, *part};
     }
@@ -646,6 +679,7 @@ class Parser {
     void addObject(SceneObject object) {
         object.name = std::string(arg(0));
         names_.emplace(object.name, scene_.objects.size());
+        if (index_) index_->objects.push_back({object, span(argPos(0), arg(0)), sourceLoc(commandPos())});
         books_.push_back({argPos(0), {-1, -1, -1, -1, -1}, {}});
         scene_.objects.push_back(std::move(object));
     }
@@ -835,17 +869,39 @@ class Parser {
         }
     }
 
+    // Symbol index (optional output)
+    SourceLoc sourceLoc(Pos pos) const { return {expander_.fileName(pos.file), pos.line, pos.column}; }
+    /// The name at `pos` as written: `r{i}` for the name r3 (up to a '.' outside braces).
+    TokenSpan span(Pos pos, std::string_view name) const {
+        int length = static_cast<int>(name.size());
+        for (int k = 0; k < std::min(tokens_.count, kMaxStoredTokens); ++k) {
+            const LogicalToken& t = tokens_.tokens[static_cast<std::size_t>(k)];
+            if (t.column != pos.column || t.written == t.text) continue;
+            int depth = 0;
+            length = static_cast<int>(t.written.size());
+            for (std::size_t i = 0; i < t.written.size(); ++i) {
+                depth += t.written[i] == '{' ? 1 : t.written[i] == '}' ? -1 : 0;
+                if (t.written[i] == '.' && depth == 0) {
+                    length = static_cast<int>(i);
+                    break;
+                }
+            }
+        }
+        return {sourceLoc(pos), length};
+    }
+
     std::string_view fileName_;
     ParseLimits limits_;
+    SymbolIndex* index_ = nullptr;
+    SourceExpander expander_;
     SceneDesc scene_;
     std::vector<Diagnostic> diagnostics_;
+    std::vector<Pos> order_;  ///< parallel to diagnostics_: where each was found
     std::size_t errors_ = 0, warnings_ = 0, droppedWarnings_ = 0;
     Pos firstDroppedWarning_;
     bool stopped_ = false;
 
-    int line_ = 0;
-    std::string_view lineText_;
-    LineTokens tokens_;
+    LogicalLine tokens_;
     std::size_t nameSuggestWork_ = 0;
 
     std::unordered_map<std::string, std::size_t, StringHash, std::equal_to<>> names_;
@@ -858,6 +914,7 @@ class Parser {
 ParseResult readError(const std::string& displayName, std::string message) {
     ParseResult result;
     result.diagnostics.push_back({{displayName, 1, 1}, Severity::Error, std::move(message)});
+    result.files.push_back(displayName);
     return result;
 }
 
@@ -887,7 +944,21 @@ bool readStream(std::FILE* f, std::size_t limit, std::string& out, std::string& 
 }  // namespace
 
 ParseResult parseScene(std::string_view text, std::string_view fileName, const ParseLimits& limits) {
-    return Parser(fileName, limits).run(text);
+    return Parser(fileName, limits, nullptr).run(text);
+}
+
+ParseResult parseScene(std::string_view text, std::string_view fileName, const ParseLimits& limits,
+                       SymbolIndex& index) {
+    index.clear();
+    return Parser(fileName, limits, &index).run(text);
+}
+
+std::vector<std::string_view> commandNames() {
+    std::vector<std::string_view> names;
+    for (const CommandName& c : kCommands) names.push_back(c.name);
+    // Run by the SourceExpander before a line reaches the command table.
+    for (std::string_view c : {"/let", "/repeat", "/end", "/include"}) names.push_back(c);
+    return names;
 }
 
 ParseResult parseScene(std::string_view text, std::string_view fileName) {
@@ -905,29 +976,11 @@ ParseResult parseSceneFile(const std::string& path, const ParseLimits& limits) {
         return parseScene(text, name, limits);
     }
 
-    const std::string prefix = "cannot read " + quotePath(path) + ": ";
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    const fs::file_status status = fs::status(path, ec);
-    if (status.type() == fs::file_type::not_found) return readError(path, prefix + std::strerror(ENOENT));
-    if (ec) return readError(path, prefix + ec.message());
-    if (status.type() == fs::file_type::directory) return readError(path, prefix + "it is a directory");
-    if (status.type() != fs::file_type::regular) return readError(path, prefix + "it is not a regular file");
-    const std::uintmax_t size = fs::file_size(path, ec);
-    if (!ec && size > limits.maxSceneBytes) {
-        return readError(path, prefix + "the file is " + std::to_string(size) +
-                                   " bytes, more than the limit of " + std::to_string(limits.maxSceneBytes) +
-                                   " bytes");
-    }
-
-    errno = 0;
-    std::FILE* f = std::fopen(path.c_str(), "rb");  // binary: CRLF is handled by the lexer
-    if (!f) return readError(path, prefix + std::strerror(errno != 0 ? errno : EIO));
-    text.reserve(static_cast<std::size_t>(ec ? 0 : size));
-    const bool read = readStream(f, limits.maxSceneBytes, text, problem);
-    std::fclose(f);
-    if (!read) return readError(path, prefix + problem);
-    return parseScene(text, path, limits);
+    // Binary: CRLF is handled by the lexer. A FIFO or a directory is refused
+    // without blocking on it.
+    FileRead file = readSourceFile(path, limits.maxSceneBytes);
+    if (!file.ok) return readError(path, "cannot read " + quotePath(path) + ": " + file.problem);
+    return Parser(path, limits, nullptr).run(file.text, std::pair{file.device, file.inode});
 }
 
 ParseResult parseSceneFile(const std::string& path) { return parseSceneFile(path, ParseLimits{}); }

@@ -2,6 +2,7 @@
 /// The scene language (SPEC 2-7). The parser reports and never exits: the
 /// caller decides what to do with the diagnostics.
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -16,13 +17,22 @@ namespace f2 {
 struct ParseResult {
     /// Set only when there is no error: a scene with an error is never partly used.
     std::optional<SceneDesc> scene;
-    /// Every error and warning, in file order.
+    /// Every error and warning, in reading order (loops and includes expanded).
     std::vector<Diagnostic> diagnostics;
+    /// Every file read or tried, the main one first, then each `/include`d
+    /// one once, as diagnostics name them (the viewer watches them all).
+    std::vector<std::string> files;
+    /// Lines read in all, each loop pass and each include counted again
+    /// (SPEC 9.5), and lines in the files themselves, each file once.
+    std::uint64_t linesRead = 0;
+    std::uint64_t linesInFiles = 0;
 
     bool ok() const { return scene.has_value(); }
 };
 
-/// Parses scene text; `fileName` is used only in diagnostics.
+/// Parses scene text; `fileName` names it in diagnostics, and a relative
+/// `/include` is read from its directory (the current one if it has none, as
+/// for "<stdin>").
 ParseResult parseScene(std::string_view text, std::string_view fileName);
 
 /// Limits that keep a hostile scene from exhausting the machine (SPEC 7, and
@@ -36,7 +46,13 @@ struct ParseLimits {
     std::size_t maxKeyLines = 10'000'000;
     int maxFps = 1000;
     std::size_t maxLineBytes = std::size_t{1} << 20;     ///< 1 MiB
-    std::size_t maxSceneBytes = std::size_t{256} << 20;  ///< 256 MiB
+    std::size_t maxSceneBytes = std::size_t{256} << 20;  ///< 256 MiB, all included files together
+    /// SPEC 9.5: lines read in all after loops and includes are expanded.
+    std::uint64_t maxExpandedLines = 10'000'000;
+    /// Bytes of those lines, so that a loop over long lines stays bounded (choice).
+    std::uint64_t maxExpandedBytes = std::uint64_t{1} << 30;
+    int maxLoopDepth = 64;     ///< SPEC 9.5
+    int maxIncludeDepth = 16;  ///< SPEC 9.5
     /// Parsing stops after this many errors; further warnings are counted, not kept.
     std::size_t maxErrors = 1000;
     std::size_t maxWarnings = 1000;
@@ -44,6 +60,15 @@ struct ParseLimits {
 
 /// parseScene with other limits (tests use small ones).
 ParseResult parseScene(std::string_view text, std::string_view fileName, const ParseLimits& limits);
+
+struct SymbolIndex;
+/// parseScene that also fills `index` (cleared first) with where each name is
+/// created and used, for tools that work on the source (core/parse/symbol_index.h).
+ParseResult parseScene(std::string_view text, std::string_view fileName, const ParseLimits& limits,
+                       SymbolIndex& index);
+
+/// Every command of the language ("/camera", ...), in the parser's table order.
+std::vector<std::string_view> commandNames();
 
 /// Reads and parses a file; "-" reads standard input. A missing, unreadable or
 /// non-regular file gives one error at `FILE:1:1`.

@@ -1,0 +1,120 @@
+#include "editor_dock.h"
+
+#include <QHBoxLayout>
+#include <QInputDialog>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QLineEdit>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+#include "scene_editor.h"
+
+namespace f2::viewer {
+
+EditorDock::EditorDock(QWidget* parent) : QDockWidget(tr("Scene"), parent) {
+    setObjectName("editorDock");
+    auto* content = new QWidget(this);
+    auto* layout = new QVBoxLayout(content);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(0);
+    editor_ = new SceneEditor(content);
+    layout->addWidget(editor_, 1);
+
+    findBar_ = new QWidget(content);
+    auto* findLayout = new QHBoxLayout(findBar_);
+    findLayout->setContentsMargins(4, 2, 4, 2);
+    findField_ = new QLineEdit(findBar_);
+    findField_->setPlaceholderText(tr("Find"));
+    findField_->setClearButtonEnabled(true);
+    findStatus_ = new QLabel(findBar_);
+    auto* previous = new QToolButton(findBar_);
+    previous->setArrowType(Qt::UpArrow);
+    previous->setToolTip(tr("Previous match (Shift+F3)"));
+    auto* next = new QToolButton(findBar_);
+    next->setArrowType(Qt::DownArrow);
+    next->setToolTip(tr("Next match (F3, Enter)"));
+    auto* close = new QToolButton(findBar_);
+    close->setText(QStringLiteral("×"));
+    close->setToolTip(tr("Close (Esc)"));
+    findLayout->addWidget(findField_, 1);
+    findLayout->addWidget(findStatus_);
+    findLayout->addWidget(previous);
+    findLayout->addWidget(next);
+    findLayout->addWidget(close);
+    layout->addWidget(findBar_);
+    findBar_->hide();
+    setWidget(content);
+
+    connect(findField_, &QLineEdit::returnPressed, this, [this] { findNext(false); });
+    connect(previous, &QToolButton::clicked, this, [this] { findNext(true); });
+    connect(next, &QToolButton::clicked, this, [this] { findNext(false); });
+    connect(close, &QToolButton::clicked, this, [this] {
+        findBar_->hide();
+        editor_->setFocus();
+    });
+    auto* escape = new QAction(findBar_);
+    escape->setShortcut(Qt::Key_Escape);
+    escape->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    connect(escape, &QAction::triggered, close, &QToolButton::click);
+    findBar_->addAction(escape);
+
+    settleTimer_.setSingleShot(true);
+    settleTimer_.setInterval(kSettleMs);
+    connect(&settleTimer_, &QTimer::timeout, this, &EditorDock::textSettled);
+    connect(editor_, &QPlainTextEdit::textChanged, this, [this] {
+        if (!loading_) settleTimer_.start();
+    });
+    connect(editor_->document(), &QTextDocument::modificationChanged, this, &EditorDock::modificationChanged);
+}
+
+void EditorDock::setSceneText(const QString& text) {
+    settleTimer_.stop();
+    loading_ = true;
+    if (editor_->toPlainText() != text) editor_->setPlainText(text);
+    loading_ = false;
+    editor_->document()->clearUndoRedoStacks();
+    editor_->document()->setModified(false);
+}
+
+bool EditorDock::isModified() const { return editor_->document()->isModified(); }
+
+void EditorDock::setModified(bool modified) { editor_->document()->setModified(modified); }
+
+void EditorDock::showFind() {
+    show();
+    raise();
+    findBar_->show();
+    const QString selected = editor_->textCursor().selectedText();
+    if (!selected.isEmpty() && !selected.contains(QChar::ParagraphSeparator)) findField_->setText(selected);
+    findField_->setFocus();
+    findField_->selectAll();
+}
+
+bool EditorDock::findNext(bool backward) {
+    const QString what = findField_->text();
+    if (what.isEmpty()) return false;
+    const QTextDocument::FindFlags flags = backward ? QTextDocument::FindBackward : QTextDocument::FindFlags();
+    QTextCursor found = editor_->document()->find(what, editor_->textCursor(), flags);
+    if (found.isNull()) {
+        // Wrap round to the other end.
+        QTextCursor from(editor_->document());
+        if (backward) from.movePosition(QTextCursor::End);
+        found = editor_->document()->find(what, from, flags);
+    }
+    findStatus_->setText(found.isNull() ? tr("not found") : QString());
+    if (found.isNull()) return false;
+    editor_->setTextCursor(found);
+    editor_->centerCursor();
+    return true;
+}
+
+void EditorDock::goToLineDialog() {
+    bool ok = false;
+    const int line = QInputDialog::getInt(this, tr("Go to Line"), tr("Line (1–%1):").arg(editor_->blockCount()),
+                                          editor_->textCursor().blockNumber() + 1, 1, editor_->blockCount(), 1,
+                                          &ok);
+    if (ok) editor_->goTo(line);
+}
+
+}  // namespace f2::viewer

@@ -1,0 +1,468 @@
+#include "core/parse/expression.h"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "core/parse/lexer.h"
+#include "core/parse/number.h"
+
+namespace f2 {
+
+namespace {
+
+constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
+constexpr double kRadiansPerDegree = std::numbers::pi / 180.0;
+/// SPEC 9.4: an integer field takes a value this close to a whole number.
+constexpr double kWholeTolerance = 1e-6;
+
+bool isNameStart(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; }
+bool isDigit(char c) { return c >= '0' && c <= '9'; }
+bool isNameChar(char c) { return isNameStart(c) || isDigit(c); }
+
+// Trigonometry in degrees. The angle is first reduced exactly (fmod is exact),
+// so that the multiples of 90 give exact 0 and ±1: cos(90) is 0, not 6e-17.
+double sinDegrees(double degrees) {
+    const double r = std::fmod(degrees, 360.0);
+    if (r == 0 || r == 180 || r == -180) return 0;
+    if (r == 90 || r == -270) return 1;
+    if (r == 270 || r == -90) return -1;
+    return std::sin(r * kRadiansPerDegree);
+}
+
+double cosDegrees(double degrees) {
+    const double r = std::fmod(degrees, 360.0);
+    if (r == 0) return 1;
+    if (r == 180 || r == -180) return -1;
+    if (r == 90 || r == -90 || r == 270 || r == -270) return 0;
+    return std::cos(r * kRadiansPerDegree);
+}
+
+/// tan of an odd multiple of 90 has no value; the caller reports it.
+std::optional<double> tanDegrees(double degrees) {
+    const double r = std::fmod(degrees, 180.0);
+    if (r == 90 || r == -90) return std::nullopt;
+    if (r == 0) return 0.0;
+    if (r == 45 || r == -135) return 1.0;
+    if (r == -45 || r == 135) return -1.0;
+    return std::tan(r * kRadiansPerDegree);
+}
+
+enum class Function {
+    Sin,
+    Cos,
+    Tan,
+    Asin,
+    Acos,
+    Atan,
+    Atan2,
+    Sqrt,
+    Abs,
+    Floor,
+    Ceil,
+    Exp,
+    Log,
+    Round,
+    Min,
+    Max
+};
+
+struct FunctionInfo {
+    std::string_view name;
+    Function function;
+    int minArgs;
+    int maxArgs;  ///< -1: any number
+};
+
+constexpr std::array<FunctionInfo, 16> kFunctions = {{
+    {"sin", Function::Sin, 1, 1},
+    {"cos", Function::Cos, 1, 1},
+    {"tan", Function::Tan, 1, 1},
+    {"asin", Function::Asin, 1, 1},
+    {"acos", Function::Acos, 1, 1},
+    {"atan", Function::Atan, 1, 1},
+    {"atan2", Function::Atan2, 2, 2},
+    {"sqrt", Function::Sqrt, 1, 1},
+    {"abs", Function::Abs, 1, 1},
+    {"floor", Function::Floor, 1, 1},
+    {"ceil", Function::Ceil, 1, 1},
+    {"exp", Function::Exp, 1, 1},
+    {"log", Function::Log, 1, 1},
+    {"round", Function::Round, 1, 1},
+    {"min", Function::Min, 1, -1},
+    {"max", Function::Max, 1, -1},
+}};
+
+const FunctionInfo* findFunction(std::string_view name) {
+    for (const FunctionInfo& f : kFunctions) {
+        if (f.name == name) return &f;
+    }
+    return nullptr;
+}
+
+/// Recursive descent over
+///   sum     := product (('+' | '-') product)*
+///   product := unary (('*' | '/' | '%') unary)*
+///   unary   := ('-' | '+') unary | power
+///   power   := primary ('^' unary)?          (right-associative, above unary minus)
+///   primary := number | variable | function '(' sum (',' sum)* ')' | '(' sum ')'
+/// The first error wins; after it every function returns 0 and unwinds.
+class ExpressionParser {
+   public:
+    ExpressionParser(std::string_view text, const Variables& variables)
+        : text_(text), variables_(variables) {}
+
+    ExpressionResult whole() {
+        const double v = sum();
+        if (!failed_) {
+            skipSpaces();
+            if (pos_ < text_.size()) unexpected();
+        }
+        return result(v);
+    }
+
+    ExpressionResult parenthesized() {
+        const double v = primary();
+        if (!failed_) {
+            skipSpaces();
+            if (pos_ < text_.size()) {
+                fail(pos_, "unexpected " + quoteToken(text_.substr(pos_, 1)) +
+                               " after the ')' that closes the expression");
+            }
+        }
+        return result(v);
+    }
+
+   private:
+    ExpressionResult result(double v) const {
+        ExpressionResult r;
+        r.ok = !failed_;
+        r.value = failed_ ? 0 : (v == 0 ? 0.0 : v);  // -0 becomes 0, as for numbers
+        r.errorOffset = errorOffset_;
+        r.message = message_;
+        return r;
+    }
+
+    void fail(std::size_t offset, std::string message) {
+        if (failed_) return;
+        failed_ = true;
+        errorOffset_ = offset;
+        message_ = std::move(message);
+    }
+
+    void skipSpaces() {
+        while (pos_ < text_.size() && (text_[pos_] == ' ' || text_[pos_] == '\t')) ++pos_;
+    }
+
+    char peek() {
+        skipSpaces();
+        return pos_ < text_.size() ? text_[pos_] : '\0';
+    }
+
+    /// Reports what stands at pos_ where an operand or operator was expected.
+    void unexpected() {
+        if (pos_ >= text_.size()) {
+            fail(pos_, "the expression ends too early");
+        } else {
+            fail(pos_, "unexpected " + quoteToken(text_.substr(pos_, 1)) + " in the expression");
+        }
+    }
+
+    /// Guards every recursive step so that "((((…" cannot overflow the stack.
+    bool enter(std::size_t at) {
+        if (++depth_ > kMaxExpressionDepth) {
+            fail(at, "the expression is nested more than " + std::to_string(kMaxExpressionDepth) +
+                         " levels deep");
+            return false;
+        }
+        return true;
+    }
+
+    /// A finite result, or an error at the operator or function at `at`.
+    double checked(double v, std::size_t at, std::string_view what) {
+        if (!failed_ && !std::isfinite(v)) {
+            fail(at, "the result of " + std::string(what) + " is not finite");
+            return 0;
+        }
+        return v;
+    }
+
+    /// Takes the ')' that closes the '(' at `open`, or reports what stands there.
+    bool close(std::size_t open) {
+        if (peek() == ')') {
+            ++pos_;
+            return true;
+        }
+        if (pos_ >= text_.size()) {
+            fail(open, "this '(' has no matching ')'");
+        } else {
+            unexpected();
+        }
+        return false;
+    }
+
+    double sum() {
+        double v = product();
+        while (!failed_) {
+            const char op = peek();
+            if (op != '+' && op != '-') break;
+            const std::size_t at = pos_++;
+            const double rhs = product();
+            v = checked(op == '+' ? v + rhs : v - rhs, at, op == '+' ? "'+'" : "'-'");
+        }
+        return v;
+    }
+
+    double product() {
+        double v = unary();
+        while (!failed_) {
+            const char op = peek();
+            if (op != '*' && op != '/' && op != '%') break;
+            const std::size_t at = pos_++;
+            const double rhs = unary();
+            if (failed_) break;
+            if (op == '*') {
+                v = checked(v * rhs, at, "'*'");
+            } else if (rhs == 0) {
+                fail(at, op == '/' ? "division by zero" : "remainder of a division by zero");
+            } else if (op == '/') {
+                v = checked(v / rhs, at, "'/'");
+            } else {
+                // The remainder takes the sign of the divisor: 7 % -3 = -2, -7 % 3 = 2.
+                double r = std::fmod(v, rhs);
+                if (r != 0 && ((r < 0) != (rhs < 0))) r += rhs;
+                v = r;
+            }
+        }
+        return v;
+    }
+
+    double unary() {
+        const char c = peek();
+        if (c != '-' && c != '+') return power();
+        const std::size_t at = pos_++;
+        if (!enter(at)) return 0;
+        const double v = unary();
+        --depth_;
+        return c == '-' ? -v : v;
+    }
+
+    double power() {
+        const double base = primary();
+        if (failed_ || peek() != '^') return base;
+        const std::size_t at = pos_++;
+        if (!enter(at)) return 0;
+        const double exponent = unary();  // 2^-1 and 2^3^2 = 2^9
+        --depth_;
+        if (failed_) return 0;
+        if (base == 0 && exponent < 0) {
+            fail(at, "division by zero (0 to a negative power)");
+            return 0;
+        }
+        if (base < 0 && exponent != std::floor(exponent)) {
+            fail(at, "a negative number to a fractional power is undefined");
+            return 0;
+        }
+        return checked(std::pow(base, exponent), at, "'^'");
+    }
+
+    double primary() {
+        const char c = peek();
+        const std::size_t at = pos_;
+        if (c == '(') {
+            ++pos_;
+            if (!enter(at)) return 0;
+            const double v = sum();
+            --depth_;
+            if (failed_ || !close(at)) return 0;
+            return v;
+        }
+        if (isDigit(c) || c == '.') return number();
+        if (isNameStart(c)) return name();
+        unexpected();
+        return 0;
+    }
+
+    double number() {
+        const std::size_t start = pos_;
+        while (pos_ < text_.size() && (isDigit(text_[pos_]) || text_[pos_] == '.')) ++pos_;
+        // An exponent only if digits follow: "2e" stays "2" then the name "e".
+        if (pos_ < text_.size() && (text_[pos_] == 'e' || text_[pos_] == 'E')) {
+            std::size_t p = pos_ + 1;
+            if (p < text_.size() && (text_[p] == '+' || text_[p] == '-')) ++p;
+            if (p < text_.size() && isDigit(text_[p])) {
+                pos_ = p;
+                while (pos_ < text_.size() && isDigit(text_[pos_])) ++pos_;
+            }
+        }
+        const std::string_view token = text_.substr(start, pos_ - start);
+        const ParsedNumber n = parseNumber(token);
+        if (n.status == NumberStatus::OutOfRange) {
+            fail(start, "number " + quoteToken(token) + " is out of range");
+        } else if (n.status != NumberStatus::Ok) {
+            fail(start, "invalid number " + quoteToken(token));
+        }
+        return n.value;
+    }
+
+    double name() {
+        const std::size_t start = pos_;
+        while (pos_ < text_.size() && isNameChar(text_[pos_])) ++pos_;
+        const std::string_view word = text_.substr(start, pos_ - start);
+        const FunctionInfo* function = findFunction(word);
+        if (peek() == '(') {
+            if (!function) {
+                fail(start, "unknown function " + quoteToken(word));
+                return 0;
+            }
+            return call(*function, start);
+        }
+        if (const std::optional<double> v = variables_.find(word)) return *v;
+        if (function) {
+            fail(start, quoteToken(word) + " is a function: write " + std::string(word) + "(...)");
+        } else {
+            fail(start, "unknown variable " + quoteToken(word));
+        }
+        return 0;
+    }
+
+    double call(const FunctionInfo& f, std::size_t at) {
+        const std::size_t open = pos_++;  // the '('
+        if (!enter(open)) return 0;
+        std::vector<double> args;
+        if (peek() != ')') {
+            for (;;) {
+                args.push_back(sum());
+                if (failed_) return 0;
+                if (peek() != ',') break;
+                ++pos_;
+            }
+        }
+        --depth_;
+        if (!close(open)) return 0;
+        const int n = static_cast<int>(args.size());
+        if (n < f.minArgs || (f.maxArgs >= 0 && n > f.maxArgs)) {
+            std::string count =
+                f.maxArgs < 0 ? "at least " + std::to_string(f.minArgs) : std::to_string(f.minArgs);
+            const bool plural = f.minArgs != 1;
+            fail(at, quoteToken(f.name) + " takes " + count + (plural ? " arguments" : " argument") +
+                         ", got " + std::to_string(n));
+            return 0;
+        }
+        return apply(f, args, at);
+    }
+
+    double apply(const FunctionInfo& f, const std::vector<double>& args, std::size_t at) {
+        const double x = args[0];
+        const std::string call = std::string(f.name) + "(" + formatNumber(x) + ")";
+        switch (f.function) {
+            case Function::Sin:
+                return sinDegrees(x);
+            case Function::Cos:
+                return cosDegrees(x);
+            case Function::Tan: {
+                const std::optional<double> t = tanDegrees(x);
+                if (!t) fail(at, call + " is undefined (an odd multiple of 90 degrees)");
+                return t.value_or(0);
+            }
+            case Function::Asin:
+            case Function::Acos:
+                if (x < -1 || x > 1) {
+                    fail(at, call + " is undefined (the argument must be from -1 to 1)");
+                    return 0;
+                }
+                return (f.function == Function::Asin ? std::asin(x) : std::acos(x)) * kDegreesPerRadian;
+            case Function::Atan:
+                return std::atan(x) * kDegreesPerRadian;
+            case Function::Atan2:
+                return std::atan2(x, args[1]) * kDegreesPerRadian;
+            case Function::Sqrt:
+                if (x < 0) {
+                    fail(at, call + " is undefined (a negative number)");
+                    return 0;
+                }
+                return std::sqrt(x);
+            case Function::Abs:
+                return std::fabs(x);
+            case Function::Floor:
+                return std::floor(x);
+            case Function::Ceil:
+                return std::ceil(x);
+            case Function::Exp:
+                return checked(std::exp(x), at, call);
+            case Function::Log:
+                if (x <= 0) {
+                    fail(at, call + " is undefined (the argument must be > 0)");
+                    return 0;
+                }
+                return std::log(x);
+            case Function::Round:
+                return std::round(x);  // halves away from zero
+            case Function::Min:
+            case Function::Max: {
+                double best = x;
+                for (double a : args)
+                    best = f.function == Function::Min ? std::min(best, a) : std::max(best, a);
+                return best;
+            }
+        }
+        return 0;
+    }
+
+    std::string_view text_;
+    const Variables& variables_;
+    std::size_t pos_ = 0;
+    int depth_ = 0;
+    bool failed_ = false;
+    std::size_t errorOffset_ = 0;
+    std::string message_;
+};
+
+}  // namespace
+
+Variables::Variables() { values_.emplace("pi", std::numbers::pi); }
+
+std::optional<double> Variables::find(std::string_view name) const {
+    if (auto it = values_.find(name); it != values_.end()) return it->second;
+    return std::nullopt;
+}
+
+void Variables::set(std::string_view name, double value) {
+    if (auto it = values_.find(name); it != values_.end()) {
+        it->second = value;
+    } else {
+        values_.emplace(std::string(name), value);
+    }
+}
+
+void Variables::erase(std::string_view name) {
+    if (auto it = values_.find(name); it != values_.end()) values_.erase(it);
+}
+
+bool Variables::isPredefined(std::string_view name) { return name == "pi"; }
+
+ExpressionResult evaluateExpression(std::string_view text, const Variables& variables) {
+    return ExpressionParser(text, variables).whole();
+}
+
+ExpressionResult evaluateParenthesized(std::string_view text, const Variables& variables) {
+    return ExpressionParser(text, variables).parenthesized();
+}
+
+std::optional<double> nearWhole(double value) {
+    const double whole = std::round(value);
+    if (std::fabs(value - whole) <= kWholeTolerance) return whole == 0 ? 0.0 : whole;
+    return std::nullopt;
+}
+
+std::string formatNumber(double value) {
+    std::array<char, 32> buffer{};
+    const auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+    if (ec != std::errc()) return "?";
+    return std::string(buffer.data(), end);
+}
+
+}  // namespace f2

@@ -1,0 +1,61 @@
+#pragma once
+/// Arithmetic expressions of the scene language (SPEC 9.4): `( … )` wherever a
+/// number is expected and `{ … }` inside names, over numbers, variables, the
+/// operators + - * / % ^ and a few functions of degrees.
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+
+namespace f2 {
+
+/// Parentheses, unary signs and powers may nest this deep; deeper is an error
+/// rather than a stack overflow **(choice)**.
+inline constexpr int kMaxExpressionDepth = 256;
+
+/// The variables of a scene: `/let` and loop variables, plus `pi`.
+class Variables {
+   public:
+    Variables();
+    /// The value of `name`, or nullopt if it is not defined.
+    std::optional<double> find(std::string_view name) const;
+    /// Defines or redefines `name` (the caller checks isPredefined first).
+    void set(std::string_view name, double value);
+    void erase(std::string_view name);
+    /// `pi` cannot be redefined, by `/let` or as a loop variable.
+    static bool isPredefined(std::string_view name);
+
+   private:
+    struct Hash {
+        using is_transparent = void;
+        std::size_t operator()(std::string_view s) const noexcept { return std::hash<std::string_view>{}(s); }
+    };
+    std::unordered_map<std::string, double, Hash, std::equal_to<>> values_;
+};
+
+/// The value of an expression, or the first problem in it and where it is.
+struct ExpressionResult {
+    bool ok = false;
+    double value = 0;
+    std::size_t errorOffset = 0;  ///< byte offset of the problem inside the text
+    std::string message;
+};
+
+/// Evaluates a whole expression (`i + 1`, the inside of `{ … }`). Every
+/// failure of SPEC 9.4 is an error: unknown variable or function, division by
+/// zero, a result that is not finite, a domain error.
+ExpressionResult evaluateExpression(std::string_view text, const Variables& variables);
+
+/// Evaluates a `( … )` argument: `text` starts with '(' and must end at its
+/// matching ')'.
+ExpressionResult evaluateParenthesized(std::string_view text, const Variables& variables);
+
+/// A whole number within 1e-6 of `value` (SPEC 9.4 integer fields), or nullopt.
+std::optional<double> nearWhole(double value);
+
+/// `value` in the shortest decimal form that reads back as the same double.
+std::string formatNumber(double value);
+
+}  // namespace f2

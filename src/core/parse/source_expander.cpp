@@ -1,0 +1,578 @@
+#include "core/parse/source_expander.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+#include "core/parse/number.h"
+
+namespace f2 {
+
+namespace {
+
+bool isNameStart(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; }
+bool isNameChar(char c) { return isNameStart(c) || (c >= '0' && c <= '9'); }
+
+bool isVariableName(std::string_view s) {
+    if (s.empty() || !isNameStart(s.front())) return false;
+    for (char c : s.substr(1)) {
+        if (!isNameChar(c)) return false;
+    }
+    return true;
+}
+
+/// The first token of a line, cheaply (for the scan that pairs /repeat and /end).
+std::string_view firstWord(std::string_view line) {
+    std::size_t i = 0;
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    std::size_t j = i;
+    while (j < line.size() && line[j] != ' ' && line[j] != '\t' && line[j] != '#') ++j;
+    return line.substr(i, j - i);
+}
+
+/// Number of passes of `/repeat v from to step`: k = 0, 1, … while
+/// from + k·step has not passed `to`. Exact for any count a scene can run;
+/// beyond 2^53 only its size matters (it breaks the line limit).
+double loopPasses(double from, double to, double step) {
+    auto within = [&](double v) { return step > 0 ? v <= to : v >= to; };
+    if (!within(from)) return 0;
+    const double span = std::floor((to - from) / step);
+    if (!(span < 9e15)) return span + 1;
+    double n = span + 1;
+    while (n > 0 && !within(from + (n - 1) * step)) --n;
+    while (within(from + n * step)) ++n;
+    return n;
+}
+
+/// A whole number in decimal digits, never in exponent form ("r{1e3}" is r1000).
+std::string wholeText(double whole) {
+    std::array<char, 400> buffer{};
+    const int n = std::snprintf(buffer.data(), buffer.size(), "%.0f", whole);
+    return std::string(buffer.data(), static_cast<std::size_t>(n > 0 ? n : 0));
+}
+
+}  // namespace
+
+FileRead readSourceFile(const std::string& path, std::size_t maxBytes) {
+    FileRead result;
+    // O_NONBLOCK: opening a FIFO for reading must not wait for a writer.
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) {
+        result.problem = std::strerror(errno);
+        return result;
+    }
+    struct stat st {};
+    if (::fstat(fd, &st) != 0) {
+        result.problem = std::strerror(errno);
+    } else if (S_ISDIR(st.st_mode)) {
+        result.problem = "it is a directory";
+    } else if (!S_ISREG(st.st_mode)) {
+        result.problem = "it is not a regular file";
+    } else if (static_cast<std::uint64_t>(st.st_size) > maxBytes) {
+        result.problem = "the file is " + std::to_string(st.st_size) + " bytes, more than the limit of " +
+                         std::to_string(maxBytes) + " bytes";
+    }
+    if (!result.problem.empty()) {
+        ::close(fd);
+        return result;
+    }
+    result.device = static_cast<std::uint64_t>(st.st_dev);
+    result.inode = static_cast<std::uint64_t>(st.st_ino);
+    result.text.reserve(static_cast<std::size_t>(st.st_size));
+    std::array<char, 1 << 16> buffer;
+    for (;;) {
+        const ssize_t got = ::read(fd, buffer.data(), buffer.size());
+        if (got < 0) {
+            if (errno == EINTR) continue;
+            result.problem = std::strerror(errno);
+            break;
+        }
+        if (got == 0) break;
+        if (result.text.size() + static_cast<std::size_t>(got) > maxBytes) {
+            // The file grew while being read.
+            result.problem = "the file is larger than the limit of " + std::to_string(maxBytes) + " bytes";
+            break;
+        }
+        result.text.append(buffer.data(), static_cast<std::size_t>(got));
+    }
+    ::close(fd);
+    result.ok = result.problem.empty();
+    if (!result.ok) result.text.clear();
+    return result;
+}
+
+/// What one pass of a loop costs at least, and where its /end is: found once
+/// per file, so that a loop that is skipped or run again costs nothing to find.
+struct SourceExpander::LoopInfo {
+    LineReader afterEnd{std::string_view()};  ///< reader state just after the /end line
+    std::uint64_t passLines = 0;  ///< lines every pass reads: the body outside inner loops, and the /end
+    std::uint64_t passBytes = 0;
+};
+
+struct SourceExpander::SourceFile {
+    std::string owned;
+    std::string_view text;
+    std::string directory;  ///< relative includes are read from here ("" = current directory)
+    std::optional<std::pair<std::uint64_t, std::uint64_t>> identity;
+    std::unordered_map<int, LoopInfo> loops;  ///< by the line number of the /repeat
+
+    /// Pairs each /repeat with its /end (a /repeat left open has no entry).
+    void findLoops(std::uint64_t& lineCount) {
+        struct Open {
+            int line;
+            std::uint64_t lines, bytes;
+        };
+        std::vector<Open> open;
+        LineReader reader(text);
+        SourceLine line;
+        while (reader.next(line)) {
+            ++lineCount;
+            const std::string_view word = firstWord(line.text);
+            const std::uint64_t bytes = line.text.size() + 1;
+            if (word == "/end" && !open.empty()) {
+                const Open o = open.back();
+                open.pop_back();
+                loops[o.line] = LoopInfo{reader, o.lines + 1, o.bytes + bytes};
+                continue;
+            }
+            if (!open.empty()) {
+                open.back().lines += 1;
+                open.back().bytes += bytes;
+            }
+            if (word == "/repeat") open.push_back({line.number, 0, 0});
+        }
+    }
+};
+
+struct SourceExpander::FileFrame {
+    const SourceFile* source;
+    LineReader reader;
+    int nameIndex;
+    std::size_t loopBase;  ///< loops open when the file was entered
+};
+
+struct SourceExpander::LoopFrame {
+    std::string variable;
+    std::optional<double> saved;  ///< its value before the loop, restored after /end
+    double from, step;
+    std::uint64_t passes, pass;
+    LineReader bodyStart;
+};
+
+SourceExpander::SourceExpander(const ExpansionLimits& limits, ExpansionSink& sink)
+    : limits_(limits), sink_(sink) {}
+
+SourceExpander::~SourceExpander() = default;
+
+void SourceExpander::start(std::string_view text, std::string name,
+                           std::optional<std::pair<std::uint64_t, std::uint64_t>> identity) {
+    auto source = std::make_unique<SourceFile>();
+    source->text = text;
+    source->directory = std::filesystem::path(name).parent_path().string();
+    source->identity = identity;
+    source->findLoops(linesInFiles_);
+    fileBytes_ += text.size();
+    const int nameIndex = addFile(std::move(name));
+    fileStack_.push_back({source.get(), LineReader(source->text), nameIndex, 0});
+    sources_.push_back(std::move(source));
+}
+
+const std::string& SourceExpander::fileName(int index) const {
+    return names_[static_cast<std::size_t>(index)];
+}
+
+int SourceExpander::addFile(std::string name) {
+    for (std::size_t i = 0; i < names_.size(); ++i) {
+        if (names_[i] == name) return static_cast<int>(i);
+    }
+    names_.push_back(std::move(name));
+    return static_cast<int>(names_.size() - 1);
+}
+
+SourcePos SourceExpander::at(int column) const {
+    return {lineNumber_, column, fileStack_.back().nameIndex, static_cast<std::uint32_t>(linesRead_)};
+}
+
+std::string SourceExpander::loopNote() const {
+    if (loopStack_.empty()) return {};
+    std::string note = " (in /repeat ";
+    for (std::size_t i = 0; i < loopStack_.size(); ++i) {
+        const LoopFrame& loop = loopStack_[i];
+        if (i > 0) note += ", ";
+        const double value = loop.from + static_cast<double>(loop.pass) * loop.step;
+        note += loop.variable + " = " + formatNumber(value == 0 ? 0.0 : value);
+    }
+    note += ')';
+    return note;
+}
+
+bool SourceExpander::next(LogicalLine& out) {
+    while (!stopped_ && !fileStack_.empty()) {
+        FileFrame& frame = fileStack_.back();
+        SourceLine line;
+        if (!frame.reader.next(line)) {
+            fileStack_.pop_back();
+            continue;
+        }
+        ++linesRead_;
+        bytesRead_ += line.text.size() + 1;
+        lineNumber_ = line.number;
+        if (linesRead_ > limits_.maxLines) {
+            error(at(1), "more than " + std::to_string(limits_.maxLines) +
+                             " lines read in all (each pass of a loop and each include counts)");
+            stopped_ = true;
+            return false;
+        }
+        if (bytesRead_ > limits_.maxBytes) {
+            error(at(1), "more than " + std::to_string(limits_.maxBytes) +
+                             " bytes read in all (each pass of a loop and each include counts)");
+            stopped_ = true;
+            return false;
+        }
+        if (line.text.size() > limits_.maxLineBytes) {
+            error(at(1), "line is " + std::to_string(line.text.size()) +
+                             " bytes long, more than the limit of " + std::to_string(limits_.maxLineBytes) +
+                             " bytes");
+            continue;
+        }
+        tokenize(line.text, out);
+        if (out.count == 0) continue;  // blank or comment
+        const std::string_view command = out.tokens[0].text;
+        if (command == "/let") {
+            evaluateTokens(out, 2);
+            runLet(out);
+        } else if (command == "/repeat") {
+            evaluateTokens(out, 2);
+            runRepeat(out, line.number);
+        } else if (command == "/end") {
+            runEnd(out);
+        } else if (command == "/include") {
+            runInclude(line.text, out);
+        } else {
+            evaluateTokens(out, 1);
+            return true;
+        }
+    }
+    return false;
+}
+
+void SourceExpander::tokenize(std::string_view text, LogicalLine& out) {
+    LineTokens tokens;
+    tokenizeLine(text, tokens);
+    out.count = tokens.count;
+    const int stored = std::min(tokens.count, kMaxStoredTokens);
+    for (int i = 0; i < stored; ++i) {
+        const Token& t = tokens.tokens[static_cast<std::size_t>(i)];
+        out.tokens[static_cast<std::size_t>(i)] = {t.text, t.text, t.column, TokenForm::Word, 0};
+    }
+    out.pos = at(1);
+    out.raw = text;
+}
+
+bool SourceExpander::evaluateTokens(LogicalLine& line, int first) {
+    storage_.clear();
+    struct Replaced {
+        std::size_t token, offset, length;
+    };
+    std::array<Replaced, kMaxStoredTokens> replaced{};
+    std::size_t replacedCount = 0;
+    bool ok = true;
+    const int stored = std::min(line.count, kMaxStoredTokens);
+    for (int i = first; i < stored; ++i) {
+        LogicalToken& token = line.tokens[static_cast<std::size_t>(i)];
+        const std::size_t offset = storage_.size();
+        if (token.text.starts_with('(')) {
+            const ExpressionResult r = evaluateParenthesized(token.text, variables_);
+            if (!r.ok) {
+                error(at(token.column + static_cast<int>(r.errorOffset)), r.message);
+                token.form = TokenForm::Failed;
+                ok = false;
+                continue;
+            }
+            token.form = TokenForm::Expression;
+            token.value = r.value;
+            storage_ += formatNumber(r.value);
+        } else if (token.text.find('{') != std::string_view::npos) {
+            // Each { … } becomes the whole number its expression gives: r{i+1} -> r3.
+            const std::string_view text = token.text;
+            std::size_t k = 0;
+            while (k < text.size() && token.form != TokenForm::Failed) {
+                if (text[k] != '{') {
+                    storage_ += text[k++];
+                    continue;
+                }
+                int depth = 0;
+                std::size_t close = k;
+                for (; close < text.size(); ++close) {
+                    if (text[close] == '{') ++depth;
+                    if (text[close] == '}' && --depth == 0) break;
+                }
+                const int braceColumn = token.column + static_cast<int>(k);
+                if (close == text.size()) {
+                    error(at(braceColumn), "this '{' has no matching '}'");
+                    token.form = TokenForm::Failed;
+                    break;
+                }
+                const ExpressionResult r = evaluateExpression(text.substr(k + 1, close - k - 1), variables_);
+                if (!r.ok) {
+                    error(at(braceColumn + 1 + static_cast<int>(r.errorOffset)), r.message);
+                    token.form = TokenForm::Failed;
+                    break;
+                }
+                const std::optional<double> whole = nearWhole(r.value);
+                if (!whole) {
+                    error(at(braceColumn),
+                          "'{...}' in a name must give a whole number, got " + formatNumber(r.value));
+                    token.form = TokenForm::Failed;
+                    break;
+                }
+                storage_ += wholeText(*whole);
+                k = close + 1;
+            }
+            if (token.form == TokenForm::Failed) {
+                storage_.resize(offset);
+                ok = false;
+                continue;
+            }
+        } else {
+            continue;
+        }
+        replaced[replacedCount++] = {static_cast<std::size_t>(i), offset, storage_.size() - offset};
+    }
+    // Views are taken only now: appending may have moved the storage.
+    for (std::size_t r = 0; r < replacedCount; ++r) {
+        line.tokens[replaced[r].token].text =
+            std::string_view(storage_).substr(replaced[r].offset, replaced[r].length);
+    }
+    return ok;
+}
+
+std::optional<double> SourceExpander::numberArgument(const LogicalLine& line, int i, bool& ok) {
+    const LogicalToken& token = line.tokens[static_cast<std::size_t>(i)];
+    if (token.form == TokenForm::Failed) {
+        ok = false;
+        return std::nullopt;
+    }
+    if (token.form == TokenForm::Expression) return token.value;
+    const ParsedNumber n = parseNumber(token.text);
+    if (n.status != NumberStatus::Ok) {
+        error(at(token.column), numberErrorMessage(token.text, n.status));
+        ok = false;
+        return std::nullopt;
+    }
+    return n.value;
+}
+
+bool SourceExpander::variableName(const LogicalToken& name, std::string_view cannotBe) {
+    if (!isVariableName(name.text)) {
+        error(at(name.column), "invalid variable name " + quoteToken(name.text) +
+                                   " (expected a letter or '_', then letters, digits or '_')");
+        return false;
+    }
+    if (Variables::isPredefined(name.text)) {
+        error(at(name.column),
+              quoteToken(name.text) + " is predefined and cannot be " + std::string(cannotBe));
+        return false;
+    }
+    return true;
+}
+
+void SourceExpander::runLet(const LogicalLine& line) {
+    if (line.count != 3) {
+        error(at(line.tokens[0].column),
+              "'/let' takes 2 arguments (a variable and a number), got " + std::to_string(line.count - 1));
+        return;
+    }
+    const LogicalToken& name = line.tokens[1];
+    bool ok = variableName(name, "redefined");
+    const std::optional<double> value = numberArgument(line, 2, ok);
+    if (ok && value) variables_.set(name.text, *value);
+}
+
+void SourceExpander::skipLoop(const LoopInfo& info) { fileStack_.back().reader = info.afterEnd; }
+
+void SourceExpander::runRepeat(const LogicalLine& line, int lineNumber) {
+    FileFrame& frame = fileStack_.back();
+    const SourcePos commandPos = at(line.tokens[0].column);
+    const auto found = frame.source->loops.find(lineNumber);
+    if (found == frame.source->loops.end()) {
+        // The rest of the file is not read: it would only add follow-on errors.
+        error(commandPos, "'/repeat' without '/end' in the same file");
+        frame.reader = LineReader(std::string_view());
+        return;
+    }
+    const LoopInfo& info = found->second;
+    if (line.count != 4 && line.count != 5) {
+        error(commandPos,
+              "'/repeat' takes 3 or 4 arguments (a variable, from, to and an optional step), got " +
+                  std::to_string(line.count - 1));
+        return skipLoop(info);
+    }
+    const LogicalToken& name = line.tokens[1];
+    bool ok = variableName(name, "a loop variable");
+    const std::optional<double> from = numberArgument(line, 2, ok);
+    const std::optional<double> to = numberArgument(line, 3, ok);
+    std::optional<double> step = 1.0;
+    if (line.count == 5) {
+        step = numberArgument(line, 4, ok);
+        if (step && *step == 0) {
+            error(at(line.tokens[4].column), "the step of '/repeat' must not be 0");
+            ok = false;
+        }
+    }
+    if (!ok) return skipLoop(info);
+    if (loopStack_.size() >= static_cast<std::size_t>(limits_.maxLoopDepth)) {
+        error(commandPos, "loops are nested more than " + std::to_string(limits_.maxLoopDepth) + " deep");
+        return skipLoop(info);
+    }
+    const double passes = loopPasses(*from, *to, *step);
+    if (passes == 0) return skipLoop(info);
+    // The limits are checked before the first pass: every pass reads at least
+    // its own lines, so a loop that cannot fit fails now, not after an hour.
+    const double lines = passes * static_cast<double>(info.passLines);
+    const double bytes = passes * static_cast<double>(info.passBytes);
+    // Reading stops there, as when the limit is reached line by line.
+    if (static_cast<double>(linesRead_) + lines > static_cast<double>(limits_.maxLines)) {
+        error(commandPos, "this loop would read at least " + wholeText(lines) + " lines (" +
+                              wholeText(passes) + " passes) after " + std::to_string(linesRead_) +
+                              ", more than the limit of " + std::to_string(limits_.maxLines) +
+                              " lines read in all");
+        stopped_ = true;
+        return;
+    }
+    if (static_cast<double>(bytesRead_) + bytes > static_cast<double>(limits_.maxBytes)) {
+        error(commandPos, "this loop would read at least " + wholeText(bytes) + " bytes (" +
+                              wholeText(passes) + " passes) after " + std::to_string(bytesRead_) +
+                              ", more than the limit of " + std::to_string(limits_.maxBytes) +
+                              " bytes read in all");
+        stopped_ = true;
+        return;
+    }
+    loopStack_.push_back({std::string(name.text), variables_.find(name.text), *from, *step,
+                          static_cast<std::uint64_t>(passes), 0, frame.reader});
+    variables_.set(name.text, *from);
+}
+
+void SourceExpander::runEnd(const LogicalLine& line) {
+    FileFrame& frame = fileStack_.back();
+    if (loopStack_.size() == frame.loopBase) {
+        error(at(line.tokens[0].column), "'/end' without '/repeat'");
+        return;
+    }
+    if (line.count > 1) error(at(line.tokens[1].column), "'/end' takes no arguments");
+    LoopFrame& loop = loopStack_.back();
+    if (++loop.pass < loop.passes) {
+        const double value = loop.from + static_cast<double>(loop.pass) * loop.step;
+        variables_.set(loop.variable, value == 0 ? 0.0 : value);
+        frame.reader = loop.bodyStart;
+        return;
+    }
+    if (loop.saved) {
+        variables_.set(loop.variable, *loop.saved);
+    } else {
+        variables_.erase(loop.variable);
+    }
+    loopStack_.pop_back();
+}
+
+void SourceExpander::runInclude(std::string_view raw, const LogicalLine& line) {
+    const SourcePos commandPos = at(line.tokens[0].column);
+    // The path: a text in double quotes (kept as written, spaces and '#'
+    // included), or one argument.
+    std::size_t i = static_cast<std::size_t>(line.tokens[0].column - 1) + line.tokens[0].text.size();
+    while (i < raw.size() && (raw[i] == ' ' || raw[i] == '\t')) ++i;
+    std::string path;
+    int pathColumn = static_cast<int>(i) + 1;
+    if (i < raw.size() && raw[i] == '"') {
+        const std::size_t close = raw.find('"', i + 1);
+        if (close == std::string_view::npos) {
+            error(at(pathColumn), "this '\"' has no closing '\"'");
+            return;
+        }
+        path = std::string(raw.substr(i + 1, close - i - 1));
+        std::size_t j = close + 1;
+        while (j < raw.size() && (raw[j] == ' ' || raw[j] == '\t')) ++j;
+        if (j < raw.size() && raw[j] != '#') {
+            error(at(static_cast<int>(j) + 1), "unexpected text after the quoted path of '/include'");
+            return;
+        }
+        if (path.empty()) {
+            error(at(pathColumn), "empty path in '/include'");
+            return;
+        }
+    } else {
+        if (line.count != 2) {
+            error(commandPos,
+                  "'/include' takes 1 argument (a path, in double quotes if it has spaces), got " +
+                      std::to_string(line.count - 1));
+            return;
+        }
+        LogicalLine substituted = line;
+        if (!evaluateTokens(substituted, 1)) return;
+        path = std::string(substituted.tokens[1].text);
+        pathColumn = line.tokens[1].column;
+    }
+    const SourcePos pathPos = at(pathColumn);
+    if (fileStack_.size() > static_cast<std::size_t>(limits_.maxIncludeDepth)) {
+        error(pathPos, "includes are nested more than " + std::to_string(limits_.maxIncludeDepth) + " deep");
+        return;
+    }
+    namespace fs = std::filesystem;
+    const FileFrame& including = fileStack_.back();
+    fs::path resolved(path);
+    if (resolved.is_relative() && !including.source->directory.empty()) {
+        resolved = fs::path(including.source->directory) / resolved;
+    }
+    const int nameIndex = addFile(resolved.lexically_normal().string());
+    const SourceFile* source = loadFile(names_[static_cast<std::size_t>(nameIndex)], pathPos);
+    if (!source) return;
+    for (std::size_t k = 0; k < fileStack_.size(); ++k) {
+        if (fileStack_[k].source->identity != source->identity) continue;
+        std::string chain;
+        for (std::size_t m = k; m < fileStack_.size(); ++m)
+            chain += quotePath(fileName(fileStack_[m].nameIndex)) + " -> ";
+        chain += quotePath(fileName(nameIndex));
+        error(pathPos, "include cycle: " + chain);
+        return;
+    }
+    fileStack_.push_back({source, LineReader(source->text), nameIndex, loopStack_.size()});
+}
+
+const SourceExpander::SourceFile* SourceExpander::loadFile(const std::string& path, SourcePos at) {
+    const std::string prefix = "cannot include " + quotePath(path) + ": ";
+    // A file read before is not read again (a loop may include it a million times).
+    struct stat st {};
+    if (::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode)) {
+        const std::pair<std::uint64_t, std::uint64_t> id{static_cast<std::uint64_t>(st.st_dev),
+                                                         static_cast<std::uint64_t>(st.st_ino)};
+        for (const auto& s : sources_) {
+            if (s->identity == id) return s.get();
+        }
+    }
+    FileRead read = readSourceFile(path, limits_.maxFileBytes - std::min(limits_.maxFileBytes, fileBytes_));
+    if (!read.ok) {
+        if (read.problem.starts_with("the file is")) {
+            read.problem += " (for all the files of the scene together)";
+        }
+        error(at, prefix + read.problem);
+        return nullptr;
+    }
+    auto source = std::make_unique<SourceFile>();
+    source->owned = std::move(read.text);
+    source->text = source->owned;
+    source->directory = std::filesystem::path(path).parent_path().string();
+    source->identity = std::pair{read.device, read.inode};
+    source->findLoops(linesInFiles_);
+    fileBytes_ += source->text.size();
+    sources_.push_back(std::move(source));
+    return sources_.back().get();
+}
+
+}  // namespace f2

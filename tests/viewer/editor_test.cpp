@@ -1,0 +1,466 @@
+// QtTest suite of the viewer's scene editor, on the offscreen platform: live
+// parse and render while typing, problems in the text, saving, autosave and
+// crash recovery, changes on disk, and the editing commands.
+#include <QDir>
+#include <QDockWidget>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTextBlock>
+#include <memory>
+
+#include "autosave.h"
+#include "core/parse/parser.h"
+#include "editor_dock.h"
+#include "image_convert.h"
+#include "main_window.h"
+#include "playback.h"
+#include "render_controller.h"
+#include "scene_document.h"
+#include "scene_editor.h"
+#include "scene_highlighter.h"
+#include "test_support.h"
+#include "viewport_widget.h"
+
+using namespace f2;
+using namespace f2::viewer;
+using namespace f2::viewer::test;
+
+namespace {
+
+using Question = MainWindow::Question;
+
+/// Records the questions a window asks and answers them from a script.
+struct ScriptedAnswers {
+    std::vector<Question> asked;
+    QMessageBox::StandardButton answer = QMessageBox::Cancel;
+
+    MainWindow::Asker asker() {
+        return [this](Question q, const QString&) {
+            asked.push_back(q);
+            return answer;
+        };
+    }
+};
+
+/// Replaces `length` characters at `line`:`column` (1-based) by typing, as a user would.
+void typeOver(SceneEditor* editor, int line, int column, int length, const QString& typed) {
+    editor->goTo(line, column);
+    for (int i = 0; i < length; ++i) QTest::keyClick(editor, Qt::Key_Delete);
+    QTest::keyClicks(editor, typed);
+}
+
+/// The highlighter's format at `pos` of `block` (an invalid one if unformatted).
+QTextCharFormat formatAt(const QTextBlock& block, int pos) {
+    for (const QTextLayout::FormatRange& r : block.layout()->formats())
+        if (pos >= r.start && pos < r.start + r.length) return r.format;
+    return {};
+}
+
+/// A window on `path`, paused at frame `t` with that frame on screen.
+std::unique_ptr<MainWindow> windowOn(const QString& path, double t) {
+    auto w = std::make_unique<MainWindow>();
+    w->resizeForViewport({96, 72});
+    w->show();
+    if (!QTest::qWaitForWindowExposed(w.get())) return nullptr;
+    w->openFile(path);
+    w->playback()->pause();
+    w->playback()->seek(t);
+    if (!waitForShownFrame(*w, t)) return nullptr;
+    return w;
+}
+
+}  // namespace
+
+class EditorTest : public QObject {
+    Q_OBJECT
+   private slots:
+    void initTestCase();
+    void init();
+
+    void editorShowsFileAndHighlights();
+    void typingRendersLive();
+    void errorKeepsImageAndUnderlinesColumn();
+    void saveWritesTextAtomically();
+    void autosaveRestoresAfterCrash();
+    void diskChangeWithUnsavedEditsAsks();
+    void openAndCloseAskAboutUnsavedEdits();
+    void commentFindAndGoToLine();
+    void missingOrBrokenFileShowsItself();
+    void largeSceneTypesSmoothly();
+};
+
+void EditorTest::initTestCase() {
+    QCoreApplication::setOrganizationName("F2StageTest");
+    QCoreApplication::setApplicationName("f2-viewer-editor-test");
+}
+
+void EditorTest::init() {
+    // Each test starts without autosaved copies from an earlier one.
+    QDir(Autosave::directory()).removeRecursively();
+}
+
+void EditorTest::editorShowsFileAndHighlights() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("scene.f2");
+    writeFile(path, kSmallScene);
+    auto w = windowOn(path, 0);
+    QVERIFY(w);
+    QVERIFY(w->editorDock()->isVisible());
+    QCOMPARE(w->editor()->toPlainText(), QString::fromUtf8(kSmallScene));
+    QVERIFY(!w->editorDock()->isModified());
+    QVERIFY(w->windowTitle().startsWith("scene.f2"));
+    QVERIFY(!w->isWindowModified());
+
+    // Each kind of word has its own format.
+    QTextDocument doc;
+    SceneHighlighter highlighter(&doc);
+    doc.setPlainText(
+        "/key 10 r1.head 0 (x*2) 0 0 0 0 ease  # turn\n"
+        "/sphere ball{i} 1 2 3 4\n");
+    highlighter.rehighlight();
+    using Kind = SceneHighlighter::Kind;
+    const QTextBlock key = doc.firstBlock();
+    auto is = [&](const QTextBlock& b, int pos, Kind kind) {
+        return formatAt(b, pos).foreground() == highlighter.format(kind).foreground();
+    };
+    QVERIFY(is(key, 0, Kind::Command));      // /key
+    QVERIFY(is(key, 5, Kind::Number));       // 10
+    QVERIFY(is(key, 8, Kind::Name));         // r1
+    QVERIFY(is(key, 11, Kind::Part));        // head
+    QVERIFY(is(key, 18, Kind::Expression));  // (x*2)
+    QVERIFY(is(key, 34, Kind::Mode));        // ease
+    QVERIFY(is(key, 40, Kind::Comment));     // # turn
+    const QTextBlock sphere = key.next();
+    QVERIFY(is(sphere, 8, Kind::Name));         // ball
+    QVERIFY(is(sphere, 12, Kind::Expression));  // {i}
+}
+
+void EditorTest::typingRendersLive() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("scene.f2");
+    writeFile(path, kSmallScene);
+    auto w = windowOn(path, 5);
+    QVERIFY(w);
+    const QImage before = w->viewport()->image();
+    const auto beforeScene = w->document()->scene();
+
+    // "/background 20 30 40" -> "/background 90 30 40", typed.
+    w->editor()->setFocus();
+    typeOver(w->editor(), 2, 13, 2, "90");
+    QVERIFY(!w->playback()->isPlaying());  // Space and letters type; they are not shortcuts here
+    QTRY_VERIFY_WITH_TIMEOUT(w->document()->scene() != beforeScene, kWaitMs);
+    QCOMPARE(int(w->document()->scene()->background.r), 90);
+    QVERIFY(waitForShownFrame(*w, 5));
+    QVERIFY(w->viewport()->image() != before);
+    expectViewportMatchesCore(*w, 5);
+    // The time and the file are untouched; the title says there are edits.
+    QCOMPARE(w->playback()->time(), 5.0);
+    QCOMPARE(readFile(path), QByteArray(kSmallScene));
+    QVERIFY(w->isWindowModified());
+
+    // A space typed in the editor is text, not Play.
+    QTest::keyClick(w->editor(), Qt::Key_Space);
+    QVERIFY(!w->playback()->isPlaying());
+}
+
+void EditorTest::errorKeepsImageAndUnderlinesColumn() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("scene.f2");
+    writeFile(path, kSmallScene);
+    auto w = windowOn(path, 5);
+    QVERIFY(w);
+    const QImage good = w->viewport()->image();
+    const auto goodScene = w->document()->scene();
+
+    // "/amb_light 0.3" -> "/amb_light abc": an error at line 3, column 12.
+    typeOver(w->editor(), 3, 12, 3, "abc");
+    QTRY_VERIFY_WITH_TIMEOUT(w->document()->hasErrors(), kWaitMs);
+    QCOMPARE(w->document()->scene(), goodScene);  // the last good scene keeps playing
+    QVERIFY2(problemsText(*w).contains(path + ":3:12: error:"), qPrintable(problemsText(*w)));
+    QVERIFY(w->diagnosticsDock()->isVisible());
+
+    // Underlined from that column to the end of the word, with the message as tooltip.
+    SceneEditor* editor = w->editor();
+    QCOMPARE(int(editor->problems().size()), 1);
+    const EditorProblem& problem = editor->problems().front();
+    QCOMPARE(problem.line, 3);
+    QCOMPARE(problem.column, 12);
+    const int lineStart = editor->document()->findBlockByNumber(2).position();
+    QCOMPARE(editor->problemRange(problem), std::make_pair(lineStart + 11, 3));
+    QVERIFY(editor->problemAt(lineStart + 12).contains("number"));
+    QVERIFY(editor->problemAt(lineStart + 5).isEmpty());
+    bool underlined = false;
+    for (const QTextEdit::ExtraSelection& s : editor->extraSelections())
+        underlined |= s.format.underlineStyle() == QTextCharFormat::SpellCheckUnderline &&
+                      s.cursor.selectionStart() == lineStart + 11 && s.cursor.selectionEnd() == lineStart + 14;
+    QVERIFY(underlined);
+
+    // A new frame of the same time still shows the last good scene.
+    w->playback()->seek(5.0);
+    w->scheduleFrame();
+    QVERIFY(waitForShownFrame(*w, 5));
+    QCOMPARE(w->viewport()->image(), good);
+
+    // A click on the problem puts the cursor there.
+    editor->goTo(1, 1);
+    QListWidgetItem* item = w->problemsList()->item(0);
+    emit w->problemsList()->itemClicked(item);
+    QCOMPARE(editor->textCursor().blockNumber(), 2);
+    QCOMPARE(editor->textCursor().positionInBlock(), 11);
+
+    // Undoing the typing brings the good scene back and clears the marks.
+    while (editor->document()->isUndoAvailable()) editor->undo();
+    QTRY_VERIFY_WITH_TIMEOUT(!w->document()->hasErrors(), kWaitMs);
+    QVERIFY(editor->problems().empty());
+    QCOMPARE(problemsText(*w), QStringLiteral("No problems."));
+}
+
+void EditorTest::saveWritesTextAtomically() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("scene.f2");
+    writeFile(path, kSmallScene);
+    auto w = windowOn(path, 0);
+    QVERIFY(w);
+    typeOver(w->editor(), 2, 13, 2, "90");
+    QTRY_VERIFY_WITH_TIMEOUT(QFile::exists(Autosave::copyPath(path)), kWaitMs);
+    QVERIFY(w->isWindowModified());
+
+    QVERIFY(w->saveScene());
+    const QByteArray expected = QByteArray(kSmallScene).replace("/background 20", "/background 90");
+    QCOMPARE(readFile(path), expected);
+    QVERIFY(!w->isWindowModified());
+    QVERIFY(!QFile::exists(Autosave::copyPath(path)));  // nothing left to recover
+    QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList{"scene.f2"});
+
+    // The viewer's own write is no change on disk: the text and its undo history stay.
+    QTest::qWait(2 * SceneDocument::kReloadDelayMs);
+    QCOMPARE(w->editor()->toPlainText(), QString::fromUtf8(expected));
+    QVERIFY(w->editor()->document()->isUndoAvailable());
+}
+
+void EditorTest::autosaveRestoresAfterCrash() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("scene.f2");
+    writeFile(path, kSmallScene);
+    QString typed;
+    {
+        auto w = windowOn(path, 0);
+        QVERIFY(w);
+        w->editor()->moveCursor(QTextCursor::End);
+        QTest::keyClicks(w->editor(), "/fps 30");
+        QTest::keyClick(w->editor(), Qt::Key_Return);
+        typed = w->editor()->toPlainText();
+        QTRY_COMPARE_WITH_TIMEOUT(Autosave::read(path).value_or(QString()), typed, kWaitMs);
+        // The window goes away without closing: what a crash leaves behind.
+    }
+    QCOMPARE(readFile(path), QByteArray(kSmallScene));
+    QVERIFY(QFile::exists(Autosave::copyPath(path)));
+
+    ScriptedAnswers answers;
+    answers.answer = QMessageBox::Yes;
+    MainWindow w;
+    w.setAsker(answers.asker());
+    QVERIFY(w.openFile(path));
+    QCOMPARE(answers.asked, std::vector<Question>{Question::RestoreAutosave});
+    QCOMPARE(w.editor()->toPlainText(), typed);
+    QVERIFY(w.isWindowModified());
+    QTRY_COMPARE_WITH_TIMEOUT(w.document()->scene()->fps, 30, kWaitMs);
+    // One undo goes back to the file's text.
+    w.editor()->undo();
+    QCOMPARE(w.editor()->toPlainText(), QString::fromUtf8(kSmallScene));
+
+    // Discarding the edits removes the copy.
+    w.editor()->redo();
+    answers.answer = QMessageBox::Discard;  // discard the edits when opening again
+    QVERIFY(w.openFile(path));
+    QVERIFY(!QFile::exists(Autosave::copyPath(path)));
+    QCOMPARE(w.editor()->toPlainText(), QString::fromUtf8(kSmallScene));
+}
+
+void EditorTest::diskChangeWithUnsavedEditsAsks() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("scene.f2");
+    writeFile(path, kSmallScene);
+    auto w = windowOn(path, 0);
+    QVERIFY(w);
+    ScriptedAnswers answers;
+    w->setAsker(answers.asker());
+
+    // No edits: a change on disk simply reloads.
+    const QByteArray onDisk1 = QByteArray(kSmallScene).append("/fps 12\n");
+    writeFile(path, onDisk1);
+    QTRY_COMPARE_WITH_TIMEOUT(w->editor()->toPlainText(), QString::fromUtf8(onDisk1), kWaitMs);
+    QVERIFY(answers.asked.empty());
+
+    // With edits: ask; "keep mine" keeps them.
+    typeOver(w->editor(), 2, 13, 2, "90");
+    QTRY_VERIFY_WITH_TIMEOUT(w->document()->scene()->background.r == 90, kWaitMs);
+    const QString mine = w->editor()->toPlainText();
+    answers.answer = QMessageBox::No;
+    writeFile(path, QByteArray(kSmallScene).append("/fps 13\n"));
+    QTRY_COMPARE_WITH_TIMEOUT(answers.asked.size(), std::size_t{1}, kWaitMs);
+    QCOMPARE(answers.asked.back(), Question::ReloadChangedFile);
+    QCOMPARE(w->editor()->toPlainText(), mine);
+    QVERIFY(w->isWindowModified());
+
+    // "Load the file" takes the disk's text.
+    answers.answer = QMessageBox::Yes;
+    const QByteArray onDisk3 = QByteArray(kSmallScene).append("/fps 14\n");
+    writeFile(path, onDisk3);
+    QTRY_COMPARE_WITH_TIMEOUT(w->editor()->toPlainText(), QString::fromUtf8(onDisk3), kWaitMs);
+    QCOMPARE(answers.asked.size(), std::size_t{2});
+    QVERIFY(!w->isWindowModified());
+    QTRY_COMPARE_WITH_TIMEOUT(w->document()->scene()->fps, 14, kWaitMs);
+}
+
+void EditorTest::openAndCloseAskAboutUnsavedEdits() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("scene.f2");
+    const QString other = dir.filePath("other.f2");
+    writeFile(path, kSmallScene);
+    writeFile(other, kSmallScene);
+    auto w = windowOn(path, 0);
+    QVERIFY(w);
+    ScriptedAnswers answers;
+    w->setAsker(answers.asker());
+    typeOver(w->editor(), 2, 13, 2, "90");
+
+    answers.answer = QMessageBox::Cancel;
+    QVERIFY(!w->openFile(other));
+    QCOMPARE(w->document()->path(), path);
+    QVERIFY(!w->close());
+    QVERIFY(w->isVisible());
+    QCOMPARE(answers.asked, (std::vector<Question>{Question::SaveChanges, Question::SaveChanges}));
+
+    answers.answer = QMessageBox::Save;
+    QVERIFY(w->openFile(other));
+    QCOMPARE(w->document()->path(), other);
+    QVERIFY(readFile(path).contains("/background 90"));
+
+    answers.asked.clear();
+    QVERIFY(w->close());  // nothing unsaved: no question
+    QVERIFY(answers.asked.empty());
+}
+
+void EditorTest::commentFindAndGoToLine() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("scene.f2");
+    writeFile(path, kSmallScene);
+    auto w = windowOn(path, 0);
+    QVERIFY(w);
+    SceneEditor* editor = w->editor();
+    QTextDocument* doc = editor->document();
+
+    // Lines 2-3 selected: commented in one step, uncommented by the same command.
+    QTextCursor c(doc->findBlockByNumber(1));
+    c.setPosition(doc->findBlockByNumber(2).position() + 3, QTextCursor::KeepAnchor);
+    editor->setTextCursor(c);
+    editor->toggleComment();
+    QCOMPARE(doc->findBlockByNumber(1).text(), QStringLiteral("# /background 20 30 40"));
+    QCOMPARE(doc->findBlockByNumber(2).text(), QStringLiteral("# /amb_light 0.3"));
+    QCOMPARE(doc->findBlockByNumber(3).text(), QStringLiteral("/dir_light 0.8 0.3 -0.5 1"));
+    QTRY_COMPARE_WITH_TIMEOUT(w->document()->scene()->ambient, 0.0f, kWaitMs);
+    editor->undo();
+    QCOMPARE(editor->toPlainText(), QString::fromUtf8(kSmallScene));
+    editor->redo();
+    editor->setTextCursor(c);
+    editor->toggleComment();
+    QCOMPARE(editor->toPlainText(), QString::fromUtf8(kSmallScene));
+
+    // Go to line 6, column 10 (inside "ball"); find the next "ball" from there.
+    editor->goTo(6, 10);
+    QCOMPARE(editor->textCursor().blockNumber(), 5);
+    QCOMPARE(editor->textCursor().positionInBlock(), 9);
+    w->editorDock()->showFind();
+    w->editorDock()->findField()->setText("ball");
+    QVERIFY(w->editorDock()->findNext());
+    QCOMPARE(editor->textCursor().blockNumber(), 6);  // "/key 0 ball"
+    QCOMPARE(editor->textCursor().selectedText(), QStringLiteral("ball"));
+    QVERIFY(w->editorDock()->findNext(true));
+    QCOMPARE(editor->textCursor().blockNumber(), 5);
+    w->editorDock()->findField()->setText("nowhere");
+    QVERIFY(!w->editorDock()->findNext());
+}
+
+void EditorTest::missingOrBrokenFileShowsItself() {
+    QTemporaryDir dir;
+    const QString missing = dir.filePath("missing.f2");
+    MainWindow w;
+    QVERIFY(!w.document()->scene()->objects.empty());  // the default scene
+    w.openFile(missing);
+    QCOMPARE(w.document()->path(), missing);
+    QVERIFY(w.document()->hasErrors());
+    QVERIFY2(problemsText(w).startsWith(missing + ":1:1: error:"), qPrintable(problemsText(w)));
+    QVERIFY(w.document()->scene()->objects.empty());  // an empty stage, not the demo
+    QVERIFY(w.editor()->toPlainText().isEmpty());
+    QVERIFY(w.windowTitle().startsWith("missing.f2"));
+
+    // A broken file: its text in the editor, its errors, an empty stage.
+    const QString broken = dir.filePath("broken.f2");
+    const QByteArray text = QByteArray(kSmallScene).replace("/amb_light 0.3", "/amb_lite 0.3");
+    writeFile(broken, text);
+    w.openFile(broken);
+    QCOMPARE(w.editor()->toPlainText(), QString::fromUtf8(text));
+    QVERIFY(problemsText(w).contains(broken + ":3:1: error:"));
+    QVERIFY(w.document()->scene()->objects.empty());
+
+    // Fixing it in the editor brings the scene.
+    typeOver(w.editor(), 3, 6, 4, "light");
+    QTRY_VERIFY_WITH_TIMEOUT(!w.document()->hasErrors(), kWaitMs);
+    QCOMPARE(w.document()->scene()->objects.size(), std::size_t{2});
+}
+
+void EditorTest::largeSceneTypesSmoothly() {
+    // 10,000 lines: typing must not wait for the parser (it runs on a worker
+    // after a pause) nor for the highlighter (it redoes only the changed line).
+    QTemporaryDir dir;
+    const QString path = dir.filePath("big.f2");
+    QByteArray text = "/camera 96 72 0.6 0 0 -10\n/amb_light 0.3\n/dir_light 0.8 0.3 -0.5 1\n";
+    for (int i = 0; text.count('\n') < 10000; ++i)
+        text += "/sphere s" + QByteArray::number(i) + " 0.2 " + QByteArray::number(i % 100 - 50) + " " +
+                QByteArray::number(i / 100 - 50) + " 60\n";
+    writeFile(path, text);
+    QElapsedTimer parseClock;
+    parseClock.start();
+    QVERIFY(parseScene(text.toStdString(), "big.f2").ok());
+    const double parseMs = double(parseClock.nsecsElapsed()) * 1e-6;
+
+    MainWindow w;
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QElapsedTimer openClock;
+    openClock.start();
+    w.openFile(path);
+    const double openMs = double(openClock.nsecsElapsed()) * 1e-6;
+    w.playback()->pause();
+    w.editor()->goTo(5000, 1);
+
+    // Keystrokes with the event loop turning between them, as when a user types.
+    const QString typed = "# typing in the middle of a big scene ";
+    QElapsedTimer typeClock;
+    typeClock.start();
+    double slowestMs = 0;
+    for (QChar ch : typed) {
+        QElapsedTimer one;
+        one.start();
+        QTest::keyClicks(w.editor(), QString(ch));
+        QCoreApplication::processEvents();
+        slowestMs = std::max(slowestMs, double(one.nsecsElapsed()) * 1e-6);
+    }
+    const double perKeyMs = double(typeClock.nsecsElapsed()) * 1e-6 / double(typed.size());
+    QTRY_VERIFY_WITH_TIMEOUT(!w.document()->isParsing() && w.document()->text() == w.editor()->toPlainText(),
+                             kWaitMs);
+    QVERIFY(!w.document()->hasErrors());
+    QVERIFY(w.editor()->document()->findBlockByNumber(4999).text().startsWith(typed));
+    qInfo("10,000-line scene: parse %.1f ms (worker thread), open %.1f ms, typing %.2f ms per key "
+          "(slowest %.2f ms) with the parse off the GUI thread",
+          parseMs, openMs, perKeyMs, slowestMs);
+}
+
+QTEST_MAIN(EditorTest)
+#include "editor_test.moc"

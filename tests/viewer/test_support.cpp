@@ -1,0 +1,64 @@
+#include "test_support.h"
+
+#include <QCoreApplication>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QListWidget>
+#include <QTest>
+
+#include "core/render/renderer.h"
+#include "image_convert.h"
+#include "main_window.h"
+#include "scene_document.h"
+#include "viewport_widget.h"
+
+namespace f2::viewer::test {
+
+void writeFile(const QString& path, const QByteArray& text) {
+    QFile f(path);
+    QVERIFY2(f.open(QIODevice::WriteOnly | QIODevice::Truncate), qPrintable(path));
+    QCOMPARE(f.write(text), text.size());
+}
+
+QByteArray readFile(const QString& path) {
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+Image coreRender(const SceneDesc& scene, double t, int width, int height) {
+    Renderer renderer;
+    Image image;
+    renderer.render(scene, t, Camera::fromDesc(scene.camera).resized(width, height), image);
+    return image;
+}
+
+bool waitForShownFrame(MainWindow& w, double t) {
+    QElapsedTimer clock;
+    clock.start();
+    while (clock.elapsed() < kWaitMs) {
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+        if (!w.renderController()->hasPendingFrames() && w.shownFrame().serial != 0 &&
+            w.shownFrame().time == t)
+            return true;
+        QTest::qWait(5);
+    }
+    return false;
+}
+
+QString problemsText(MainWindow& w) {
+    QStringList lines;
+    for (int i = 0; i < w.problemsList()->count(); ++i) lines << w.problemsList()->item(i)->text();
+    return lines.join('\n');
+}
+
+void expectViewportMatchesCore(MainWindow& w, double t) {
+    const QImage shown = w.viewport()->image();
+    QVERIFY(!shown.isNull());
+    QCOMPARE(shown.size(), w.viewport()->renderSize());
+    const Image expected = coreRender(*w.document()->scene(), t, shown.width(), shown.height());
+    QVERIFY2(fromQImage(shown) == expected,
+             "viewer image differs from Renderer::render at the same camera/size");
+}
+
+
+}  // namespace f2::viewer::test

@@ -1,0 +1,45 @@
+#pragma once
+// Helpers shared by the viewer's QtTest suites: a tiny scene, file helpers,
+// the core's picture for comparison and waits for the window's frames.
+#include <QByteArray>
+#include <QString>
+
+#include "core/render/image.h"
+#include "core/scene/scene_desc.h"
+
+namespace f2::viewer {
+class MainWindow;
+}
+
+namespace f2::viewer::test {
+
+constexpr int kWaitMs = 10000;  // generous: CI machines are slow and shared
+
+/// A tiny animated scene: a sphere moving right over frames 0..10.
+inline constexpr const char* kSmallScene = R"(/camera 96 72 0.6 0 0 -10
+/background 20 30 40
+/amb_light 0.3
+/dir_light 0.8 0.3 -0.5 1
+/box floor 40 1 40 0 -2 10
+/sphere ball 1.5 -3 0 8
+/key 0 ball
+/key 10 ball 3 0 8 0 0 0
+)";
+
+/// Writes `text` to `path` (a QVERIFY failure if it cannot).
+void writeFile(const QString& path, const QByteArray& text);
+QByteArray readFile(const QString& path);
+
+/// What `f2 render --frame t --size WxH` gives for the scene's own camera.
+Image coreRender(const SceneDesc& scene, double t, int width, int height);
+
+/// Waits until the window shows the latest requested frame and it is frame `t`.
+bool waitForShownFrame(MainWindow& w, double t);
+
+/// The Problems list's lines, one per line.
+QString problemsText(MainWindow& w);
+
+/// The picture on screen is the core's at the same camera and size.
+void expectViewportMatchesCore(MainWindow& w, double t);
+
+}  // namespace f2::viewer::test
