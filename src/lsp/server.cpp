@@ -190,6 +190,8 @@ void Server::dispatchNotification(const std::string& method, const Json& params,
         if (documents_.erase(uri) > 0) {
             out.push_back(notification("textDocument/publishDiagnostics",
                                        {{"uri", uri}, {"diagnostics", Json::array()}}));
+            unpublishOthers(uri, {}, out);
+            publishedOthers_.erase(uri);
         }
     } else if (method == "textDocument/didSave") {
         // An included file may have changed: every open scene is read again.
@@ -215,9 +217,25 @@ void Server::open(std::string uri, std::string text, int version, std::vector<st
     publish(a, out);
 }
 
-void Server::publish(const Analysis& a, std::vector<std::string>& out) const {
+void Server::publish(const Analysis& a, std::vector<std::string>& out) {
+    std::set<std::string> others;
     for (Json& params : publishDiagnostics(a)) {
+        const std::string uri = params["uri"].get<std::string>();
+        if (uri != a.uri) others.insert(uri);
         out.push_back(notification("textDocument/publishDiagnostics", std::move(params)));
+    }
+    unpublishOthers(a.uri, others, out);
+    publishedOthers_[a.uri] = std::move(others);
+}
+
+void Server::unpublishOthers(const std::string& uri, const std::set<std::string>& keep,
+                             std::vector<std::string>& out) {
+    const auto it = publishedOthers_.find(uri);
+    if (it == publishedOthers_.end()) return;
+    // An include fixed or removed: its old errors must not stay on screen.
+    for (const std::string& other : it->second) {
+        if (keep.contains(other)) continue;
+        out.push_back(notification("textDocument/publishDiagnostics", {{"uri", other}, {"diagnostics", Json::array()}}));
     }
 }
 

@@ -4,6 +4,7 @@
 /// and the fuzzer drive it directly.
 #include <functional>
 #include <map>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -36,11 +37,15 @@ class Server {
     void dispatchNotification(const std::string& method, const Json& params, std::vector<std::string>& out);
 
     const Analysis& document(const Json& params) const;
-    void publish(const Analysis& a, std::vector<std::string>& out) const;
+    void publish(const Analysis& a, std::vector<std::string>& out);
+    /// Clears the diagnostics a document published on other files (its includes).
+    void unpublishOthers(const std::string& uri, const std::set<std::string>& keep, std::vector<std::string>& out);
     void open(std::string uri, std::string text, int version, std::vector<std::string>& out);
 
     std::function<void(std::string_view)> log_;
     std::map<std::string, Analysis> documents_;  ///< open documents by URI
+    /// Other files (includes) each open document has published diagnostics on.
+    std::map<std::string, std::set<std::string>> publishedOthers_;
     bool initialized_ = false;
     bool shutdown_ = false;
     bool exited_ = false;

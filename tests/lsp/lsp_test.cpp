@@ -310,6 +310,36 @@ TEST(Includes, DiagnosticsInAnIncludedFileAreItsOwn) {
     fs::remove_all(dir);
 }
 
+TEST(Includes, FixedIncludeErrorsAreClearedOnSave) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("f2_lsp_clear_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    std::ofstream(dir / "part.f2") << "/fps x\n";
+    const std::string mainUri = uriFromPath((dir / "main.f2").string());
+    const std::string partUri = uriFromPath((dir / "part.f2").string());
+    Server server;
+    server.handle(R"({"id":1,"method":"initialize"})");
+    auto diagnosticsOf = [](const std::vector<std::string>& out, const std::string& uri) {
+        Json found;
+        for (const std::string& m : out) {
+            const Json j = Json::parse(m);
+            if (j["params"]["uri"] == uri) found = j["params"]["diagnostics"];
+        }
+        return found;
+    };
+    const auto opened = server.handle(Json({{"method", "textDocument/didOpen"},
+                                            {"params",
+                                             {{"textDocument",
+                                               {{"uri", mainUri}, {"version", 1}, {"text", "/include part.f2\n"}}}}}})
+                                          .dump());
+    EXPECT_EQ(diagnosticsOf(opened, partUri).size(), 1u);
+    std::ofstream(dir / "part.f2") << "/fps 24\n";
+    const auto saved = server.handle(
+        Json({{"method", "textDocument/didSave"}, {"params", {{"textDocument", {{"uri", partUri}}}}}}).dump());
+    EXPECT_EQ(diagnosticsOf(saved, partUri), Json::array());
+    fs::remove_all(dir);
+}
+
 TEST(Completion, OffersTheParsersCommandsAsSnippets) {
     const Analysis a = analysed("/ro\n");
     const Json items = completion(a, {0, 3});
