@@ -25,7 +25,9 @@
 #include "animation_exporter.h"
 #include "autosave.h"
 #include "core/anim/frame_time.h"
+#include "core/render/renderer.h"
 #include "editor_dock.h"
+#include "help_windows.h"
 #include "image_convert.h"
 #include "io/png_writer.h"
 #include "io/sequence_sink.h"
@@ -205,6 +207,13 @@ void MainWindow::createActions() {
     view->addSeparator();
     view->addAction(editorDock_->toggleViewAction());
     view->addAction(diagnosticsDock_->toggleViewAction());
+
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&Keyboard Shortcuts"), this, [this] { showShortcuts(this, menuBar()); });
+    help->addAction(tr("Scene &Language Reference"), QKeySequence::HelpContents, this,
+                    [this] { showLanguageReference(this); });
+    help->addSeparator();
+    help->addAction(tr("&About f2-viewer"), this, [this] { showAbout(this); });
 }
 
 void MainWindow::resizeForViewport(QSize viewportSize) {
@@ -473,16 +482,31 @@ bool MainWindow::refuseSceneFile(const QString& path, const QString& title) {
     return true;
 }
 
+QString MainWindow::outputFolder() const {
+    return document_->path().isEmpty() ? QDir::currentPath() : QFileInfo(document_->path()).absolutePath();
+}
+
+Image MainWindow::frameToSave() const {
+    // Rendered again rather than taken from the screen: the picture on screen
+    // may be a stretched older frame while the window resizes, and its size
+    // follows the docks at 25-100 %. One frame is milliseconds, so the GUI
+    // thread can afford it for a menu command.
+    const QSize size = viewport_->renderSize();
+    Renderer renderer;
+    Image image;
+    renderer.render(*document_->scene(), playback_->time(), viewport_->viewCamera(size), image);
+    return image;
+}
+
 void MainWindow::saveFrame() {
-    if (viewport_->image().isNull()) return;
     const QString stem = exportStem();
     const QString suggested =
         QStringLiteral("%1_frame_%2.png").arg(stem).arg(playback_->frame(), 4, 10, QChar('0'));
-    const QString path =
-        QFileDialog::getSaveFileName(this, tr("Save Frame"), suggested, tr("PNG images (*.png)"));
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save Frame"), QDir(outputFolder()).filePath(suggested),
+                                                      tr("PNG images (*.png)"));
     if (path.isEmpty() || refuseSceneFile(path, tr("Save Frame"))) return;
     std::string error;
-    if (!writePng(fromQImage(viewport_->image()), QFile::encodeName(path).toStdString(), error))
+    if (!writePng(frameToSave(), QFile::encodeName(path).toStdString(), error))
         QMessageBox::warning(this, tr("Save Frame"), QString::fromStdString(error));
     else
         statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
@@ -492,7 +516,7 @@ void MainWindow::exportPngSequence() {
     auto scene = document_->scene();
     if (!scene) return;
     playback_->pause();  // the export gets the CPU
-    const QString dir = QFileDialog::getExistingDirectory(this, tr("Export PNG Sequence to Folder"));
+    const QString dir = QFileDialog::getExistingDirectory(this, tr("Export PNG Sequence to Folder"), outputFolder());
     if (dir.isEmpty()) return;
     const QString stem = exportStem();
     const FramePattern pattern = exportSequencePattern(dir, stem, scene->lastFrame() + 1);
@@ -503,7 +527,7 @@ void MainWindow::exportVideo() {
     auto scene = document_->scene();
     if (!scene) return;
     playback_->pause();
-    QFileDialog dialog(this, tr("Export Video"), exportStem() + ".mp4",
+    QFileDialog dialog(this, tr("Export Video"), QDir(outputFolder()).filePath(exportStem() + ".mp4"),
                        tr("MP4 video (*.mp4);;WebM video (*.webm);;GIF animation (*.gif)"));
     dialog.setAcceptMode(QFileDialog::AcceptSave);
     dialog.setDefaultSuffix("mp4");

@@ -8,6 +8,7 @@
 #include <functional>
 #include <memory>
 
+#include "core/render/image.h"
 #include "render_controller.h"
 
 class QLabel;
@@ -79,6 +80,13 @@ class MainWindow : public QMainWindow {
     QDockWidget* diagnosticsDock() const { return diagnosticsDock_; }
     EditorDock* editorDock() const { return editorDock_; }
     SceneEditor* editor() const;
+    /// The folder the save and export dialogs start in: the scene's (the
+    /// working folder for an untitled scene).
+    QString outputFolder() const;
+    /// The frame *Save Frame* writes: the current time and view, rendered at
+    /// the render size (the scene's /camera size at *Scene Size*, whatever
+    /// the docks take from the window).
+    Image frameToSave() const;
     /// The frame on screen (time, timings, size); serial 0 before the first.
     const FrameInfo& shownFrame() const { return shownFrame_; }
 

@@ -5,6 +5,7 @@
 #include <QElapsedTimer>
 #include <QFile>
 #include <QListWidget>
+#include <QMenuBar>
 #include <QPlainTextEdit>
 #include <QProcess>
 #include <QProgressDialog>
@@ -25,6 +26,7 @@
 #include "scene_editor.h"
 #include "scene_highlighter.h"
 #include "core/parse/parser.h"
+#include "help_windows.h"
 #include "core/render/renderer.h"
 #include "image_convert.h"
 #include "io/png_writer.h"
@@ -54,6 +56,10 @@ class ViewerTest : public QObject {
     void imageConversionRoundTrips();
     void playStepScrubShowsCoreImage();
     void keyboardShortcutsDrivePlayback();
+    void stepAfterPauseMovesOneFrame();
+    void savedFrameSizeIgnoresDocks();
+    void dialogsStartInTheScenesFolder();
+    void helpMenuListsShortcutsAndReference();
     void renderScaleFollowsWindow();
     void dragOrbitsWheelZoomsAndSceneCameraResets();
     void brokenFileShowsErrorsAndKeepsImage();
@@ -226,6 +232,73 @@ void ViewerTest::keyboardShortcutsDrivePlayback() {
     QVERIFY(w.playback()->isPlaying());
     QTest::keyClick(&w, Qt::Key_Space);
     QVERIFY(!w.playback()->isPlaying());
+}
+
+void ViewerTest::stepAfterPauseMovesOneFrame() {
+    // Paused between frames 5 and 6 (frame 5 on screen): Right shows 6, Left 5.
+    MainWindow w;
+    w.openFile(F2_SOURCE_DIR "/scenes/seed_example.f2");
+    w.playback()->play();
+    w.playback()->seek(5.7);
+    w.playback()->pause();
+    QCOMPARE(w.playback()->frame(), 5);
+    w.playback()->step(1);
+    QCOMPARE(w.playback()->time(), 6.0);
+    w.playback()->step(-1);
+    QCOMPARE(w.playback()->time(), 5.0);
+    w.playback()->seek(5.7);
+    w.playback()->step(-1);
+    QCOMPARE(w.playback()->time(), 4.0);
+}
+
+void ViewerTest::savedFrameSizeIgnoresDocks() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("scene.f2");
+    writeFile(path, kSmallScene);
+    MainWindow w;
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    w.openFile(path);
+    w.playback()->pause();
+    w.playback()->seek(4);
+    w.setRenderScale(RenderScale::SceneSize);
+    // Both docks open take room from the picture; the saved frame keeps the /camera size.
+    w.editorDock()->show();
+    w.diagnosticsDock()->show();
+    QCoreApplication::processEvents();
+    QVERIFY(w.viewport()->width() < 800);
+    const Image saved = w.frameToSave();
+    QCOMPARE(saved.width, 96);
+    QCOMPARE(saved.height, 72);
+    QVERIFY(saved == coreRender(*w.document()->scene(), 4, 96, 72));
+    w.setRenderScale(RenderScale::Full);
+    QCOMPARE(QSize(w.frameToSave().width, w.frameToSave().height), w.viewport()->renderSize());
+}
+
+void ViewerTest::dialogsStartInTheScenesFolder() {
+    QTemporaryDir dir;
+    QVERIFY(QDir(dir.path()).mkpath("shots"));
+    const QString path = dir.filePath("shots/scene.f2");
+    writeFile(path, kSmallScene);
+    MainWindow w;
+    QCOMPARE(w.outputFolder(), QDir::currentPath());  // untitled: the working folder
+    w.openFile(path);
+    QCOMPARE(w.outputFolder(), QFileInfo(path).absolutePath());
+}
+
+void ViewerTest::helpMenuListsShortcutsAndReference() {
+    MainWindow w;
+    const QString shortcuts = shortcutList(w.menuBar());
+    for (const char* line : {"File › Save Scene\t", "File › Save Frame as PNG…\tF12", "Playback › Play / Pause\tSpace",
+                             "Edit › Find…\t", "Edit › Comment / Uncomment Lines\t"})
+        QVERIFY2(shortcuts.contains(QString::fromUtf8(line)), qPrintable(shortcuts));
+    QVERIFY(shortcuts.contains(QKeySequence(QKeySequence::Save).toString(QKeySequence::NativeText)));
+    const QString reference = languageReference();
+    QVERIFY(reference.contains("/camera"));
+    QVERIFY(reference.contains("/key"));
+    QStringList menus;
+    for (QAction* a : w.menuBar()->actions()) menus << a->text().remove('&');
+    QCOMPARE(menus.last(), QStringLiteral("Help"));
 }
 
 void ViewerTest::renderScaleFollowsWindow() {
