@@ -20,11 +20,14 @@
 #include <QScreen>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTextBlock>
 #include <QVBoxLayout>
 
 #include "animation_exporter.h"
 #include "autosave.h"
 #include "core/anim/frame_time.h"
+#include "core/anim/frame_builder.h"
+#include "core/render/pick.h"
 #include "core/render/renderer.h"
 #include "editor_dock.h"
 #include "help_windows.h"
@@ -90,7 +93,8 @@ MainWindow::MainWindow(QWidget* parent)
     timeStatus_ = new QLabel(this);
     fpsStatus_ = new QLabel(this);
     sizeStatus_ = new QLabel(this);
-    for (QLabel* label : {frameStatus_, timeStatus_, fpsStatus_, sizeStatus_})
+    selectionStatus_ = new QLabel(this);
+    for (QLabel* label : {selectionStatus_, frameStatus_, timeStatus_, fpsStatus_, sizeStatus_})
         statusBar()->addPermanentWidget(label);
 
     frameTimer_.setSingleShot(true);
@@ -106,6 +110,7 @@ MainWindow::MainWindow(QWidget* parent)
     connect(document_, &SceneDocument::fileChangedOnDisk, this, &MainWindow::onFileChangedOnDisk);
     connect(controller_.get(), &RenderController::frameReady, this, &MainWindow::onFrameReady);
     connect(viewport_, &ViewportWidget::viewChanged, this, &MainWindow::scheduleFrame);
+    connect(viewport_, &ViewportWidget::clicked, this, &MainWindow::selectAt);
     connect(playback_, &Playback::timeChanged, this, [this](double t) {
         timeline_->setTime(t);
         scheduleFrame();
@@ -446,8 +451,57 @@ void MainWindow::requestFrame() {
 void MainWindow::onFrameReady(const QImage& image, const FrameInfo& info) {
     shownFrame_ = info;
     viewport_->setImage(image);
+    updateSelectionView();
     updateStatus();
 }
+
+void MainWindow::selectAt(QPointF imagePoint) {
+    const QImage& image = viewport_->image();
+    const auto scene = document_->scene();
+    if (image.isNull() || !scene) return;
+    // The frame on screen: its time and the view at its size, so the pick
+    // names what the user sees.
+    const Camera camera = viewport_->viewCamera(image.size());
+    const auto hit = pickPixel(*scene, shownFrame_.time, camera, int(imagePoint.x()), int(imagePoint.y()));
+    setSelection(hit ? std::optional(selectionOf(*scene, *hit)) : std::nullopt);
+    if (!selection_) return;
+    if (const int line = creatingLine(editor()->toPlainText(), selection_->object)) {
+        QTextCursor cursor(editor()->document()->findBlockByNumber(line - 1));
+        cursor.movePosition(QTextCursor::EndOfBlock, QTextCursor::KeepAnchor);
+        editor()->setTextCursor(cursor);
+        editor()->centerCursor();
+    }
+}
+
+void MainWindow::setSelection(std::optional<Selection> selection) {
+    selection_ = std::move(selection);
+    updateSelectionView();
+}
+
+void MainWindow::updateSelectionView() {
+    const auto scene = document_->scene();
+    const auto object = selection_ && scene ? findObject(*scene, *selection_) : std::nullopt;
+    if (!object) {
+        selection_.reset();  // deleted or renamed in the text
+        viewport_->setSelectionOutline(std::nullopt);
+        selectionStatus_->clear();
+        return;
+    }
+    EvaluatedFrame frame;
+    evaluateFrame(*scene, shownFrame_.time, frame);
+    const Bounds bounds = selectionBounds(*scene, frame, *object, selection_->part);
+    const QImage& image = viewport_->image();
+    viewport_->setSelectionOutline(
+        image.isNull() ? std::nullopt : outlineRect(viewport_->viewCamera(image.size()), bounds));
+    const Vec3 centre = (bounds.lo + bounds.hi) * 0.5f;
+    selectionStatus_->setText(tr("%1 at (%2, %3, %4)")
+                                  .arg(selection_->target())
+                                  .arg(double(centre.x), 0, 'f', 1)
+                                  .arg(double(centre.y), 0, 'f', 1)
+                                  .arg(double(centre.z), 0, 'f', 1));
+}
+
+QString MainWindow::selectionStatus() const { return selectionStatus_->text(); }
 
 void MainWindow::updateStatus() {
     const int last = playback_->lastFrame();

@@ -10,6 +10,7 @@
 
 #include "core/render/image.h"
 #include "render_controller.h"
+#include "selection.h"
 
 class QLabel;
 class QListWidget;
@@ -87,6 +88,15 @@ class MainWindow : public QMainWindow {
     /// the render size (the scene's /camera size at *Scene Size*, whatever
     /// the docks take from the window).
     Image frameToSave() const;
+    /// Selects what image point `imagePoint` (pixels of the picture on
+    /// screen) shows in the frame on screen, or clears the selection on the
+    /// background: outlined in the picture, named in the status bar, its
+    /// creating line selected in the editor.
+    void selectAt(QPointF imagePoint);
+    void setSelection(std::optional<Selection> selection);
+    const std::optional<Selection>& selection() const { return selection_; }
+    /// The status bar's text about the selection.
+    QString selectionStatus() const;
     /// The frame on screen (time, timings, size); serial 0 before the first.
     const FrameInfo& shownFrame() const { return shownFrame_; }
 
@@ -119,6 +129,8 @@ class MainWindow : public QMainWindow {
     void onFrameReady(const QImage& image, const FrameInfo& info);
     void requestFrame();
     void updateStatus();
+    /// Outline and status of the selection for the frame on screen.
+    void updateSelectionView();
     void openDialog();
     void saveFrame();
     void exportPngSequence();
@@ -148,6 +160,8 @@ class MainWindow : public QMainWindow {
     QLabel* timeStatus_ = nullptr;
     QLabel* fpsStatus_ = nullptr;
     QLabel* sizeStatus_ = nullptr;
+    QLabel* selectionStatus_ = nullptr;
+    std::optional<Selection> selection_;
     QTimer frameTimer_;   // coalesces scheduleFrame() calls
     QTimer statusTimer_;  // lets the FPS readout fall to 0 when nothing renders
     FrameInfo shownFrame_;

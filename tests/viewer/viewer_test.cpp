@@ -60,6 +60,7 @@ class ViewerTest : public QObject {
     void savedFrameSizeIgnoresDocks();
     void dialogsStartInTheScenesFolder();
     void helpMenuListsShortcutsAndReference();
+    void clickSelectsWhatIsDrawn();
     void renderScaleFollowsWindow();
     void dragOrbitsWheelZoomsAndSceneCameraResets();
     void brokenFileShowsErrorsAndKeepsImage();
@@ -299,6 +300,57 @@ void ViewerTest::helpMenuListsShortcutsAndReference() {
     QStringList menus;
     for (QAction* a : w.menuBar()->actions()) menus << a->text().remove('&');
     QCOMPARE(menus.last(), QStringLiteral("Help"));
+}
+
+void ViewerTest::clickSelectsWhatIsDrawn() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("scene.f2");
+    writeFile(path, kSmallScene);
+    MainWindow w;
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    w.openFile(path);
+    w.setRenderScale(RenderScale::SceneSize);  // a 96x72 picture, scaled up on screen
+    w.playback()->pause();
+    w.playback()->seek(5);
+    QVERIFY(waitForShownFrame(w, 5));
+    QCOMPARE(w.viewport()->image().size(), QSize(96, 72));
+
+    // The ball moves from x = -3 to 3 over frames 0-10: at frame 5 it is at (0, 0, 8).
+    const Camera camera = Camera::fromDesc(w.document()->scene()->camera);
+    float px = 0, py = 0;
+    QVERIFY(camera.project({0, 0, 8}, px, py));
+    const QRectF onScreen = w.viewport()->imageRect();
+    auto widgetPoint = [&](float x, float y) {
+        return QPoint(int(onScreen.left() + x * onScreen.width() / 96), int(onScreen.top() + y * onScreen.height() / 72));
+    };
+    QTest::mouseClick(w.viewport(), Qt::LeftButton, {}, widgetPoint(px, py));
+    QVERIFY(w.selection().has_value());
+    QCOMPARE(w.selection()->target(), QStringLiteral("ball"));
+    QVERIFY2(w.selectionStatus().startsWith("ball at (0.0, 0.0, 8.0)"), qPrintable(w.selectionStatus()));
+    QCOMPARE(w.editor()->textCursor().selectedText(), QStringLiteral("/sphere ball 1.5 -3 0 8"));
+    const auto outline = w.viewport()->selectionOutline();
+    QVERIFY(outline.has_value());
+    QVERIFY(outline->contains(QPointF(px, py)));
+    QVERIFY(outline->width() < 40 && outline->width() > 5);
+
+    // The outline follows the ball to frame 10.
+    w.playback()->seek(10);
+    QVERIFY(waitForShownFrame(w, 10));
+    QVERIFY(w.viewport()->selectionOutline()->left() > outline->left());
+
+    // A drag orbits and does not change the selection; the background clears it.
+    QTest::mousePress(w.viewport(), Qt::LeftButton, {}, widgetPoint(10, 5));
+    QTest::mouseMove(w.viewport(), widgetPoint(40, 5));
+    QTest::mouseRelease(w.viewport(), Qt::LeftButton, {}, widgetPoint(40, 5));
+    QVERIFY(w.viewport()->isOrbiting());
+    QCOMPARE(w.selection()->target(), QStringLiteral("ball"));
+    w.viewport()->resetView();
+    QVERIFY(waitForShownFrame(w, 10));
+    QTest::mouseClick(w.viewport(), Qt::LeftButton, {}, widgetPoint(2, 2));
+    QVERIFY(!w.selection().has_value());
+    QVERIFY(!w.viewport()->selectionOutline().has_value());
+    QVERIFY(w.selectionStatus().isEmpty());
 }
 
 void ViewerTest::renderScaleFollowsWindow() {
