@@ -485,8 +485,14 @@ void MainWindow::updateSelectionView() {
         selection_.reset();  // deleted or renamed in the text
         viewport_->setSelectionOutline(std::nullopt);
         selectionStatus_->clear();
+        timeline_->setKeyMarkers({});
         return;
     }
+    const SceneObject& target = scene->objects[*object];
+    QList<int> keys;
+    for (const Key& key : (selection_->part ? target.partTracks[std::size_t(*selection_->part)] : target.track).keys)
+        keys << key.frame;
+    timeline_->setKeyMarkers(keys);
     EvaluatedFrame frame;
     evaluateFrame(*scene, shownFrame_.time, frame);
     const Bounds bounds = selectionBounds(*scene, frame, *object, selection_->part);

@@ -13,6 +13,7 @@
 #include <QStandardPaths>
 #include <QSignalSpy>
 #include <QSlider>
+#include <QSpinBox>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
@@ -310,6 +311,7 @@ void ViewerTest::clickSelectsWhatIsDrawn() {
     w.show();
     QVERIFY(QTest::qWaitForWindowExposed(&w));
     w.openFile(path);
+    w.editorDock()->hide();  // the offscreen screen is 800 pixels wide: room for the timeline
     w.setRenderScale(RenderScale::SceneSize);  // a 96x72 picture, scaled up on screen
     w.playback()->pause();
     w.playback()->seek(5);
@@ -334,6 +336,19 @@ void ViewerTest::clickSelectsWhatIsDrawn() {
     QVERIFY(outline->contains(QPointF(px, py)));
     QVERIFY(outline->width() < 40 && outline->width() > 5);
 
+    // Its keys (frames 0 and 10) are marked on the timeline; a click on a marker goes there.
+    KeyMarkerSlider* slider = w.timeline()->slider();
+    QCOMPARE(slider->markers(), (QList<int>{0, 10}));
+    QTest::mouseClick(slider, Qt::LeftButton, {}, QPoint(slider->positionOf(10), slider->height() - 5));
+    QCOMPARE(w.playback()->time(), 10.0);
+    // Typing a frame number goes there too.
+    QSpinBox* box = w.timeline()->frameBox();
+    box->setFocus();
+    box->selectAll();
+    QTest::keyClicks(box, "3");
+    QTest::keyClick(box, Qt::Key_Return);
+    QCOMPARE(w.playback()->time(), 3.0);
+
     // The outline follows the ball to frame 10.
     w.playback()->seek(10);
     QVERIFY(waitForShownFrame(w, 10));
@@ -351,6 +366,7 @@ void ViewerTest::clickSelectsWhatIsDrawn() {
     QVERIFY(!w.selection().has_value());
     QVERIFY(!w.viewport()->selectionOutline().has_value());
     QVERIFY(w.selectionStatus().isEmpty());
+    QVERIFY(slider->markers().isEmpty());
 }
 
 void ViewerTest::renderScaleFollowsWindow() {
