@@ -34,16 +34,17 @@ TimelineWidget::TimelineWidget(QWidget* parent) : QWidget(parent) {
     slider_->setFocusPolicy(Qt::NoFocus);  // keep Space/arrows for the window's shortcuts
     layout->addWidget(slider_, 1);
 
-    frameLabel_ = new QLabel(this);
-    frameLabel_->setMinimumWidth(
-        frameLabel_->fontMetrics().horizontalAdvance("frame 00000 / 00000  000.00 s"));
-    layout->addWidget(frameLabel_);
-
+    // The frame is a box to type into ("frame [116] / 240  4.84 s").
+    layout->addWidget(new QLabel(tr("frame"), this));
     frameBox_ = new QSpinBox(this);
-    frameBox_->setToolTip(tr("Go to frame (type a number, Enter)"));
+    frameBox_->setToolTip(tr("The frame shown; type a number and Enter to go there"));
     frameBox_->setKeyboardTracking(false);  // seek on Enter or leaving the box, not per digit
-    frameBox_->setPrefix(tr("go to "));
+    frameBox_->setButtonSymbols(QAbstractSpinBox::NoButtons);
+    frameBox_->setAlignment(Qt::AlignRight);
     layout->addWidget(frameBox_);
+    frameLabel_ = new QLabel(this);
+    frameLabel_->setMinimumWidth(frameLabel_->fontMetrics().horizontalAdvance("/ 00000  000.00 s"));
+    layout->addWidget(frameLabel_);
 
     speed_ = new QComboBox(this);
     speed_->setFocusPolicy(Qt::NoFocus);
@@ -96,7 +97,7 @@ void TimelineWidget::setTime(double time) {
         const QSignalBlocker block(frameBox_);
         frameBox_->setValue(frame);
     }
-    frameLabel_->setText(tr("frame %1 / %2  %3 s").arg(frame).arg(lastFrame_).arg(time / fps_, 0, 'f', 2));
+    frameLabel_->setText(tr("/ %1  %2 s").arg(lastFrame_).arg(time / fps_, 0, 'f', 2));
 }
 
 void TimelineWidget::setKeyMarkers(QList<int> frames) { slider_->setMarkers(std::move(frames)); }
