@@ -27,6 +27,7 @@
 #include "autosave.h"
 #include "core/anim/frame_time.h"
 #include "core/anim/frame_builder.h"
+#include "core/anim/track.h"
 #include "core/render/pick.h"
 #include "core/render/renderer.h"
 #include "editor_dock.h"
@@ -39,6 +40,7 @@
 #include "playback.h"
 #include "scene_document.h"
 #include "scene_editor.h"
+#include "text_capture.h"
 #include "timeline_widget.h"
 #include "viewport_widget.h"
 
@@ -212,6 +214,12 @@ void MainWindow::createActions() {
     view->addSeparator();
     view->addAction(editorDock_->toggleViewAction());
     view->addAction(diagnosticsDock_->toggleViewAction());
+
+    QMenu* capture = menuBar()->addMenu(tr("&Capture"));
+    capture->addAction(tr("Set &Camera from View"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_C), this,
+                       &MainWindow::setCameraFromView);
+    capture->addAction(tr("&Key Selection Here"), QKeySequence(Qt::CTRL | Qt::Key_K), this,
+                       &MainWindow::keySelectionHere);
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&Keyboard Shortcuts"), this, [this] { showShortcuts(this, menuBar()); });
@@ -505,6 +513,29 @@ void MainWindow::updateSelectionView() {
                                   .arg(double(centre.x), 0, 'f', 1)
                                   .arg(double(centre.y), 0, 'f', 1)
                                   .arg(double(centre.z), 0, 'f', 1));
+}
+
+void MainWindow::setCameraFromView() {
+    const auto scene = document_->scene();
+    const Pose pose = viewport_->orbit() ? viewport_->orbit()->pose() : scene->camera.pose;
+    applyEdit(editor(), cameraEdit(editor()->toPlainText(), scene->camera, pose));
+}
+
+bool MainWindow::keySelectionHere() {
+    const auto scene = document_->scene();
+    const auto object = selection_ ? findObject(*scene, *selection_) : std::nullopt;
+    if (!object) {
+        statusBar()->showMessage(tr("Select an object or part first (click it in the picture)."), 5000);
+        return false;
+    }
+    const SceneObject& target = scene->objects[*object];
+    const int frame = playback_->frame();
+    // An object's key is its absolute pose; a part's, its offset and rotation.
+    const Pose pose = selection_->part
+                          ? evaluateTrack(target.partTracks[std::size_t(*selection_->part)], frame, Pose{})
+                          : evaluateTrack(target.track, frame, target.rest);
+    applyEdit(editor(), keyEdit(editor()->toPlainText(), selection_->target(), frame, pose));
+    return true;
 }
 
 QString MainWindow::selectionStatus() const { return selectionStatus_->text(); }

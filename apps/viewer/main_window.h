@@ -95,6 +95,12 @@ class MainWindow : public QMainWindow {
     void selectAt(QPointF imagePoint);
     void setSelection(std::optional<Selection> selection);
     const std::optional<Selection>& selection() const { return selection_; }
+    /// Writes the view (the look-around, else the scene camera) into the
+    /// scene's `/camera` line, keeping its size and `d`. One undo step.
+    void setCameraFromView();
+    /// Writes the selection's pose at the current frame as its `/key` line
+    /// there (replacing one at that frame). One undo step. False without a selection.
+    bool keySelectionHere();
     /// The status bar's text about the selection.
     QString selectionStatus() const;
     /// The frame on screen (time, timings, size); serial 0 before the first.

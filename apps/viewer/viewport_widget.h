@@ -27,6 +27,7 @@ class ViewportWidget : public QWidget {
     /// Back to the scene's camera.
     void resetView();
     bool isOrbiting() const { return orbit_.has_value(); }
+    const std::optional<OrbitCamera>& orbit() const { return orbit_; }
 
     void setRenderScale(RenderScale scale);
     RenderScale renderScale() const { return scale_; }
