@@ -4,7 +4,7 @@
 #     folder, never up and never sideways, so the folders form no cycle;
 #  2. SIMD types stay private: a core header that includes core/simd/, directly
 #     or through another header, is private, and the front ends (src/io, apps,
-#     fuzz) include no private header;
+#     lsp, fuzz) include no private header;
 #  3. with a compiler given (CXX=...), every public core header compiles on its
 #     own without any -m flag and with the project's warnings.
 # Exit 1 with one line per finding; 0 when the tree is clean.
@@ -23,7 +23,7 @@ declare -A rank=(
   [core/scene]=3
   [core/parse]=4 [core/anim]=4
   [core/render]=5
-  [io]=6
+  [io]=6 [lsp]=6
   [apps]=7
 )
 
@@ -38,6 +38,7 @@ layer_of_file() {
   case "$1" in
     src/core/*/*) local rest=${1#src/core/}; echo "core/${rest%%/*}" ;;
     src/io/*) echo io ;;
+    src/lsp/*) echo lsp ;;
     apps/*) echo apps ;;
   esac
 }
@@ -46,6 +47,7 @@ layer_of_include() {
   case "$1" in
     core/*/*) local rest=${1#core/}; echo "core/${rest%%/*}" ;;
     io/*) echo io ;;
+    lsp/*) echo lsp ;;
   esac
 }
 
@@ -79,7 +81,7 @@ while IFS= read -r file; do
 done < <(sources src apps)
 sort -u -o "$edges" "$edges"
 if ! tsort "$edges" > /dev/null 2>&1; then
-  loop=$(tsort "$edges" 2>&1 >/dev/null | sed -n 's/^tsort: \(core\/[a-z_]*\|io\|apps\)$/\1/p' | sort -u | tr '\n' ' ' || true)
+  loop=$(tsort "$edges" 2>&1 >/dev/null | sed -n 's/^tsort: \(core\/[a-z_]*\|io\|lsp\|apps\)$/\1/p' | sort -u | tr '\n' ' ' || true)
   fail "the folders include each other in a cycle through: $loop"
 fi
 
@@ -110,7 +112,7 @@ while IFS= read -r file; do
       fail "$file: includes \"$inc\", a private core header (it reaches core/simd/, whose types depend on -march)"
     fi
   done < <(includes_of "$file")
-done < <(sources src/io apps fuzz)
+done < <(sources src/io src/lsp apps fuzz)
 
 # 3. Public headers compile alone, with no CPU flag.
 if [[ -n "$cxx" ]]; then

@@ -7,16 +7,24 @@ PACKAGES=(
   # toolchain and build
   g++ cmake ninja-build pkg-config git
   # libraries
-  libpng-dev libcli11-dev qt6-base-dev libgl-dev libegl-dev
+  libpng-dev libcli11-dev qt6-base-dev libgl-dev libegl-dev nlohmann-json3-dev
   # tests and benchmarks (GNU parallel: the render-farm test)
   libgtest-dev libbenchmark-dev locales xvfb xauth imagemagick x11-apps parallel
   # the Embree peer renderer f2 is compared with (bench/embree_peer)
   libembree-dev libtbb-dev
+  # the language server's end-to-end test with a real client
+  neovim
   # video and POV-Ray output, plots for `f2 bench --study`
   ffmpeg povray gnuplot-nox
   # fuzzing (clang's libFuzzer runtime)
   clang libclang-rt-14-dev
 )
+
+# Node.js and npm for the VS Code extension and its grammar test; a Node.js
+# installed another way (with its own npm) is kept.
+if ! command -v npm >/dev/null 2>&1; then
+  PACKAGES+=(nodejs npm)
+fi
 
 missing=()
 for p in "${PACKAGES[@]}"; do

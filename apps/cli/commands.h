@@ -16,5 +16,6 @@ Command addCheckCommand(CLI::App& app);
 Command addInfoCommand(CLI::App& app);
 Command addExportCommand(CLI::App& app);
 Command addBenchCommand(CLI::App& app);
+Command addLspCommand(CLI::App& app);
 
 }  // namespace f2::cli

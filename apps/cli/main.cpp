@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
         f2::cli::addInfoCommand(app),
         f2::cli::addExportCommand(app),
         f2::cli::addBenchCommand(app),
+        f2::cli::addLspCommand(app),
     };
     // CLI11 would only say "a subcommand is required"; name the unknown word.
     if (argc > 1 && argv[1][0] != '-') {

@@ -12,6 +12,7 @@
 #include "io/render_animation.h"
 #include "io/sequence_sink.h"
 #include "io/video_sink.h"
+#include "pixel_story.h"
 #include "progress.h"
 #include "scene_source.h"
 
@@ -29,6 +30,7 @@ struct RenderArgs {
     int fps = 0;  ///< 0 = the scene's /fps
     std::string shard;
     bool resume = false;
+    std::string pixel;  ///< "X,Y": print that pixel's story instead of writing an image
     const CLI::Option* frameOption = nullptr;
 };
 
@@ -172,6 +174,13 @@ int runRender(const RenderArgs& args) {
     const AnimationRange frames{range.first, range.last, loaded->scene.fps, fps, 0, shard.index, shard.count};
     AnimationJob job{&*loaded, camera, frames, args.antialias, args.threads};
 
+    if (!args.pixel.empty()) {
+        if (!args.frames.empty() || !args.shard.empty() || args.resume)
+            return usageError("--pixel traces one pixel of one frame: choose the frame with --frame");
+        int x = 0, y = 0;
+        if (!parsePixel(args.pixel, camera.width, camera.height, x, y, error)) return usageError(error);
+        return printPixelStory(*loaded, camera, args.frame, x, y, args.antialias, args.threads);
+    }
     if (auto format = videoFormatForPath(args.output)) {
         if (oneFrameOption)
             return usageError("--frame picks one image; a video takes --frames (default: all)");
@@ -234,6 +243,10 @@ Command addRenderCommand(CLI::App& app) {
                     "(round-robin); sequences only")
         ->type_name("K/N");
     sub->add_flag("--resume", args->resume, "Sequence: skip frames whose file already exists");
+    sub->add_option("--pixel", args->pixel,
+                    "Print the story of one pixel (its ray, every primitive along it, the hit, the normal, each "
+                    "light's term and shadow, the colour) instead of writing an image")
+        ->type_name("X,Y");
     return {sub, [args] { return runRender(*args); }};
 }
 

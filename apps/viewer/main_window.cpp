@@ -567,10 +567,16 @@ QString MainWindow::exportStem() const {
 }
 
 bool MainWindow::refuseSceneFile(const QString& path, const QString& title) {
-    // The viewer never writes the scene file, whatever name the user picks.
-    if (document_->path().isEmpty() || QFileInfo(path) != QFileInfo(document_->path())) return false;
-    QMessageBox::warning(this, title, tr("Refusing to overwrite the scene file."));
-    return true;
+    // The viewer never writes the scene file or a file it includes, whatever
+    // name the user picks.
+    for (const QString& source : document_->sources()) {
+        if (QFileInfo(path) != QFileInfo(source)) continue;
+        QMessageBox::warning(this, title,
+                             source == document_->path() ? tr("Refusing to overwrite the scene file.")
+                                                         : tr("Refusing to overwrite a file the scene includes."));
+        return true;
+    }
+    return false;
 }
 
 QString MainWindow::outputFolder() const {

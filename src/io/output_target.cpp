@@ -71,37 +71,39 @@ bool resolveOutput(const std::string& path, OutputTarget& target, std::string& e
         error = "the output file name is empty";
         return false;
     }
-    std::string current = path;
-    for (int links = 0;; ++links) {
-        struct stat info {};
-        if (::lstat(current.c_str(), &info) != 0) {
-            // Nothing there yet (also the end of a dangling link): a new file.
-            target.realPath = current;
-            return true;
-        }
-        if (S_ISLNK(info.st_mode)) {
-            if (links == kMaxLinks) {
-                error = "cannot write '" + path + "': too many levels of symbolic links";
-                return false;
-            }
-            std::string link(PATH_MAX, '\0');
-            ssize_t n = ::readlink(current.c_str(), link.data(), link.size());
-            if (n < 0) {
-                error = "cannot write '" + path + "': " + std::strerror(errno);
-                return false;
-            }
-            link.resize(std::size_t(n));
-            current = link.starts_with('/') ? link : directoryOf(current) + link;
-            continue;
-        }
-        target.realPath = current;
+    struct stat info {};
+    if (::stat(path.c_str(), &info) == 0) {
         target.exists = true;
         if (S_ISDIR(info.st_mode)) {
             error = "cannot write '" + path + "': it is a directory";
             return false;
         }
-        target.kind = S_ISREG(info.st_mode) ? OutputTarget::Kind::File : OutputTarget::Kind::Special;
-        return true;
+        // A device, FIFO or socket is opened by the name given: that also
+        // works through /proc's links, such as /dev/stdout onto a pipe.
+        if (!S_ISREG(info.st_mode)) {
+            target.kind = OutputTarget::Kind::Special;
+            return true;
+        }
+    }
+    // A regular file, or none yet: follow the links to the name to replace or create.
+    std::string current = path;
+    for (int links = 0;; ++links) {
+        if (::lstat(current.c_str(), &info) != 0 || !S_ISLNK(info.st_mode)) {
+            target.realPath = current;
+            return true;
+        }
+        if (links == kMaxLinks) {
+            error = "cannot write '" + path + "': too many levels of symbolic links";
+            return false;
+        }
+        std::string link(PATH_MAX, '\0');
+        ssize_t n = ::readlink(current.c_str(), link.data(), link.size());
+        if (n < 0) {
+            error = "cannot write '" + path + "': " + std::strerror(errno);
+            return false;
+        }
+        link.resize(std::size_t(n));
+        current = link.starts_with('/') ? link : directoryOf(current) + link;
     }
 }
 

@@ -27,8 +27,6 @@ struct AnimationRange {
     double timeOf(std::int64_t frame) const {
         return timeOffset + sceneTimeOfOutputFrame(frame, sceneFps, outputFps);
     }
-    /// The frame belongs to this shard (whether or not it is in [first, last]).
-    bool inShard(std::int64_t frame) const { return frame % shardCount == shardIndex; }
     /// Frames of [first, last] in this shard.
     std::int64_t count() const;
 };

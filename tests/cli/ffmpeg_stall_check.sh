@@ -15,9 +15,10 @@ export F2_FAKE_FFMPEG=stall F2_FAKE_FFMPEG_PIDFILE=$dir/ffmpeg.pid F2_FAKE_FFMPE
 PATH="$fakebin:$PATH" "$@" -o "$dir/v.mp4" 2>"$dir/stderr.txt" &
 pid=$!
 
-# wait_for CONDITION...: polls until it holds; false after 30 s.
+# wait_for CONDITION...: polls until it holds; false after 30 s (a hang, not a slow machine).
 wait_for() {
-  for ((i = 0; i < 3000; ++i)); do "$@" && return 0; sleep 0.01; done
+  local end=$((SECONDS + 30))
+  while ((SECONDS < end)); do "$@" && return 0; sleep 0.01; done
   return 1
 }
 wait_for test -e "$dir/ready" || { echo "FAIL: the fake ffmpeg's pipe never filled"; kill -9 $pid; exit 1; }

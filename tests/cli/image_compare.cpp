@@ -7,6 +7,7 @@
 //       background R G B in both or in neither, everywhere), and at most MAXOFF
 //       pixels differ by more than TOL in a channel
 //   image_compare diff A.png B.png              statistics only (exit 0 if same size)
+//   image_compare same A.png B.png              every pixel identical (exit 1 otherwise)
 //   image_compare colours A.png MIN             A has at least MIN distinct colours
 //       (a rendered scene, not a blank or flat image)
 #include <algorithm>
@@ -116,6 +117,21 @@ int diff(const Image& a, const Image& b) {
                 a.pixels.size(), over8, maximum, double(sum) / double(a.pixels.size()));
     return 0;
 }
+/// Pixel-exact equality: the decoded bytes, not the PNG files, whose
+/// compression may differ between zlib versions.
+int same(const Image& a, const Image& b) {
+    long differing = 0;
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x) {
+            Rgb8 p = a.at(x, y), q = b.at(x, y);
+            if (p == q) continue;
+            if (differing++ < 5)
+                std::printf("  (%d, %d): %d %d %d vs %d %d %d\n", x, y, p.r, p.g, p.b, q.r, q.g, q.b);
+        }
+    std::printf("%ld of %zu pixels differ\n", differing, a.pixels.size());
+    return differing == 0 ? 0 : 1;
+}
+
 int colours(const Image& a, long minimum) {
     std::set<std::uint32_t> seen;
     for (Rgb8 p : a.pixels) seen.insert(std::uint32_t(p.r) << 16 | std::uint32_t(p.g) << 8 | p.b);
@@ -126,10 +142,12 @@ int colours(const Image& a, long minimum) {
 
 int main(int argc, char** argv) {
     std::string mode = argc > 1 ? argv[1] : "";
-    bool known = (mode == "iou" && argc == 8) || (mode == "match" && argc == 9) || ((mode == "aa" || mode == "diff") && argc == 4) ||
-                 (mode == "colours" && argc == 4);
+    bool known = (mode == "iou" && argc == 8) || (mode == "match" && argc == 9) ||
+                 ((mode == "aa" || mode == "diff" || mode == "same") && argc == 4) || (mode == "colours" && argc == 4);
     if (!known) {
-        std::fprintf(stderr, "usage: image_compare iou A B R G B MIN | match A B R G B TOL MAXOFF | aa PLAIN AA | diff A B | colours A MIN\n");
+        std::fprintf(stderr,
+                     "usage: image_compare iou A B R G B MIN | match A B R G B TOL MAXOFF | aa PLAIN AA | diff A B | "
+                     "same A B | colours A MIN\n");
         return 2;
     }
     if (mode == "colours") {
@@ -147,5 +165,6 @@ int main(int argc, char** argv) {
                 std::uint8_t(std::atoi(argv[6]))};
         return mode == "iou" ? iou(a, b, bg, std::atof(argv[7])) : match(a, b, bg, std::atoi(argv[7]), std::atol(argv[8]));
     }
+    if (mode == "same") return same(a, b);
     return mode == "aa" ? antialias(a, b) : diff(a, b);
 }

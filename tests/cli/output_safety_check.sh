@@ -58,6 +58,8 @@ devices)  # -o a device: written directly, never replaced by a regular file
   run 1 "${small[@]}" -o full
   grep -q "No space left on device" out.txt || fail "writing /dev/full did not fail with ENOSPC"
   [ -c full ] || fail "the device 'full' was replaced"
+  "$f2" "${small[@]}" -o /dev/stdout 2>out.txt | cat >piped.png || { cat out.txt; fail "-o /dev/stdout into a pipe failed"; }
+  [ "$(head -c 4 piped.png | od -An -c | tr -d ' ')" = "211PNG" ] || fail "-o /dev/stdout did not write the PNG into the pipe"
   ln -s null null.mp4
   run 1 "${small[@]}" --frames 0-1 -o null.mp4
   grep -q "character device" out.txt || fail "a video onto a device is not refused clearly"

@@ -57,11 +57,11 @@ class ViewerTest : public QObject {
     void imageConversionRoundTrips();
     void playStepScrubShowsCoreImage();
     void keyboardShortcutsDrivePlayback();
-    void stepAfterPauseMovesOneFrame();
     void savedFrameSizeIgnoresDocks();
     void dialogsStartInTheScenesFolder();
     void helpMenuListsShortcutsAndReference();
     void clickSelectsWhatIsDrawn();
+    void stepGoesFromTheFrameShown();
     void renderScaleFollowsWindow();
     void dragOrbitsWheelZoomsAndSceneCameraResets();
     void brokenFileShowsErrorsAndKeepsImage();
@@ -236,23 +236,6 @@ void ViewerTest::keyboardShortcutsDrivePlayback() {
     QVERIFY(!w.playback()->isPlaying());
 }
 
-void ViewerTest::stepAfterPauseMovesOneFrame() {
-    // Paused between frames 5 and 6 (frame 5 on screen): Right shows 6, Left 5.
-    MainWindow w;
-    w.openFile(F2_SOURCE_DIR "/scenes/seed_example.f2");
-    w.playback()->play();
-    w.playback()->seek(5.7);
-    w.playback()->pause();
-    QCOMPARE(w.playback()->frame(), 5);
-    w.playback()->step(1);
-    QCOMPARE(w.playback()->time(), 6.0);
-    w.playback()->step(-1);
-    QCOMPARE(w.playback()->time(), 5.0);
-    w.playback()->seek(5.7);
-    w.playback()->step(-1);
-    QCOMPARE(w.playback()->time(), 4.0);
-}
-
 void ViewerTest::savedFrameSizeIgnoresDocks() {
     QTemporaryDir dir;
     const QString path = dir.filePath("scene.f2");
@@ -367,6 +350,27 @@ void ViewerTest::clickSelectsWhatIsDrawn() {
     QVERIFY(!w.viewport()->selectionOutline().has_value());
     QVERIFY(w.selectionStatus().isEmpty());
     QVERIFY(slider->markers().isEmpty());
+}
+
+void ViewerTest::stepGoesFromTheFrameShown() {
+    // Time 3.7 shows frame 3 (f2::frameAt, the rule `f2 render` uses); a step
+    // goes to frame 4, not 5 (stepping used to round the time instead).
+    Playback playback;
+    playback.setRange(15, 24);
+    playback.seek(3.7);
+    QCOMPARE(playback.frame(), 3);
+    playback.step(1);
+    QCOMPARE(playback.time(), 4.0);
+    playback.seek(3.7);
+    playback.step(-1);
+    QCOMPARE(playback.time(), 2.0);
+    playback.seek(0.1 * 3 * 10);  // 2.9999999999999996: frame 3, as everywhere
+    QCOMPARE(playback.frame(), 3);
+
+    TimelineWidget timeline;
+    timeline.setRange(15, 24);
+    timeline.setTime(3.7);
+    QCOMPARE(timeline.slider()->value(), 3);
 }
 
 void ViewerTest::renderScaleFollowsWindow() {

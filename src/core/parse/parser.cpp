@@ -18,6 +18,7 @@
 #include "core/parse/number.h"
 #include "core/parse/source_expander.h"
 #include "core/parse/suggest.h"
+#include "core/parse/symbol_index.h"
 #include "core/parse/unusual_char.h"
 
 namespace f2 {
@@ -159,8 +160,8 @@ ExpansionLimits expansionLimits(const ParseLimits& limits) {
 /// SourceExpander before a line gets here.
 class Parser : private ExpansionSink {
    public:
-    Parser(std::string_view fileName, const ParseLimits& limits)
-        : fileName_(fileName), limits_(limits), expander_(expansionLimits(limits), *this) {}
+    Parser(std::string_view fileName, const ParseLimits& limits, SymbolIndex* index)
+        : fileName_(fileName), limits_(limits), index_(index), expander_(expansionLimits(limits), *this) {}
 
     /// `identity`: the main file's (device, inode), when it is a file.
     ParseResult run(std::string_view text,
@@ -296,6 +297,7 @@ class Parser : private ExpansionSink {
         }
         for (const CommandName& c : kCommands) {
             if (c.name == head) {
+                if (index_) index_->noteCommand(head, sourceLoc(commandPos()));
                 dispatch(c.command);
                 return;
             }
@@ -477,6 +479,7 @@ class Parser : private ExpansionSink {
             error(pos, std::move(message));
             return std::nullopt;
         }
+        if (index_) index_->uses.push_back({it->second, span(pos, name), std::string(commandText())});
         return it->second;
     }
 
@@ -676,6 +679,7 @@ class Parser : private ExpansionSink {
     void addObject(SceneObject object) {
         object.name = std::string(arg(0));
         names_.emplace(object.name, scene_.objects.size());
+        if (index_) index_->objects.push_back({object, span(argPos(0), arg(0)), sourceLoc(commandPos())});
         books_.push_back({argPos(0), {-1, -1, -1, -1, -1}, {}});
         scene_.objects.push_back(std::move(object));
     }
@@ -865,8 +869,30 @@ class Parser : private ExpansionSink {
         }
     }
 
+    // Symbol index (optional output)
+    SourceLoc sourceLoc(Pos pos) const { return {expander_.fileName(pos.file), pos.line, pos.column}; }
+    /// The name at `pos` as written: `r{i}` for the name r3 (up to a '.' outside braces).
+    TokenSpan span(Pos pos, std::string_view name) const {
+        int length = static_cast<int>(name.size());
+        for (int k = 0; k < std::min(tokens_.count, kMaxStoredTokens); ++k) {
+            const LogicalToken& t = tokens_.tokens[static_cast<std::size_t>(k)];
+            if (t.column != pos.column || t.written == t.text) continue;
+            int depth = 0;
+            length = static_cast<int>(t.written.size());
+            for (std::size_t i = 0; i < t.written.size(); ++i) {
+                depth += t.written[i] == '{' ? 1 : t.written[i] == '}' ? -1 : 0;
+                if (t.written[i] == '.' && depth == 0) {
+                    length = static_cast<int>(i);
+                    break;
+                }
+            }
+        }
+        return {sourceLoc(pos), length};
+    }
+
     std::string_view fileName_;
     ParseLimits limits_;
+    SymbolIndex* index_ = nullptr;
     SourceExpander expander_;
     SceneDesc scene_;
     std::vector<Diagnostic> diagnostics_;
@@ -918,7 +944,21 @@ bool readStream(std::FILE* f, std::size_t limit, std::string& out, std::string& 
 }  // namespace
 
 ParseResult parseScene(std::string_view text, std::string_view fileName, const ParseLimits& limits) {
-    return Parser(fileName, limits).run(text);
+    return Parser(fileName, limits, nullptr).run(text);
+}
+
+ParseResult parseScene(std::string_view text, std::string_view fileName, const ParseLimits& limits,
+                       SymbolIndex& index) {
+    index.clear();
+    return Parser(fileName, limits, &index).run(text);
+}
+
+std::vector<std::string_view> commandNames() {
+    std::vector<std::string_view> names;
+    for (const CommandName& c : kCommands) names.push_back(c.name);
+    // Run by the SourceExpander before a line reaches the command table.
+    for (std::string_view c : {"/let", "/repeat", "/end", "/include"}) names.push_back(c);
+    return names;
 }
 
 ParseResult parseScene(std::string_view text, std::string_view fileName) {
@@ -940,7 +980,7 @@ ParseResult parseSceneFile(const std::string& path, const ParseLimits& limits) {
     // without blocking on it.
     FileRead file = readSourceFile(path, limits.maxSceneBytes);
     if (!file.ok) return readError(path, "cannot read " + quotePath(path) + ": " + file.problem);
-    return Parser(path, limits).run(file.text, std::pair{file.device, file.inode});
+    return Parser(path, limits, nullptr).run(file.text, std::pair{file.device, file.inode});
 }
 
 ParseResult parseSceneFile(const std::string& path) { return parseSceneFile(path, ParseLimits{}); }

@@ -61,6 +61,15 @@ struct ParseLimits {
 /// parseScene with other limits (tests use small ones).
 ParseResult parseScene(std::string_view text, std::string_view fileName, const ParseLimits& limits);
 
+struct SymbolIndex;
+/// parseScene that also fills `index` (cleared first) with where each name is
+/// created and used, for tools that work on the source (core/parse/symbol_index.h).
+ParseResult parseScene(std::string_view text, std::string_view fileName, const ParseLimits& limits,
+                       SymbolIndex& index);
+
+/// Every command of the language ("/camera", ...), in the parser's table order.
+std::vector<std::string_view> commandNames();
+
 /// Reads and parses a file; "-" reads standard input. A missing, unreadable or
 /// non-regular file gives one error at `FILE:1:1`.
 ParseResult parseSceneFile(const std::string& path);

@@ -21,33 +21,76 @@ inline float shadowOffset(Vec3 p) {
 /// and speckle the image; this way they consistently count as behind the eye.
 inline float primaryRayStart(Vec3 eye) { return shadowOffset(eye); }
 
-/// Colour (0..1, unclamped) of the nearest hit `hit` of `ray`.
-inline Vec3 shadeHit(const FrameScene& frame, const Ray& ray, const HitRecord& hit) {
-    const Primitive& prim = frame.primitives[hit.primitive];
-    const Surface& surface = frame.surfaces[hit.primitive];
-    const Material& m = surface.material;
-    Vec3 p = ray.origin + ray.direction * hit.t;
-    Vec3 n = primitiveNormal(prim, p, hit.face);
-    bool inside = dot(n, ray.direction) > 0;  // seen from within the primitive
-    if (inside) n = -n;                       // face the viewer
+/// Where a ray's nearest hit is shaded from: the point, the normal turned to
+/// face the viewer, and where its shadow rays start.
+struct ShadingPoint {
+    Vec3 position;
+    Vec3 normal;         ///< unit, facing the viewer
+    bool inside = false;  ///< the hit was seen from within its primitive
+    /// Primitive the shadow rays skip: their own, except from the inside.
+    std::uint32_t skip = Bvh::kNoPrimitive;
+    Vec3 shadowOrigin;  ///< position lifted off the surface (kShadowBias)
+};
+
+inline ShadingPoint shadingPoint(const FrameScene& frame, const Ray& ray, const HitRecord& hit) {
+    ShadingPoint s;
+    s.position = ray.origin + ray.direction * hit.t;
+    Vec3 n = primitiveNormal(frame.primitives[hit.primitive], s.position, hit.face);
+    s.inside = dot(n, ray.direction) > 0;  // seen from within the primitive
+    s.normal = s.inside ? -n : n;          // face the viewer
     // A shadow ray leaving a convex primitive's outside never meets it again,
     // so it skips that primitive; from the inside it must not.
-    std::uint32_t skip = inside ? Bvh::kNoPrimitive : hit.primitive;
+    s.skip = s.inside ? Bvh::kNoPrimitive : hit.primitive;
+    s.shadowOrigin = s.position + s.normal * shadowOffset(s.position);
+    return s;
+}
+
+/// One light's part in shading a point, as shadeHit() computed it.
+struct LightTerm {
+    std::size_t light = 0;  ///< index into FrameScene::lights
+    float nDotL = 0;        ///< <= 0: the surface faces away, no shadow ray
+    bool shadowed = false;  ///< the shadow ray met something
+    float diffuse = 0;      ///< intensity * kd * N.L (0 unless lit)
+    float specular = 0;     ///< intensity * ks * (R.V)^n (0 unless lit and R.V > 0)
+};
+
+/// Colour (0..1, unclamped) of the nearest hit `hit` of `ray`; onLight(term)
+/// sees each light's LightTerm (the --pixel report).
+template <class OnLight>
+inline Vec3 shadeHit(const FrameScene& frame, const Ray& ray, const HitRecord& hit, OnLight&& onLight) {
+    const Surface& surface = frame.surfaces[hit.primitive];
+    const Material& m = surface.material;
+    const ShadingPoint s = shadingPoint(frame, ray, hit);
+    const Vec3 n = s.normal;
     Vec3 toEye = -ray.direction;
-    Vec3 shadowOrigin = p + n * shadowOffset(p);
 
     float diffuse = m.ka * frame.ambient;
     float specular = 0;
-    for (const LightSample& light : frame.lights) {
-        float nDotL = dot(n, light.toLight);
-        if (nDotL <= 0) continue;
-        if (frame.bvh.occluded({shadowOrigin, light.toLight}, 0.0f, kInfinity, skip)) continue;
-        diffuse += light.intensity * m.kd * nDotL;
-        Vec3 reflected = n * (2 * nDotL) - light.toLight;
-        float rDotV = dot(reflected, toEye);
-        if (rDotV > 0 && m.ks > 0) specular += light.intensity * m.ks * std::pow(rDotV, m.n);
+    for (std::size_t i = 0; i < frame.lights.size(); ++i) {
+        const LightSample& light = frame.lights[i];
+        LightTerm term;
+        term.light = i;
+        term.nDotL = dot(n, light.toLight);
+        if (term.nDotL > 0) {
+            term.shadowed = frame.bvh.occluded({s.shadowOrigin, light.toLight}, 0.0f, kInfinity, s.skip);
+            if (!term.shadowed) {
+                term.diffuse = light.intensity * m.kd * term.nDotL;
+                diffuse += term.diffuse;
+                Vec3 reflected = n * (2 * term.nDotL) - light.toLight;
+                float rDotV = dot(reflected, toEye);
+                if (rDotV > 0 && m.ks > 0) {
+                    term.specular = light.intensity * m.ks * std::pow(rDotV, m.n);
+                    specular += term.specular;
+                }
+            }
+        }
+        onLight(term);
     }
     return surface.color * diffuse + Vec3{specular, specular, specular};
+}
+
+inline Vec3 shadeHit(const FrameScene& frame, const Ray& ray, const HitRecord& hit) {
+    return shadeHit(frame, ray, hit, [](const LightTerm&) {});
 }
 
 /// Colour of a primary ray from the eye: the shaded nearest hit or the background.

@@ -1,0 +1,56 @@
+#pragma once
+/// Where each name of a scene is created and used: an optional output of the
+/// parser for tools that work on the source (the language server), filled
+/// even when the scene has errors.
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/parse/diagnostic.h"
+#include "core/scene/scene_desc.h"
+
+namespace f2 {
+
+/// A token of the source: its place (1-based line, 1-based byte column) and length in bytes.
+struct TokenSpan {
+    SourceLoc loc;
+    int length = 0;
+};
+
+/// An object as its creating command made it (no keys yet), and where.
+struct IndexedObject {
+    SceneObject object;
+    TokenSpan name;        ///< the name argument of the creating command
+    SourceLoc command;     ///< the command's first character
+};
+
+/// A command argument that names an existing object (`r1`, or the `r1` of `r1.head`:
+/// a part after the name is read from the source).
+struct NameUse {
+    std::size_t object = 0;  ///< index into SymbolIndex::objects
+    TokenSpan name;          ///< the name only, without `.part`
+    std::string command;     ///< the command it appears in, such as "/key"
+};
+
+/// A command line that tools list as a symbol of the scene: `/camera`, lights.
+struct IndexedCommand {
+    std::string command;
+    SourceLoc loc;
+};
+
+struct SymbolIndex {
+    std::vector<IndexedObject> objects;  ///< in creation order
+    std::vector<NameUse> uses;           ///< in file order
+    std::vector<IndexedCommand> commands;
+
+    void clear() { *this = SymbolIndex{}; }
+    /// Keeps the commands listed as symbols (the camera and lights), ignores the rest.
+    void noteCommand(std::string_view command, const SourceLoc& loc) {
+        if (command == "/camera" || command == "/amb_light" || command == "/dir_light") {
+            commands.push_back({std::string(command), loc});
+        }
+    }
+};
+
+}  // namespace f2

@@ -1,0 +1,85 @@
+#include "core/render/pixel_report.h"
+
+#include <algorithm>
+#include <tuple>
+
+#include "core/scene/models.h"
+
+namespace f2 {
+
+namespace {
+const char* shapeName(ShapeKind kind) {
+    switch (kind) {
+        case ShapeKind::Sphere: return "sphere";
+        case ShapeKind::Cylinder: return "cylinder";
+        case ShapeKind::Box: return "box";
+    }
+    return "?";
+}
+
+/// Every primitive `ray` crosses within (tMin, inf) other than `skip`, by
+/// brute force (not the BVH, which the report is there to check), nearest
+/// first and equal distances by index.
+std::vector<PixelReport::Crossing> crossingsOf(const EvaluatedFrame& frame, const Ray& ray, float tMin,
+                                               std::uint32_t skip = Bvh::kNoPrimitive) {
+    std::vector<PixelReport::Crossing> out;
+    for (std::uint32_t i = 0; i < frame.primitives.size(); ++i) {
+        PixelReport::Crossing c{i, 0, Face::Curved};
+        if (i != skip && intersectPrimitive(frame.primitives[i], ray, tMin, kInfinity, c.t, c.face)) out.push_back(c);
+    }
+    std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) {
+        return std::tie(a.t, a.primitive) < std::tie(b.t, b.primitive);
+    });
+    return out;
+}
+}  // namespace
+
+PixelReport tracePixel(const FrameScene& frame, const Camera& camera, int x, int y) {
+    PixelReport r;
+    r.px = float(x) + 0.5f;
+    r.py = float(y) + 0.5f;
+    r.ray = camera.rayThrough(r.px, r.py);
+    r.tMin = primaryRayStart(r.ray.origin);
+    r.crossings = crossingsOf(frame, r.ray, r.tMin);
+    r.hit = frame.bvh.intersect(r.ray, r.tMin, kInfinity, r.chosen);
+    if (!r.hit) {
+        r.color = frame.background;
+    } else {
+        const Surface& surface = frame.surfaces[r.chosen.primitive];
+        r.surface = shadingPoint(frame, r.ray, r.chosen);
+        r.surfaceColor = surface.color;
+        r.material = surface.material;
+        r.ambientTerm = surface.material.ka * frame.ambient;
+        r.color = shadeHit(frame, r.ray, r.chosen, [&](const LightTerm& term) {
+            PixelReport::Light light{term, frame.lights[term.light].toLight};
+            if (term.shadowed) {
+                auto blockers = crossingsOf(frame, {r.surface.shadowOrigin, light.toLight}, 0.0f, r.surface.skip);
+                if (!blockers.empty()) {
+                    light.occluder = blockers.front().primitive;
+                    light.occluderT = blockers.front().t;
+                }
+            }
+            r.lights.push_back(light);
+        });
+    }
+    r.pixel = {toByte(r.color.x), toByte(r.color.y), toByte(r.color.z)};
+    return r;
+}
+
+std::string primitiveName(const SceneDesc& scene, const EvaluatedFrame& frame, std::uint32_t primitive) {
+    if (primitive >= frame.primitives.size()) return "?";
+    // The object whose run of primitives holds this one.
+    auto next = std::upper_bound(frame.firstPrimitive.begin(), frame.firstPrimitive.end(), primitive);
+    std::size_t object = std::size_t(next - frame.firstPrimitive.begin()) - 1;
+    if (object >= scene.objects.size()) return "?";
+    const SceneObject& o = scene.objects[object];
+    std::string name = o.name;
+    if (isModel(o.kind)) {
+        const ModelDef& model = modelOf(o.kind);
+        std::size_t shape = primitive - frame.firstPrimitive[object];
+        if (shape < model.shapes.size()) name += std::string(".") + kPartNames[std::size_t(model.shapes[shape].part)];
+    }
+    return name + " (" + shapeName(frame.primitives[primitive].kind) + ")";
+}
+
+}  // namespace f2

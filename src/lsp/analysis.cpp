@@ -1,0 +1,220 @@
+#include "lsp/analysis.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include "core/parse/lexer.h"
+
+namespace f2::lsp {
+
+namespace {
+
+int hexValue(char c) {
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+    return -1;
+}
+
+bool isNameStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
+bool isNameChar(char c) { return isNameStart(c) || (c >= '0' && c <= '9'); }
+
+bool contains(const TokenSpan& span, std::size_t lineIndex, std::size_t byte, std::size_t bomBytes) {
+    if (span.loc.line != static_cast<int>(lineIndex) + 1) return false;
+    const std::size_t begin = bomBytes + static_cast<std::size_t>(span.loc.column - 1);
+    return byte >= begin && byte <= begin + static_cast<std::size_t>(span.length);
+}
+
+bool parses(std::string_view text) {
+    SymbolIndex unused;
+    return parseScene(text, "probe.f2", ParseLimits{}, unused).ok();
+}
+
+}  // namespace
+
+std::string pathFromUri(std::string_view uri) {
+    constexpr std::string_view kFile = "file://";
+    if (!uri.starts_with(kFile)) return std::string(uri);
+    std::string_view rest = uri.substr(kFile.size());
+    // "file://host/path": only the local host (empty or "localhost") is meaningful.
+    if (rest.starts_with("localhost/")) rest.remove_prefix(9);
+    std::string path;
+    for (std::size_t i = 0; i < rest.size(); ++i) {
+        if (rest[i] == '%' && i + 2 < rest.size()) {
+            const int hi = hexValue(rest[i + 1]), lo = hexValue(rest[i + 2]);
+            if (hi >= 0 && lo >= 0) {
+                path += static_cast<char>(hi * 16 + lo);
+                i += 2;
+                continue;
+            }
+        }
+        path += rest[i];
+    }
+    return path;
+}
+
+std::string uriFromPath(std::string_view path) {
+    static constexpr char kHex[] = "0123456789ABCDEF";
+    std::string uri = "file://";
+    for (char c : path) {
+        const auto b = static_cast<unsigned char>(c);
+        if (std::isalnum(b) || c == '/' || c == '-' || c == '_' || c == '.' || c == '~') {
+            uri += c;
+        } else {
+            uri += '%';
+            uri += kHex[b >> 4];
+            uri += kHex[b & 15];
+        }
+    }
+    return uri;
+}
+
+Analysis analyze(std::string uri, TextDocument document) {
+    Analysis a;
+    a.path = pathFromUri(uri);
+    a.uri = std::move(uri);
+    a.document = std::move(document);
+    a.result = parseScene(a.document.text(), a.path, ParseLimits{}, a.index);
+    a.variables = scanVariables(a.document);
+    return a;
+}
+
+std::optional<PartSuffix> partAfter(const Analysis& a, const TokenSpan& name) {
+    if (!a.inDocument(name.loc)) return std::nullopt;
+    const int lineIndex = name.loc.line - 1;
+    const std::string_view line = a.document.line(lineIndex);
+    const std::size_t bom = lineIndex == 0 && a.document.text().starts_with("\xEF\xBB\xBF") ? 3 : 0;
+    const std::size_t dot = bom + static_cast<std::size_t>(name.loc.column - 1 + name.length);
+    if (dot >= line.size() || line[dot] != '.') return std::nullopt;
+    std::size_t end = dot + 1;
+    while (end < line.size() && isNameChar(line[end])) ++end;
+    const std::string_view word = line.substr(dot + 1, end - dot - 1);
+    for (int i = 0; i < kPartCount; ++i) {
+        if (word == kPartNames[static_cast<std::size_t>(i)]) return PartSuffix{i, dot + 1, end};
+    }
+    return std::nullopt;
+}
+
+SymbolAt symbolAt(const Analysis& a, Position p) {
+    SymbolAt at;
+    const long byteLong = a.document.byteInLine(p);
+    if (byteLong < 0) return at;
+    const auto byte = static_cast<std::size_t>(byteLong);
+    const auto lineIndex = static_cast<std::size_t>(p.line);
+    const std::size_t bom = p.line == 0 && a.document.text().starts_with("\xEF\xBB\xBF") ? 3 : 0;
+
+    auto onName = [&](const TokenSpan& span, std::size_t object) {
+        if (!a.inDocument(span.loc) || !contains(span, lineIndex, byte, bom)) {
+            // The part after `name.` belongs to the same object.
+            if (a.inDocument(span.loc) && span.loc.line == p.line + 1) {
+                if (const auto suffix = partAfter(a, span); suffix && byte >= suffix->begin && byte <= suffix->end) {
+                    const std::string_view line = a.document.line(p.line);
+                    at = {SymbolAt::Kind::Part, object, suffix->part, {},
+                          {{p.line, utf16Length(line.substr(0, suffix->begin))},
+                           {p.line, utf16Length(line.substr(0, suffix->end))}},
+                          {}};
+                    return true;
+                }
+            }
+            return false;
+        }
+        at = {SymbolAt::Kind::Object, object, -1, {}, a.rangeOf(span), {}};
+        return true;
+    };
+    // A variable (also inside the braces of a name such as s{i}), or the path of an /include.
+    const std::string_view lineText = a.document.line(p.line);
+    auto rangeInLine = [&](std::size_t begin, std::size_t end) {
+        return Range{{p.line, utf16Length(lineText.substr(0, begin))}, {p.line, utf16Length(lineText.substr(0, end))}};
+    };
+    for (const VariableOccurrence& v : a.variables) {
+        if (v.line == p.line && byte >= v.begin && byte <= v.end) {
+            at.kind = SymbolAt::Kind::Variable;
+            at.range = rangeInLine(v.begin, v.end);
+            at.text = v.name;
+            return at;
+        }
+    }
+    if (const auto include = includeOn(a.document, p.line); include && byte >= include->begin && byte <= include->end) {
+        at.kind = SymbolAt::Kind::Include;
+        at.range = rangeInLine(include->begin, include->end);
+        at.text = include->path;
+        return at;
+    }
+
+    for (std::size_t i = 0; i < a.index.objects.size(); ++i) {
+        if (onName(a.index.objects[i].name, i)) return at;
+    }
+    for (const NameUse& use : a.index.uses) {
+        if (onName(use.name, use.object)) return at;
+    }
+
+    // A command word.
+    LineTokens tokens;
+    tokenizeLine(a.document.line(p.line), tokens);
+    if (tokens.count > 0) {
+        const Token& first = tokens.tokens[0];
+        const std::size_t begin = static_cast<std::size_t>(first.column - 1);
+        if (first.text.starts_with('/') && byte >= begin && byte <= begin + first.text.size()) {
+            const std::string_view line = a.document.line(p.line);
+            at.kind = SymbolAt::Kind::Command;
+            at.command = first.text;
+            at.range = {{p.line, utf16Length(line.substr(0, begin))},
+                        {p.line, utf16Length(line.substr(0, begin + first.text.size()))}};
+        }
+    }
+    return at;
+}
+
+std::optional<std::size_t> findObject(const SymbolIndex& index, std::string_view name) {
+    for (std::size_t i = 0; i < index.objects.size(); ++i) {
+        if (index.objects[i].object.name == name) return i;
+    }
+    return std::nullopt;
+}
+
+std::array<std::size_t, 5> keyCounts(const Analysis& a, std::size_t object) {
+    std::array<std::size_t, 5> counts{};
+    if (a.result.ok() && object < a.result.scene->objects.size()) {
+        const SceneObject& o = a.result.scene->objects[object];
+        counts[0] = o.track.keys.size();
+        for (int i = 0; i < kPartCount; ++i) {
+            counts[static_cast<std::size_t>(i + 1)] = o.partTracks[static_cast<std::size_t>(i)].keys.size();
+        }
+        return counts;
+    }
+    for (const NameUse& use : a.index.uses) {
+        if (use.object != object || use.command != "/key") continue;
+        const auto suffix = partAfter(a, use.name);
+        counts[suffix ? static_cast<std::size_t>(suffix->part + 1) : 0] += 1;
+    }
+    return counts;
+}
+
+std::string_view objectKindName(ObjectKind kind) {
+    static constexpr std::array<std::string_view, 5> kNames = {"sphere", "cylinder", "box", "robot", "human"};
+    return kNames[static_cast<std::size_t>(kind)];
+}
+
+bool isValidName(std::string_view name) {
+    return !name.empty() && isNameStart(name.front()) && std::all_of(name.begin() + 1, name.end(), isNameChar);
+}
+
+bool LanguageFeatures::knows(std::string_view command) const {
+    return std::find(commands.begin(), commands.end(), command) != commands.end();
+}
+
+const LanguageFeatures& languageFeatures() {
+    static const LanguageFeatures features = [] {
+        LanguageFeatures f;
+        f.commands = commandNames();
+        for (std::string_view mode : {"linear", "ease", "ease_in", "ease_out", "step", "spline"}) {
+            if (parses("/sphere s 1 0 0 0\n/interp s " + std::string(mode) + "\n")) f.modes.push_back(mode);
+        }
+        f.cameraTarget = parses("/key 0 camera\n");
+        f.keyModes = parses("/sphere s 1 0 0 0\n/key 0 s linear\n");
+        return f;
+    }();
+    return features;
+}
+
+}  // namespace f2::lsp

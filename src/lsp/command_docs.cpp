@@ -1,0 +1,116 @@
+#include "lsp/command_docs.h"
+
+#include <array>
+
+namespace f2::lsp {
+
+namespace {
+
+using enum ArgKind;
+
+constexpr std::array kNumbers = {Number};
+constexpr std::array kCreate = {NewName, Number};
+constexpr std::array kTargetThenNumbers = {Target, Number};
+constexpr std::array kAnim = {Target, Part};
+constexpr std::array kKey = {Number, Target, Number, Number, Number, Number, Number, Number, Mode};
+constexpr std::array kInterp = {Target, Mode};
+constexpr std::array kLet = {Variable, Number};
+constexpr std::array kRepeat = {Variable, Number};
+constexpr std::array kInclude = {Path};
+constexpr std::array kLookAt = {PointOrTarget, Number};
+constexpr std::array kAttach = {Object, Target};
+constexpr std::array<ArgKind, 0> kNone = {};
+
+constexpr std::array kDocs = {
+    CommandDoc{"/camera", "/camera <w> <h> <d> [<px> <py> <pz> [<rx> <ry> <rz>]]",
+               "/camera ${1:800} ${2:600} ${3:0.5} ${4:0} ${5:0} ${6:0} ${7:0} ${8:0} ${9:0}",
+               "An image of `w × h` pixels seen from the eye at `p` (default the origin), looking along "
+               "the rotated +z axis. `d` is the distance to the screen in screen widths (`0.5` gives "
+               "90°). At most one per scene; without one, `/camera 800 600 0.5`.",
+               kNumbers},
+    CommandDoc{"/amb_light", "/amb_light <i>", "/amb_light ${1:0.2}",
+               "Ambient light of intensity `i ≥ 0`; several add up.", kNumbers},
+    CommandDoc{"/dir_light", "/dir_light <i> <x> <y> <z>", "/dir_light ${1:0.8} ${2:0} ${3:-1} ${4:1}",
+               "A directional light of intensity `i ≥ 0` whose light travels along `(x, y, z)`; it casts "
+               "shadows.",
+               kNumbers},
+    CommandDoc{"/background", "/background <r> <g> <b>", "/background ${1:0} ${2:0} ${3:0}",
+               "Colour of rays that hit nothing, integers 0..255 (default black). At most one per scene.",
+               kNumbers},
+    CommandDoc{"/material", "/material <target> <ka> <kd> <ks> <n>",
+               "/material ${1:target} ${2:1} ${3:1} ${4:0.3} ${5:32}",
+               "Phong coefficients of an object or part (default `1 1 0.3 32`): `ka, kd, ks ≥ 0`, `n > 0`. "
+               "On a robot or human it applies to every part.",
+               kTargetThenNumbers},
+    CommandDoc{"/sphere", "/sphere <name> <r> <px> <py> <pz> [<rx> <ry> <rz>]",
+               "/sphere ${1:name} ${2:r} ${3:0} ${4:0} ${5:0}", "A sphere of radius `r > 0` centred at `p`.",
+               kCreate},
+    CommandDoc{"/cylinder", "/cylinder <name> <r> <h> <px> <py> <pz> [<rx> <ry> <rz>]",
+               "/cylinder ${1:name} ${2:r} ${3:h} ${4:0} ${5:0} ${6:0}",
+               "A closed cylinder of radius `r > 0` and height `h > 0` along its local y, centred on `p`.",
+               kCreate},
+    CommandDoc{"/box", "/box <name> <sx> <sy> <sz> <px> <py> <pz> [<rx> <ry> <rz>]",
+               "/box ${1:name} ${2:sx} ${3:sy} ${4:sz} ${5:0} ${6:0} ${7:0}",
+               "A box with sides `sx, sy, sz > 0` along its local axes, centred on `p`.", kCreate},
+    CommandDoc{"/paint", "/paint <target> <r> <g> <b>", "/paint ${1:target} ${2:200} ${3:200} ${4:200}",
+               "Colour of an object, a whole model or one part (`name.head`), integers 0..255. Applied in "
+               "file order.",
+               kTargetThenNumbers},
+    CommandDoc{"/robot", "/robot <name> <px> <py> <pz> [<rx> <ry> <rz>]",
+               "/robot ${1:name} ${2:0} ${3:0} ${4:0} ${5:0} ${6:180} ${7:0}",
+               "The robot F-2 (200 tall, stands on local y = −105) with its root at `p`, facing its local "
+               "+z. Parts: body, head (with two eyes), lhand, rhand.",
+               kCreate},
+    CommandDoc{"/human", "/human <name> <px> <py> <pz> [<rx> <ry> <rz>]",
+               "/human ${1:name} ${2:0} ${3:0} ${4:0} ${5:0} ${6:180} ${7:0}",
+               "A human (182 tall, stands on local y = −105) with its root at `p`, facing its local +z. "
+               "Parts: body, head, lhand, rhand.",
+               kCreate},
+    CommandDoc{"/anim", "/anim <target>  or  /anim <name> <part>", "/anim ${1:target}",
+               "Marks a target as animated (checked, no other effect: a `/key` needs no `/anim`).", kAnim},
+    CommandDoc{"/key", "/key <t> <target> [<px> <py> <pz> <rx> <ry> <rz>] [<mode>]",
+               "/key ${1:0} ${2:target} ${3:0} ${4:0} ${5:0} ${6:0} ${7:0} ${8:0}",
+               "Frame `t` is a key of `target`: an object's absolute position and rotation, or a part's "
+               "offset from its pivot and rotation about it. Without the six numbers: the rest state.",
+               kKey},
+    CommandDoc{"/interp", "/interp <target> <mode>", "/interp ${1:target} ${2|linear,ease,spline|}",
+               "How the target moves between its keys: `linear` (default), `ease` (smoothstep), `spline` "
+               "(Catmull-Rom through the keys), and in the second edition `ease_in`, `ease_out`, `step`.",
+               kInterp},
+    CommandDoc{"/fps", "/fps <n>", "/fps ${1:24}", "Playback frames per second, 1..1000 (default 24).",
+               kNumbers},
+    CommandDoc{"/let", "/let <var> <number>", "/let ${1:var} ${2:0}",
+               "Defines a variable from the next line on; use it in an expression as `(var)`.", kLet},
+    CommandDoc{"/repeat", "/repeat <var> <from> <to> [<step>]  …  /end",
+               "/repeat ${1:i} ${2:1} ${3:3}\n$0\n/end",
+               "Reads the lines up to `/end` once for each value of `var` from `from` to `to`.", kRepeat},
+    CommandDoc{"/end", "/end", "/end", "Closes a `/repeat` block.", kNone},
+    CommandDoc{"/include", "/include <path>", "/include ${1:file.f2}",
+               "Reads another scene file here, as if its lines stood here (relative to this file's "
+               "directory).",
+               kInclude},
+    CommandDoc{"/look_at", "/look_at <x> <y> <z>  or  /look_at <target>", "/look_at ${1:target}",
+               "At every frame the camera turns to face a fixed point, an object or a part.", kLookAt},
+    CommandDoc{"/attach", "/attach <name> <target>", "/attach ${1:name} ${2:target}",
+               "The object `name` (or `camera`) rides on `target`: its pose is read in the target's frame.",
+               kAttach},
+};
+
+}  // namespace
+
+std::span<const CommandDoc> commandDocs() { return kDocs; }
+
+const CommandDoc* findCommandDoc(std::string_view name) {
+    for (const CommandDoc& d : kDocs) {
+        if (d.name == name) return &d;
+    }
+    return nullptr;
+}
+
+ArgKind argumentKind(const CommandDoc& doc, int index) {
+    if (doc.args.empty()) return ArgKind::Number;
+    const std::size_t i = static_cast<std::size_t>(index);
+    return i < doc.args.size() ? doc.args[i] : doc.args.back();
+}
+
+}  // namespace f2::lsp

@@ -1,0 +1,214 @@
+// textDocument/completion: commands (as snippets), object names, parts after
+// `name.`, interpolation modes, `camera` — what fits the argument under the cursor.
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+#include "core/parse/lexer.h"
+#include "core/scene/scene_desc.h"
+#include "lsp/command_docs.h"
+#include "lsp/features.h"
+
+namespace f2::lsp {
+
+namespace {
+
+/// The token being typed: its index on the line and its text up to the cursor.
+struct Typing {
+    int index = 0;               ///< 0 = the command word
+    std::string_view partial;    ///< the token's bytes before the cursor
+    std::size_t begin = 0;       ///< byte where the token starts
+    std::string_view command;    ///< token 0 of the line
+};
+
+std::optional<Typing> typingAt(std::string_view line, std::size_t byte) {
+    const std::string_view before = line.substr(0, byte);
+    if (before.find('#') != std::string_view::npos) return std::nullopt;  // in a comment
+    LineTokens tokens;
+    tokenizeLine(before, tokens);
+    Typing t;
+    const bool afterSpace = before.empty() || before.back() == ' ' || before.back() == '\t';
+    if (tokens.count > kMaxStoredTokens) return std::nullopt;
+    if (afterSpace || tokens.count == 0) {
+        t.index = tokens.count;
+        t.begin = byte;
+    } else {
+        const Token& last = tokens.tokens[static_cast<std::size_t>(tokens.count - 1)];
+        t.index = tokens.count - 1;
+        t.partial = last.text;
+        t.begin = static_cast<std::size_t>(last.column - 1);
+    }
+    if (tokens.count > 0) t.command = tokens.tokens[0].text;
+    return t;
+}
+
+Json item(std::string_view label, int kind, std::string_view detail, const Range& replace,
+          std::string_view newText, bool snippet = false) {
+    Json j = {{"label", label},
+              {"kind", kind},
+              {"detail", detail},
+              {"textEdit", {{"range", toJson(replace)}, {"newText", newText}}}};
+    if (snippet) j["insertTextFormat"] = kInsertSnippet;
+    return j;
+}
+
+/// Objects created before line `beforeLine` (1-based) of this document, or in other files.
+std::vector<const IndexedObject*> visibleObjects(const Analysis& a, int beforeLine) {
+    std::vector<const IndexedObject*> out;
+    for (const IndexedObject& o : a.index.objects) {
+        if (!a.inDocument(o.name.loc) || o.name.loc.line < beforeLine) out.push_back(&o);
+    }
+    return out;
+}
+
+void addModes(Json& items, const Range& replace) {
+    for (std::string_view mode : languageFeatures().modes) {
+        items.push_back(item(mode, kCompletionEnumMember, "interpolation mode", replace, mode));
+    }
+}
+
+void addParts(Json& items, const Analysis& a, std::string_view objectName, const Range& replace,
+              std::string_view prefix, int beforeLine) {
+    for (const IndexedObject* o : visibleObjects(a, beforeLine)) {
+        if (o->object.name != objectName || !isModel(o->object.kind)) continue;
+        for (const char* part : kPartNames) {
+            const std::string text = std::string(prefix) + part;
+            items.push_back(item(text, kCompletionField,
+                                 std::string("part of ") + std::string(objectKindName(o->object.kind)) + " " +
+                                     o->object.name,
+                                 replace, text));
+        }
+        return;
+    }
+}
+
+/// Inside `( … )` or `{ … }`: the variables defined above, pi and the functions.
+Json expressionItems(const Analysis& a, Position p, std::string_view line, std::size_t byte) {
+    std::size_t begin = byte;
+    while (begin > 0 && (std::isalnum(static_cast<unsigned char>(line[begin - 1])) || line[begin - 1] == '_')) --begin;
+    const Range replace{{p.line, utf16Length(line.substr(0, begin))}, p};
+    Json items = Json::array();
+    std::vector<std::string> seen;
+    for (const VariableOccurrence& v : a.variables) {
+        if (!v.definition || v.line > p.line || std::find(seen.begin(), seen.end(), v.name) != seen.end()) continue;
+        seen.push_back(v.name);
+        items.push_back(item(v.name, kCompletionVariable,
+                             (v.loop ? "loop variable, line " : "variable, line ") + std::to_string(v.line + 1),
+                             replace, v.name));
+    }
+    items.push_back(item("pi", kCompletionVariable, "3.14159…", replace, "pi"));
+    for (std::string_view f : expressionFunctions()) {
+        items.push_back(item(f, kCompletionFunction, f == "atan2" ? "atan2(y, x), degrees" : "function", replace,
+                             std::string(f) + "($1)", true));
+    }
+    return items;
+}
+
+/// The argument of `/include`: directories and .f2 files next to the typed path.
+Json includeItems(const Analysis& a, Position p, std::string_view partial, std::size_t begin) {
+    namespace fs = std::filesystem;
+    const bool quoted = partial.starts_with('"');
+    const std::string_view typed = quoted ? partial.substr(1) : partial;
+    const std::size_t slash = typed.rfind('/');
+    const std::string_view directory = slash == std::string_view::npos ? "" : typed.substr(0, slash + 1);
+    const std::string_view rest = slash == std::string_view::npos ? typed : typed.substr(slash + 1);
+    const std::size_t restBegin = begin + partial.size() - rest.size();
+    const std::string_view line = a.document.line(p.line);
+    const Range replace{{p.line, utf16Length(line.substr(0, restBegin))}, p};
+    Json items = Json::array();
+    std::error_code ec;
+    const fs::path where = resolveInclude(a.path, directory.empty() ? "." : directory);
+    constexpr int kMaxEntries = 200;
+    int count = 0;
+    for (fs::directory_iterator it(where, ec), end; !ec && it != end && count < kMaxEntries; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        if (name.starts_with('.')) continue;
+        std::error_code typeError;
+        if (it->is_directory(typeError)) {
+            items.push_back(item(name + "/", kCompletionFile, "directory", replace, name + "/"));
+        } else if (it->path().extension() == ".f2" && it->path() != fs::path(a.path)) {
+            items.push_back(item(name, kCompletionFile, "scene file", replace, name));
+        } else {
+            continue;
+        }
+        ++count;
+    }
+    return items;
+}
+
+}  // namespace
+
+Json completion(const Analysis& a, Position p) {
+    Json items = Json::array();
+    const long byteLong = a.document.byteInLine(p);
+    if (byteLong < 0) return items;
+    const std::string_view line = a.document.line(p.line);
+    const auto typing = typingAt(line, static_cast<std::size_t>(byteLong));
+    if (!typing) return items;
+    const Range replace{{p.line, utf16Length(line.substr(0, typing->begin))}, p};
+    const LanguageFeatures& language = languageFeatures();
+    if (typing->index > 0 && insideExpression(line, static_cast<std::size_t>(byteLong))) {
+        return expressionItems(a, p, line, static_cast<std::size_t>(byteLong));
+    }
+
+    if (typing->index == 0) {
+        for (const CommandDoc& doc : commandDocs()) {
+            if (!language.knows(doc.name)) continue;
+            Json j = item(doc.name, kCompletionKeyword, doc.syntax, replace, doc.snippet, true);
+            j["documentation"] = {{"kind", "markdown"}, {"value", std::string(doc.meaning)}};
+            items.push_back(std::move(j));
+        }
+        return items;
+    }
+    const CommandDoc* doc = findCommandDoc(typing->command);
+    if (!doc) return items;
+    const int arg = typing->index - 1;
+    const ArgKind kind = argumentKind(*doc, arg);
+    const int lineNumber = p.line + 1;
+
+    // After `name.`: the parts of that model.
+    const std::size_t dot = typing->partial.find('.');
+    if (dot != std::string_view::npos &&
+        (kind == ArgKind::Target || kind == ArgKind::PointOrTarget)) {
+        const std::string_view name = typing->partial.substr(0, dot);
+        addParts(items, a, name, replace, typing->partial.substr(0, dot + 1), lineNumber);
+        return items;
+    }
+    switch (kind) {
+        case ArgKind::Target:
+        case ArgKind::Object:
+        case ArgKind::PointOrTarget:
+            for (const IndexedObject* o : visibleObjects(a, lineNumber)) {
+                items.push_back(item(o->object.name, kCompletionVariable, objectKindName(o->object.kind), replace,
+                                     o->object.name));
+            }
+            if (language.cameraTarget && doc->name != "/paint" && doc->name != "/material" &&
+                doc->name != "/look_at") {
+                items.push_back(item("camera", kCompletionKeyword, "the scene camera", replace, "camera"));
+            }
+            break;
+        case ArgKind::Part:
+            if (arg == 1) {
+                LineTokens tokens;
+                tokenizeLine(line, tokens);
+                if (tokens.count > 1) addParts(items, a, tokens.tokens[1].text, replace, "", lineNumber);
+            }
+            break;
+        case ArgKind::Mode:
+            addModes(items, replace);
+            break;
+        case ArgKind::Number:
+            // A /key may end with a mode after the target or after the six numbers.
+            if (doc->name == "/key" && arg == 2 && language.keyModes) addModes(items, replace);
+            break;
+        case ArgKind::Path:
+            if (arg == 0) return includeItems(a, p, typing->partial, typing->begin);
+            break;
+        case ArgKind::NewName:
+        case ArgKind::Variable:
+            break;
+    }
+    return items;
+}
+
+}  // namespace f2::lsp

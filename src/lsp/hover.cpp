@@ -1,0 +1,139 @@
+// textDocument/hover: a command's syntax and meaning; an object's kind, where
+// it is created, its parts and keys and its pose at frame 0; a part's shape and pivot.
+#include <cstdio>
+#include <filesystem>
+
+#include "core/anim/track.h"
+#include "core/scene/models.h"
+#include "lsp/command_docs.h"
+#include "lsp/features.h"
+
+namespace f2::lsp {
+
+namespace {
+
+std::string number(double v) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%g", v);
+    return buffer;
+}
+
+std::string vec(const Vec3& v) { return "(" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + ")"; }
+
+/// "sphere r 6", "cylinder r 10, h 100", "box 60 × 50 × 50".
+std::string shapeText(ShapeKind kind, const Vec3& size) {
+    switch (kind) {
+        case ShapeKind::Sphere:
+            return "sphere r " + number(size.x);
+        case ShapeKind::Cylinder:
+            return "cylinder r " + number(size.x) + ", h " + number(size.y);
+        case ShapeKind::Box:
+            return "box " + number(size.x) + " × " + number(size.y) + " × " + number(size.z);
+    }
+    return {};
+}
+
+std::string placeText(const Analysis& a, const SourceLoc& loc) {
+    std::string place = "line " + std::to_string(loc.line);
+    if (!a.inDocument(loc)) place += " of " + loc.file;
+    return place;
+}
+
+Json markdown(std::string text, const Range& range) {
+    return {{"contents", {{"kind", "markdown"}, {"value", std::move(text)}}}, {"range", toJson(range)}};
+}
+
+std::string objectHover(const Analysis& a, std::size_t index) {
+    const IndexedObject& entry = a.index.objects[index];
+    const SceneObject& o = entry.object;
+    std::string text = "**" + std::string(objectKindName(o.kind)) + "** `" + o.name + "`, created at " +
+                       placeText(a, entry.command);
+    if (a.inDocument(entry.command)) {
+        text += ":\n```f2\n" + std::string(a.document.line(entry.command.line - 1)) + "\n```\n";
+    } else {
+        text += "\n\n";
+    }
+    if (!isModel(o.kind)) text += "- " + shapeText(shapeKindOf(o.kind), o.size) + "\n";
+    const auto keys = keyCounts(a, index);
+    text += "- keys: " + std::to_string(keys[0]);
+    if (isModel(o.kind)) {
+        text += " (own)";
+        for (int i = 0; i < kPartCount; ++i) {
+            text += ", " + std::string(kPartNames[static_cast<std::size_t>(i)]) + " " +
+                    std::to_string(keys[static_cast<std::size_t>(i + 1)]);
+        }
+        text += "\n- parts: body, head, lhand, rhand";
+    }
+    text += "\n";
+    // The pose at frame 0 needs the keys, which only a scene without errors has.
+    if (a.result.ok() && index < a.result.scene->objects.size()) {
+        const SceneObject& parsed = a.result.scene->objects[index];
+        const Pose pose = evaluateTrack(parsed.track, 0.0, parsed.rest);
+        text += "- at frame 0: position " + vec(pose.position) + ", rotation " + vec(pose.rotation) + "\n";
+    } else {
+        text += "- as created: position " + vec(o.rest.position) + ", rotation " + vec(o.rest.rotation) +
+                " (the scene has errors, so keys are not evaluated)\n";
+    }
+    return text;
+}
+
+std::string partHover(const Analysis& a, std::size_t index, int part) {
+    const SceneObject& o = a.index.objects[index].object;
+    const std::string_view name = kPartNames[static_cast<std::size_t>(part)];
+    std::string text = "**part** `" + o.name + "." + std::string(name) + "` of " +
+                       std::string(objectKindName(o.kind)) + " `" + o.name + "`\n";
+    if (!isModel(o.kind)) return text;
+    const ModelDef& model = modelOf(o.kind);
+    const ModelPart& mp = model.parts[static_cast<std::size_t>(part)];
+    const std::string parent =
+        mp.parent < 0 ? "the root" : kPartNames[static_cast<std::size_t>(mp.parent)];
+    text += "- pivot " + vec(mp.pivot) + " in " + parent + "'s frame\n";
+    for (const ModelShape& s : model.shapes) {
+        if (static_cast<int>(s.part) != part) continue;
+        text += "- " + shapeText(s.kind, s.size) + " centred at " + vec(s.centre) + (s.ownColor ? " (keeps its colour)" : "") +
+                "\n";
+    }
+    const auto keys = keyCounts(a, index);
+    text += "- keys: " + std::to_string(keys[static_cast<std::size_t>(part + 1)]) + "\n";
+    return text;
+}
+
+std::string variableHover(const Analysis& a, const std::string& name, int line) {
+    const auto def = definitionOf(a.variables, name, line);
+    if (!def) return "**variable** `" + name + "`: not defined in this file (in an included file, or unknown)";
+    return "**" + std::string(def->loop ? "loop variable" : "variable") + "** `" + name + "`, defined at line " +
+           std::to_string(def->line + 1) + ":\n```f2\n" + std::string(a.document.line(def->line)) + "\n```";
+}
+
+std::string includeHover(const Analysis& a, const std::string& path) {
+    const std::string file = resolveInclude(a.path, path);
+    std::error_code ec;
+    const bool exists = std::filesystem::is_regular_file(file, ec);
+    return "**include** `" + file + "`" + (exists ? "" : " (not a readable file)");
+}
+
+}  // namespace
+
+Json hover(const Analysis& a, Position p) {
+    const SymbolAt at = symbolAt(a, p);
+    switch (at.kind) {
+        case SymbolAt::Kind::None:
+            return nullptr;
+        case SymbolAt::Kind::Command: {
+            const CommandDoc* doc = findCommandDoc(at.command);
+            if (!doc) return nullptr;
+            return markdown("```f2\n" + std::string(doc->syntax) + "\n```\n" + std::string(doc->meaning), at.range);
+        }
+        case SymbolAt::Kind::Object:
+            return markdown(objectHover(a, at.object), at.range);
+        case SymbolAt::Kind::Part:
+            return markdown(partHover(a, at.object, at.part), at.range);
+        case SymbolAt::Kind::Variable:
+            return markdown(variableHover(a, at.text, p.line), at.range);
+        case SymbolAt::Kind::Include:
+            return markdown(includeHover(a, at.text), at.range);
+    }
+    return nullptr;
+}
+
+}  // namespace f2::lsp

@@ -1,0 +1,50 @@
+#pragma once
+/// Variables and includes of a document (SPEC 9.4, 9.5), found in its text:
+/// `/let NAME`, `/repeat NAME` define a variable; a name inside `( … )` or
+/// `{ … }` that is not a function uses one; `/include PATH` names a file.
+/// Textual, so it works on a document with errors and needs nothing from the
+/// parser; a variable is known by its name across the document.
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "lsp/text_document.h"
+
+namespace f2::lsp {
+
+struct VariableOccurrence {
+    std::string name;
+    int line = 0;                    ///< 0-based
+    std::size_t begin = 0, end = 0;  ///< bytes in the line
+    bool definition = false;         ///< the name after /let or /repeat
+    bool loop = false;               ///< defined by /repeat
+};
+
+/// Every variable occurrence of the document, in text order.
+std::vector<VariableOccurrence> scanVariables(const TextDocument& doc);
+
+/// The definition a use at `line` refers to: the nearest `/let` above it or an
+/// enclosing `/repeat` (the nearest definition above), else the first one in
+/// the document; nullopt when the document defines no such name.
+std::optional<VariableOccurrence> definitionOf(const std::vector<VariableOccurrence>& all,
+                                               std::string_view name, int line);
+
+/// The path argument of an `/include` line (quotes removed) and its bytes in the line.
+struct IncludePath {
+    std::string path;
+    std::size_t begin = 0, end = 0;  ///< the argument as written, quotes included
+};
+std::optional<IncludePath> includeOn(const TextDocument& doc, int line);
+
+/// An include's file: relative paths from the directory of `documentPath`.
+std::string resolveInclude(std::string_view documentPath, std::string_view path);
+
+/// True when byte `byte` of `line` is inside `( … )` or `{ … }` (not in a comment).
+bool insideExpression(std::string_view line, std::size_t byte);
+
+/// The math functions of expressions (SPEC 9.4).
+const std::vector<std::string_view>& expressionFunctions();
+
+}  // namespace f2::lsp

@@ -1,0 +1,442 @@
+// The language server's parts: framing, UTF-16 positions, incremental
+// changes, and the features whose replies the protocol test does not cover
+// (symbols, folding, key alignment, command completion, robustness).
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+
+#include "core/parse/parser.h"
+#include "lsp/command_docs.h"
+#include "lsp/features.h"
+#include "lsp/message_reader.h"
+#include "lsp/server.h"
+#include "lsp/source_scan.h"
+
+namespace f2::lsp {
+namespace {
+
+std::vector<MessageReader::Item> readAll(MessageReader& reader) {
+    std::vector<MessageReader::Item> items;
+    MessageReader::Item item;
+    while (reader.next(item)) items.push_back(item);
+    return items;
+}
+
+Analysis analysed(std::string text) { return analyze("file:///t/a.f2", TextDocument(std::move(text), 1)); }
+
+TEST(MessageReader, SplitsFramesFedByteByByte) {
+    const std::string stream = frameMessage("{\"a\":1}") + "content-length:  2\r\nX-Other: y\r\n\r\n{}";
+    MessageReader reader;
+    std::vector<MessageReader::Item> items;
+    for (char c : stream) {
+        reader.feed(std::string_view(&c, 1));
+        for (auto& i : readAll(reader)) items.push_back(i);
+    }
+    ASSERT_EQ(items.size(), 2u);
+    EXPECT_EQ(items[0].kind, MessageReader::Item::Kind::Body);
+    EXPECT_EQ(items[0].text, "{\"a\":1}");
+    EXPECT_EQ(items[1].text, "{}");
+}
+
+TEST(MessageReader, ReportsBadHeadersAndResynchronises) {
+    MessageReader reader;
+    reader.feed("Content-Type: x\r\n\r\nContent-Length: abc\r\n\r\n" + frameMessage("[1]"));
+    const auto items = readAll(reader);
+    ASSERT_EQ(items.size(), 3u);
+    EXPECT_EQ(items[0].text, "a message header without Content-Length");
+    EXPECT_EQ(items[1].text, "bad Content-Length 'abc'");
+    EXPECT_EQ(items[2].text, "[1]");
+}
+
+TEST(MessageReader, SkipsAnOversizedBodyWithoutKeepingIt) {
+    MessageReader reader;
+    const std::size_t size = MessageReader::kMaxBodyBytes + 10;
+    reader.feed("Content-Length: " + std::to_string(size) + "\r\n\r\n");
+    auto items = readAll(reader);
+    ASSERT_EQ(items.size(), 1u);
+    EXPECT_EQ(items[0].kind, MessageReader::Item::Kind::Problem);
+    // The body arrives in chunks and is dropped; the next message is read.
+    const std::string chunk(1 << 20, 'x');
+    std::size_t sent = 0;
+    while (sent + chunk.size() <= size) {
+        reader.feed(chunk);
+        sent += chunk.size();
+        EXPECT_TRUE(readAll(reader).empty());
+    }
+    reader.feed(std::string(size - sent, 'x') + frameMessage("{}"));
+    items = readAll(reader);
+    ASSERT_EQ(items.size(), 1u);
+    EXPECT_EQ(items[0].text, "{}");
+}
+
+TEST(MessageReader, DropsEndlessGarbage) {
+    MessageReader reader;
+    reader.feed(std::string(3 * MessageReader::kMaxHeaderBytes, 'g'));
+    const auto items = readAll(reader);
+    ASSERT_EQ(items.size(), 1u);
+    EXPECT_EQ(items[0].kind, MessageReader::Item::Kind::Problem);
+    reader.feed("\r\n\r\n" + frameMessage("1"));  // the rest of a garbage header, then a message
+    const auto after = readAll(reader);
+    ASSERT_FALSE(after.empty());
+    EXPECT_EQ(after.back().text, "1");
+}
+
+TEST(Positions, CountUtf16Units) {
+    EXPECT_EQ(utf16Length("abc"), 3);
+    EXPECT_EQ(utf16Length("\xD0\xBF"), 1);          // п: 2 bytes, 1 unit
+    EXPECT_EQ(utf16Length("\xE2\x82\xAC"), 1);      // €: 3 bytes, 1 unit
+    EXPECT_EQ(utf16Length("\xF0\x9F\x98\x80"), 2);  // 😀: 4 bytes, a surrogate pair
+    EXPECT_EQ(utf16Length("\xFF\x80"), 2);          // invalid bytes: one unit each
+    const std::string line = "a\xF0\x9F\x98\x80" "b";
+    EXPECT_EQ(byteOffsetOfUtf16(line, 1), 1u);
+    EXPECT_EQ(byteOffsetOfUtf16(line, 2), 1u);  // inside the pair: its start
+    EXPECT_EQ(byteOffsetOfUtf16(line, 3), 5u);
+    EXPECT_EQ(byteOffsetOfUtf16(line, 99), line.size());
+}
+
+TEST(Positions, TokenRangesFromParserPlaces) {
+    const TextDocument doc("\xEF\xBB\xBF/fps x\r\n/paint \xD0\xBF 1 2\n", 1);
+    // Line 1 columns count from after the byte order mark, which is one UTF-16 unit.
+    EXPECT_EQ(doc.tokenRange(1, 6), (Range{{0, 6}, {0, 7}}));
+    EXPECT_EQ(doc.tokenRange(2, 8), (Range{{1, 7}, {1, 8}}));
+    EXPECT_EQ(doc.tokenRange(2, 11), (Range{{1, 9}, {1, 10}}));
+    // Past the end of the line and past the last line: clamped, never outside the text.
+    EXPECT_EQ(doc.tokenRange(2, 500), (Range{{1, 12}, {1, 12}}));
+    EXPECT_EQ(doc.tokenRange(99, 1), (Range{{2, 0}, {2, 0}}));
+    EXPECT_EQ(doc.lineCount(), 3);
+}
+
+TEST(Positions, ShortDocumentsSurviveCopiesAndMoves) {
+    // Short texts live inside the string object (small-string optimisation):
+    // lines kept as views would point into the old object after a move.
+    TextDocument a("/fps 1\n/x", 1);
+    TextDocument b = a;
+    TextDocument c = std::move(a);
+    a = TextDocument("zzzzzzzzzz", 2);
+    EXPECT_EQ(b.line(0), "/fps 1");
+    EXPECT_EQ(c.line(1), "/x");
+    EXPECT_EQ(a.line(0), "zzzzzzzzzz");
+}
+
+TEST(Server, HandlesALargeDocument) {
+    // 100,000 objects and keys: every request answers (no size-dependent failure).
+    std::string text = "/amb_light 1\n";
+    for (int i = 0; i < 50'000; ++i) {
+        text += "/sphere s" + std::to_string(i) + " 1 " + std::to_string(i) + " 0 0\n/key 1 s" + std::to_string(i) + "\n";
+    }
+    const Analysis a = analysed(text);
+    EXPECT_TRUE(a.result.ok());
+    const Json refs = references(a, {100'000, 8}, true);  // "/key 1 s49999"
+    ASSERT_TRUE(refs.is_array());
+    EXPECT_EQ(refs.size(), 2u);
+    EXPECT_EQ(documentSymbols(a).size(), 50'001u);
+}
+
+TEST(Changes, ApplyRangesInUtf16Units) {
+    const std::string text = "/paint \xF0\x9F\x98\x80 1\n/fps 24\n";
+    const Json change = {{"range", {{"start", {{"line", 0}, {"character", 7}}}, {"end", {{"line", 0}, {"character", 9}}}}},
+                         {"text", "s"}};
+    EXPECT_EQ(applyChange(text, change), "/paint s 1\n/fps 24\n");
+    const Json whole = {{"text", "/fps 1"}};
+    EXPECT_EQ(applyChange(text, whole), "/fps 1");
+    const Json reversed = {{"range", {{"start", {{"line", 1}, {"character", 0}}}, {"end", {{"line", 0}, {"character", 0}}}}},
+                           {"text", ""}};
+    EXPECT_THROW(applyChange(text, reversed), RequestError);
+}
+
+TEST(Diagnostics, WarningsAndErrorsWithTokenRanges) {
+    const Analysis a = analysed("/amb_light 1\n/sphere ball 10 0 0 0\n/key 5 ball\n/key 5 ball\n/fps 24x\n");
+    const Json published = publishDiagnostics(a);
+    ASSERT_EQ(published.size(), 1u);
+    EXPECT_EQ(published[0]["uri"], "file:///t/a.f2");
+    const Json& list = published[0]["diagnostics"];
+    ASSERT_EQ(list.size(), 2u) << list.dump();
+    EXPECT_EQ(list[0]["severity"], kSeverityWarning);
+    EXPECT_EQ(list[0]["range"], toJson(Range{{3, 5}, {3, 6}}));  // the frame of the later key
+    EXPECT_EQ(list[1]["severity"], kSeverityError);
+    EXPECT_EQ(list[1]["range"], toJson(Range{{4, 5}, {4, 8}}));
+}
+
+TEST(Outline, SymbolsListObjectsPartsCameraAndLights) {
+    const Analysis a = analysed(
+        "/camera 320 240 0.5\n/sphere ball 10 0 0 0\n/robot r1 0 0 0\n/dir_light 1 0 -1 0\n"
+        "/key 0 r1.head\n/key 5 r1.head 0 0 0 0 30 0\n/key 5 ball\n");
+    const Json symbols = documentSymbols(a);
+    ASSERT_EQ(symbols.size(), 4u);
+    EXPECT_EQ(symbols[0]["name"], "camera");
+    EXPECT_EQ(symbols[0]["detail"], "320 240 0.5");
+    EXPECT_EQ(symbols[1]["name"], "ball");
+    EXPECT_EQ(symbols[1]["detail"], "sphere, 1 key");
+    EXPECT_EQ(symbols[2]["name"], "r1");
+    EXPECT_EQ(symbols[2]["detail"], "robot, 0 keys");
+    ASSERT_EQ(symbols[2]["children"].size(), 4u);
+    EXPECT_EQ(symbols[2]["children"][1]["name"], "head");
+    EXPECT_EQ(symbols[2]["children"][1]["detail"], "2 keys");
+    EXPECT_EQ(symbols[3]["name"], "dir_light");
+    EXPECT_EQ(symbols[3]["kind"], kSymbolEvent);
+}
+
+TEST(Outline, FoldsRepeatBlocksKeepingEndVisible) {
+    const Analysis a = analysed("/repeat i 1 3\n  /sphere s{i} 1 (i) 0 0\n  /repeat j 1 2\n    /fps 1\n  /end\n/end\n");
+    EXPECT_EQ(foldingRanges(a), Json::parse(R"([{"startLine":2,"endLine":3,"kind":"region"},
+                                                {"startLine":0,"endLine":4,"kind":"region"}])"));
+}
+
+TEST(KeyFormat, AlignsRunsOfKeysIntoColumns) {
+    const Analysis a = analysed(
+        "/robot r1 0 0 0\n"
+        "  /key 0 r1.lhand   # rest\n"
+        "  /key 15 r1.lhand 0 0 0 120 45 0\n"
+        "  /key 5 r1 0 0 200 0 -135.5 0  # turn\n"
+        "/fps 24\n"
+        "/key 1 r1\n");
+    const Json edits = formatKeys(a);
+    ASSERT_EQ(edits.size(), 3u);
+    EXPECT_EQ(edits[0]["newText"], "  /key  0 r1.lhand" + std::string(23, ' ') + "# rest");
+    EXPECT_EQ(edits[1]["newText"], "  /key 15 r1.lhand 0 0   0 120     45 0");
+    EXPECT_EQ(edits[2]["newText"], "  /key  5 r1       0 0 200   0 -135.5 0  # turn");
+    EXPECT_EQ(edits[1]["range"], toJson(Range{{2, 0}, {2, 33}}));
+    // Aligned text is left alone.
+    std::string text = "/robot r1 0 0 0\n";
+    for (const Json& e : edits) text += e["newText"].get<std::string>() + "\n";
+    EXPECT_TRUE(formatKeys(analysed(text)).empty());
+}
+
+TEST(Hover, PrimitiveSizeCommandSyntaxAndBrokenScenes) {
+    const Analysis a = analysed("/amb_light 1\n/box crate 10 20 30 1 2 3\n/key 4 crate 0 0 0 0 90 0\n/fps x\n");
+    const Json onName = hover(a, {2, 9});
+    ASSERT_TRUE(onName.is_object());
+    const std::string text = onName["contents"]["value"];
+    EXPECT_NE(text.find("**box** `crate`, created at line 2"), std::string::npos) << text;
+    EXPECT_NE(text.find("- box 10 × 20 × 30\n- keys: 1\n"), std::string::npos) << text;
+    // The scene has an error (line 4): the pose shown is the one it was created with.
+    EXPECT_NE(text.find("as created: position (1, 2, 3), rotation (0, 0, 0)"), std::string::npos) << text;
+    const Json onCommand = hover(a, {1, 2});
+    EXPECT_EQ(onCommand["range"], toJson(Range{{1, 0}, {1, 4}}));
+    EXPECT_EQ(onCommand["contents"]["value"].get<std::string>().rfind("```f2\n/box <name> <sx>", 0), 0u);
+    EXPECT_TRUE(hover(a, {1, 17}).is_null());  // a number
+}
+
+// Second edition (SPEC 9.4, 9.5): variables and includes are found in the text.
+constexpr const char* kLoops =
+    "/let n 3\n"                                 // 0
+    "/repeat i 1 (n)  # (ignored) \n"           // 1
+    "  /sphere s{i} 10 (i * 30 + sin(n)) 0 0\n"  // 2
+    "/end\n"                                     // 3
+    "/let n (n + 1)\n"                           // 4
+    "/fps (n)\n";                                // 5
+
+TEST(Variables, FoundInTheText) {
+    const TextDocument doc(kLoops, 1);
+    const auto all = scanVariables(doc);
+    std::vector<std::string> seen;
+    for (const VariableOccurrence& v : all) {
+        seen.push_back(std::to_string(v.line) + ":" + v.name + (v.definition ? "=" : ""));
+    }
+    EXPECT_EQ(seen, (std::vector<std::string>{"0:n=", "1:i=", "1:n", "2:i", "2:i", "2:n", "4:n=", "4:n", "5:n"}));
+    EXPECT_EQ(definitionOf(all, "n", 5)->line, 4);
+    EXPECT_EQ(definitionOf(all, "n", 2)->line, 0);
+    EXPECT_TRUE(definitionOf(all, "i", 2)->loop);
+    EXPECT_FALSE(definitionOf(all, "zz", 2));
+}
+
+TEST(Variables, DefinitionReferencesRenameHoverCompletion) {
+    const Analysis a = analysed(kLoops);
+    // From the use of n in "(i * 30 + sin(n))" (line 2, column 32) to "/let n 3".
+    EXPECT_EQ(definition(a, {2, 32}), location(a.uri, Range{{0, 5}, {0, 6}}));
+    EXPECT_EQ(definition(a, {5, 6}), location(a.uri, Range{{4, 5}, {4, 6}}));
+    EXPECT_EQ(references(a, {2, 32}, false).size(), 4u);
+    EXPECT_EQ(references(a, {2, 32}, true).size(), 6u);
+    const Json edit = rename(a, {2, 13}, "k");
+    ASSERT_EQ(edit["changes"][a.uri].size(), 3u);  // the /repeat's i and two uses
+    EXPECT_EQ(edit["changes"][a.uri][0]["range"], toJson(Range{{1, 8}, {1, 9}}));
+    EXPECT_THROW(rename(a, {2, 13}, "pi"), RequestError);
+    EXPECT_THROW(rename(a, {2, 13}, "n"), RequestError);
+    EXPECT_EQ(prepareRename(a, {5, 6})["placeholder"], "n");
+    const std::string text = hover(a, {2, 13})["contents"]["value"];
+    EXPECT_EQ(text, "**loop variable** `i`, defined at line 2:\n```f2\n/repeat i 1 (n)  # (ignored) \n```");
+    // In an expression: the variables defined so far, pi and the functions.
+    const Json items = completion(a, {2, 20});
+    ASSERT_GE(items.size(), 3u);
+    EXPECT_EQ(items[0]["label"], "n");
+    EXPECT_EQ(items[1]["label"], "i");
+    EXPECT_EQ(items[2]["label"], "pi");
+    EXPECT_EQ(items[3]["label"], "sin");
+    EXPECT_EQ(items[3]["textEdit"]["newText"], "sin($1)");
+    // The name s{i} is the objects s1, s2, s3; the parser sees it written as `s{i}`.
+    const std::string object = hover(a, {2, 10})["contents"]["value"];
+    EXPECT_EQ(object.rfind("**sphere** `s1`, created at line 3", 0), 0u) << object;
+    EXPECT_EQ(hover(a, {2, 10})["range"], toJson(Range{{2, 10}, {2, 14}}));
+    EXPECT_THROW(rename(a, {2, 10}, "t"), RequestError);  // written as an expression
+}
+
+TEST(Includes, DefinitionHoverAndPathCompletion) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("f2_lsp_include_" + std::to_string(::getpid()));
+    fs::create_directories(dir / "parts");
+    std::ofstream(dir / "parts" / "floor.f2") << "/box floor 10 10 10 0 0 0\n";
+    std::ofstream(dir / "parts" / "notes.txt") << "x";
+    const std::string main = (dir / "main.f2").string();
+    const Analysis a = analyze(uriFromPath(main), TextDocument("/include \"parts/floor.f2\"\n/include parts/\n", 1));
+    EXPECT_EQ(definition(a, {0, 12}), location(uriFromPath((dir / "parts" / "floor.f2").string()), Range{}));
+    EXPECT_EQ(hover(a, {0, 12})["contents"]["value"], "**include** `" + (dir / "parts" / "floor.f2").string() + "`");
+    const Json items = completion(a, {1, 15});
+    ASSERT_EQ(items.size(), 1u);  // floor.f2; not the .txt
+    EXPECT_EQ(items[0]["label"], "floor.f2");
+    EXPECT_EQ(items[0]["textEdit"]["range"], toJson(Range{{1, 15}, {1, 15}}));
+    fs::remove_all(dir);
+}
+
+TEST(Includes, DiagnosticsInAnIncludedFileAreItsOwn) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("f2_lsp_diag_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    std::ofstream(dir / "part.f2") << "# \xD0\xBF\n/sphere ball 1 0 0 0\n/key 0 bal\n";
+    const Analysis a = analyze(uriFromPath((dir / "main.f2").string()),
+                               TextDocument("/amb_light 1\n/include part.f2\n/key 1 ball\n", 1));
+    const Json published = publishDiagnostics(a);
+    ASSERT_EQ(published.size(), 2u) << published.dump();
+    EXPECT_EQ(published[0]["diagnostics"], Json::array());
+    EXPECT_EQ(published[1]["uri"], uriFromPath((dir / "part.f2").string()));
+    ASSERT_EQ(published[1]["diagnostics"].size(), 1u);
+    EXPECT_EQ(published[1]["diagnostics"][0]["range"], toJson(Range{{2, 7}, {2, 10}}));
+    // The object created in the included file: definition goes there.
+    EXPECT_EQ(definition(a, {2, 8}), location(uriFromPath((dir / "part.f2").string()), Range{{1, 8}, {1, 12}}));
+    fs::remove_all(dir);
+}
+
+TEST(Includes, FixedIncludeErrorsAreClearedOnSave) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("f2_lsp_clear_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    std::ofstream(dir / "part.f2") << "/fps x\n";
+    const std::string mainUri = uriFromPath((dir / "main.f2").string());
+    const std::string partUri = uriFromPath((dir / "part.f2").string());
+    Server server;
+    server.handle(R"({"id":1,"method":"initialize"})");
+    auto diagnosticsOf = [](const std::vector<std::string>& out, const std::string& uri) {
+        Json found;
+        for (const std::string& m : out) {
+            const Json j = Json::parse(m);
+            if (j["params"]["uri"] == uri) found = j["params"]["diagnostics"];
+        }
+        return found;
+    };
+    const auto opened = server.handle(Json({{"method", "textDocument/didOpen"},
+                                            {"params",
+                                             {{"textDocument",
+                                               {{"uri", mainUri}, {"version", 1}, {"text", "/include part.f2\n"}}}}}})
+                                          .dump());
+    EXPECT_EQ(diagnosticsOf(opened, partUri).size(), 1u);
+    std::ofstream(dir / "part.f2") << "/fps 24\n";
+    const auto saved = server.handle(
+        Json({{"method", "textDocument/didSave"}, {"params", {{"textDocument", {{"uri", partUri}}}}}}).dump());
+    EXPECT_EQ(diagnosticsOf(saved, partUri), Json::array());
+    fs::remove_all(dir);
+}
+
+TEST(Completion, OffersTheParsersCommandsAsSnippets) {
+    const Analysis a = analysed("/ro\n");
+    const Json items = completion(a, {0, 3});
+    std::vector<std::string> labels;
+    for (const Json& i : items) labels.push_back(i["label"]);
+    // Exactly the commands the parser knows (the client filters by prefix).
+    std::vector<std::string> known;
+    for (std::string_view c : commandNames()) known.push_back(std::string(c));
+    std::vector<std::string> sortedLabels = labels, sortedKnown = known;
+    std::sort(sortedLabels.begin(), sortedLabels.end());
+    std::sort(sortedKnown.begin(), sortedKnown.end());
+    EXPECT_EQ(sortedLabels, sortedKnown);
+    const auto robot = std::find(labels.begin(), labels.end(), "/robot") - labels.begin();
+    EXPECT_EQ(items[static_cast<std::size_t>(robot)]["textEdit"]["range"], toJson(Range{{0, 0}, {0, 3}}));
+    EXPECT_EQ(items[static_cast<std::size_t>(robot)]["insertTextFormat"], kInsertSnippet);
+}
+
+TEST(Completion, EveryParserCommandIsDocumented) {
+    for (std::string_view c : commandNames()) EXPECT_NE(findCommandDoc(c), nullptr) << c;
+}
+
+TEST(Completion, ModesObjectsAndNothingInComments) {
+    const Analysis a = analysed("/sphere ball 1 0 0 0\n/interp ball \n/paint  # b\n/paint \n");
+    const Json modes = completion(a, {1, 13});
+    ASSERT_GE(modes.size(), 3u);
+    EXPECT_EQ(modes[0]["label"], "linear");
+    EXPECT_TRUE(completion(a, {2, 11}).empty());
+    const Json names = completion(a, {3, 7});
+    ASSERT_EQ(names.size(), 1u);  // not `camera`: /paint cannot take it
+    EXPECT_EQ(names[0]["label"], "ball");
+    EXPECT_EQ(names[0]["detail"], "sphere");
+}
+
+std::string body(const Json& j) { return j.dump(); }
+
+TEST(Server, AnswersGarbageWithErrorsAndNeverThrows) {
+    std::vector<std::string> logged;
+    Server server([&](std::string_view line) { logged.emplace_back(line); });
+    EXPECT_EQ(Json::parse(server.handle("[]")[0])["error"]["code"], kInvalidRequest);
+    EXPECT_EQ(Json::parse(server.handle("{\"id\":1,\"method\":\"initialize\"}")[0])["id"], 1);
+    EXPECT_EQ(Json::parse(server.handle("{\"id\":{},\"method\":\"x\"}")[0])["error"]["code"], kInvalidRequest);
+    const auto noDoc = server.handle(
+        body({{"id", 2}, {"method", "textDocument/hover"}, {"params", {{"textDocument", {{"uri", "file:///x"}}}}}}));
+    EXPECT_EQ(Json::parse(noDoc[0])["error"]["code"], kInvalidParams);
+    EXPECT_TRUE(server.handle(body({{"method", "textDocument/didChange"}, {"params", 5}})).empty());
+    EXPECT_FALSE(logged.empty());
+    // Invalid UTF-8 inside a JSON string is not JSON.
+    const auto open = server.handle(
+        "{\"method\":\"textDocument/didOpen\",\"params\":{\"textDocument\":"
+        "{\"uri\":\"u\",\"version\":1,\"text\":\"/fps \xFF\xFE\"}}}");
+    ASSERT_EQ(open.size(), 1u);
+    EXPECT_EQ(Json::parse(open[0])["error"]["code"], kParseError);
+    const auto control = server.handle(body(
+        {{"method", "textDocument/didOpen"},
+         {"params", {{"textDocument", {{"uri", "u"}, {"version", 1}, {"text", "/fps \x01"}}}}}}));
+    ASSERT_EQ(control.size(), 1u);
+    EXPECT_NE(control[0].find("expected a number, got '\\\\x01'"), std::string::npos) << control[0];
+    const auto huge = server.handle(body({{"id", 3},
+                                          {"method", "textDocument/completion"},
+                                          {"params",
+                                           {{"textDocument", {{"uri", "u"}}},
+                                            {"position", {{"line", 1e300}, {"character", -1}}}}}}));
+    EXPECT_EQ(Json::parse(huge[0])["error"]["code"], kInvalidParams);
+    const auto negative = server.handle(body({{"id", 4},
+                                              {"method", "textDocument/hover"},
+                                              {"params",
+                                               {{"textDocument", {{"uri", "u"}}},
+                                                {"position", {{"line", -5}, {"character", -1}}}}}}));
+    EXPECT_TRUE(Json::parse(negative[0])["result"].is_null());
+    // Random bytes: every reply is valid JSON.
+    std::mt19937 rng(7);
+    for (int n = 0; n < 2000; ++n) {
+        std::string junk(static_cast<std::size_t>(rng() % 64), '\0');
+        for (char& c : junk) c = "{}[]\":,0123 abcnull-\\u"[rng() % 22];
+        for (const std::string& reply : server.handle(junk)) EXPECT_FALSE(Json::parse(reply, nullptr, false).is_discarded());
+    }
+}
+
+TEST(Server, ExitCodeFollowsShutdown) {
+    Server a;
+    a.handle(body({{"method", "exit"}}));
+    EXPECT_TRUE(a.exited());
+    EXPECT_EQ(a.exitCode(), 1);
+    Server b;
+    b.handle(body({{"id", 1}, {"method", "initialize"}}));
+    EXPECT_EQ(Json::parse(b.handle(body({{"id", 2}, {"method", "shutdown"}}))[0])["result"], nullptr);
+    EXPECT_EQ(Json::parse(b.handle(body({{"id", 3}, {"method", "shutdown"}}))[0])["error"]["code"], kInvalidRequest);
+    b.handle(body({{"method", "exit"}}));
+    EXPECT_EQ(b.exitCode(), 0);
+}
+
+TEST(Uris, DecodeAndEncodePaths) {
+    EXPECT_EQ(pathFromUri("file:///a/b%20c.f2"), "/a/b c.f2");
+    EXPECT_EQ(pathFromUri("file:///a/%zz%2"), "/a/%zz%2");
+    EXPECT_EQ(pathFromUri("untitled:Untitled-1"), "untitled:Untitled-1");
+    EXPECT_EQ(uriFromPath("/a/b c.f2"), "file:///a/b%20c.f2");
+}
+
+}  // namespace
+}  // namespace f2::lsp

@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# nvim_test.sh F2: Neovim's built-in LSP client opens data/broken.f2 through
+# `F2 lsp` and checks where the diagnostics land (nvim_test.lua).
+# Exit 77 (skipped) when Neovim is not installed.
+set -u
+here=$(cd "$(dirname "$0")" && pwd)
+if ! command -v nvim >/dev/null 2>&1; then
+  echo "SKIP: nvim is not installed (scripts/install-deps.sh installs Debian's neovim)"
+  exit 77
+fi
+# A private home, so no user configuration or plugin takes part.
+home=$(mktemp -d)
+trap 'rm -rf "$home"' EXIT
+HOME=$home XDG_CONFIG_HOME=$home XDG_DATA_HOME=$home XDG_STATE_HOME=$home \
+  F2=$1 SCENE=$here/data/broken.f2 nvim --headless --clean -c "luafile $here/nvim_test.lua" 2>&1
