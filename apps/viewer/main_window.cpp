@@ -96,7 +96,8 @@ MainWindow::MainWindow(QWidget* parent)
     fpsStatus_ = new QLabel(this);
     sizeStatus_ = new QLabel(this);
     selectionStatus_ = new QLabel(this);
-    for (QLabel* label : {selectionStatus_, frameStatus_, timeStatus_, fpsStatus_, sizeStatus_})
+    refineStatus_ = new QLabel(this);
+    for (QLabel* label : {selectionStatus_, refineStatus_, frameStatus_, timeStatus_, fpsStatus_, sizeStatus_})
         statusBar()->addPermanentWidget(label);
 
     frameTimer_.setSingleShot(true);
@@ -118,6 +119,10 @@ MainWindow::MainWindow(QWidget* parent)
         scheduleFrame();
     });
     connect(playback_, &Playback::playingChanged, timeline_, &TimelineWidget::setPlaying);
+    // Pausing shows the frame again, then refines it.
+    connect(playback_, &Playback::playingChanged, this, [this](bool playing) {
+        if (!playing) scheduleFrame();
+    });
     connect(timeline_, &TimelineWidget::playToggled, playback_, &Playback::togglePlaying);
     connect(timeline_, &TimelineWidget::stepRequested, playback_, &Playback::step);
     connect(timeline_, &TimelineWidget::seekRequested, playback_, &Playback::seek);
@@ -211,6 +216,9 @@ void MainWindow::createActions() {
         scales->addAction(a);
         if (int(scale) == saved) viewport_->setRenderScale(scale);
     }
+    QAction* refineAction = view->addAction(tr("&Refine When Paused"), this, &MainWindow::setRefinement);
+    refineAction->setCheckable(true);
+    refineAction->setChecked(refinement_);
     view->addSeparator();
     view->addAction(editorDock_->toggleViewAction());
     view->addAction(diagnosticsDock_->toggleViewAction());
@@ -453,7 +461,31 @@ void MainWindow::scheduleFrame() {
 void MainWindow::requestFrame() {
     auto scene = document_->scene();
     if (!scene) return;
-    controller_->request({std::move(scene), playback_->time(), viewport_->viewCamera()});
+    lastRequest_ = {std::move(scene), playback_->time(), viewport_->viewCamera(), {}};
+    controller_->request(lastRequest_);
+}
+
+void MainWindow::setRefinement(bool on) {
+    refinement_ = on;
+    if (on)
+        refine();
+    else
+        scheduleFrame();  // back to one sample
+}
+
+bool MainWindow::isRefining() const {
+    return refinement_ && !playback_->isPlaying() && shownFrame_.serial != 0 &&
+           shownFrame_.antialias < kRefinedAntialias;
+}
+
+void MainWindow::refine() {
+    // Only the latest view, only when nothing newer is on its way: any change
+    // (time, camera, size, scene) makes a new one-sample request, which
+    // restarts refinement from its frame.
+    if (!isRefining() || controller_->hasPendingFrames() || frameTimer_.isActive() || !lastRequest_.scene) return;
+    RenderRequest next = lastRequest_;
+    next.options.antialias = shownFrame_.antialias * 2;
+    controller_->request(next);
 }
 
 void MainWindow::onFrameReady(const QImage& image, const FrameInfo& info) {
@@ -461,6 +493,7 @@ void MainWindow::onFrameReady(const QImage& image, const FrameInfo& info) {
     viewport_->setImage(image);
     updateSelectionView();
     updateStatus();
+    refine();
 }
 
 void MainWindow::selectAt(QPointF imagePoint) {
@@ -552,6 +585,10 @@ void MainWindow::updateStatus() {
         sizeStatus_->setText(tr("%1×%2").arg(shownFrame_.size.width()).arg(shownFrame_.size.height()));
     }
     fpsStatus_->setText(tr("%1 fps").arg(controller_->achievedFps(), 0, 'f', 1));
+    const int n = shownFrame_.antialias;
+    refineStatus_->setText(shownFrame_.serial == 0 || playback_->isPlaying() || !refinement_ ? QString()
+                           : isRefining() ? tr("refining: %1×%1 samples…").arg(n)
+                                          : tr("refined: %1×%1 samples").arg(n));
 }
 
 void MainWindow::openDialog() {

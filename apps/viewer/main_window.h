@@ -101,6 +101,13 @@ class MainWindow : public QMainWindow {
     /// Writes the selection's pose at the current frame as its `/key` line
     /// there (replacing one at that frame). One undo step. False without a selection.
     bool keySelectionHere();
+    /// While paused, the picture refines: the same frame again with 2x2, then
+    /// kRefinedAntialias x kRefinedAntialias samples (View › Refine When Paused).
+    void setRefinement(bool on);
+    /// The picture on screen is still to be refined.
+    bool isRefining() const;
+    /// The last step of refinement: what `f2 render --aa 4` computes.
+    static constexpr int kRefinedAntialias = 4;
     /// The status bar's text about the selection.
     QString selectionStatus() const;
     /// The frame on screen (time, timings, size); serial 0 before the first.
@@ -134,6 +141,8 @@ class MainWindow : public QMainWindow {
     void showDiagnostics();
     void onFrameReady(const QImage& image, const FrameInfo& info);
     void requestFrame();
+    /// Asks for the frame on screen again with more samples, if it should refine.
+    void refine();
     void updateStatus();
     /// Outline and status of the selection for the frame on screen.
     void updateSelectionView();
@@ -168,6 +177,9 @@ class MainWindow : public QMainWindow {
     QLabel* sizeStatus_ = nullptr;
     QLabel* selectionStatus_ = nullptr;
     std::optional<Selection> selection_;
+    QLabel* refineStatus_ = nullptr;
+    bool refinement_ = true;
+    RenderRequest lastRequest_;  // the view the latest request showed, at 1 sample
     QTimer frameTimer_;   // coalesces scheduleFrame() calls
     QTimer statusTimer_;  // lets the FPS readout fall to 0 when nothing renders
     FrameInfo shownFrame_;

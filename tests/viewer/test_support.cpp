@@ -25,10 +25,12 @@ QByteArray readFile(const QString& path) {
     return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
 }
 
-Image coreRender(const SceneDesc& scene, double t, int width, int height) {
+Image coreRender(const SceneDesc& scene, double t, int width, int height, int antialias) {
     Renderer renderer;
     Image image;
-    renderer.render(scene, t, Camera::fromDesc(scene.camera).resized(width, height), image);
+    RenderOptions options;
+    options.antialias = antialias;
+    renderer.render(scene, t, Camera::fromDesc(scene.camera).resized(width, height), image, options);
     return image;
 }
 
@@ -38,7 +40,7 @@ bool waitForShownFrame(MainWindow& w, double t) {
     while (clock.elapsed() < kWaitMs) {
         QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
         if (!w.renderController()->hasPendingFrames() && w.shownFrame().serial != 0 &&
-            w.shownFrame().time == t)
+            w.shownFrame().time == t && !w.isRefining())
             return true;
         QTest::qWait(5);
     }
@@ -55,7 +57,8 @@ void expectViewportMatchesCore(MainWindow& w, double t) {
     const QImage shown = w.viewport()->image();
     QVERIFY(!shown.isNull());
     QCOMPARE(shown.size(), w.viewport()->renderSize());
-    const Image expected = coreRender(*w.document()->scene(), t, shown.width(), shown.height());
+    const Image expected =
+        coreRender(*w.document()->scene(), t, shown.width(), shown.height(), w.shownFrame().antialias);
     QVERIFY2(fromQImage(shown) == expected,
              "viewer image differs from Renderer::render at the same camera/size");
 }

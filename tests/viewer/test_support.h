@@ -30,16 +30,17 @@ inline constexpr const char* kSmallScene = R"(/camera 96 72 0.6 0 0 -10
 void writeFile(const QString& path, const QByteArray& text);
 QByteArray readFile(const QString& path);
 
-/// What `f2 render --frame t --size WxH` gives for the scene's own camera.
-Image coreRender(const SceneDesc& scene, double t, int width, int height);
+/// What `f2 render --frame t --size WxH --aa N` gives for the scene's own camera.
+Image coreRender(const SceneDesc& scene, double t, int width, int height, int antialias = 1);
 
-/// Waits until the window shows the latest requested frame and it is frame `t`.
+/// Waits until the window shows the latest requested frame, it is frame `t`
+/// and, when paused, refined to its last step.
 bool waitForShownFrame(MainWindow& w, double t);
 
 /// The Problems list's lines, one per line.
 QString problemsText(MainWindow& w);
 
-/// The picture on screen is the core's at the same camera and size.
+/// The picture on screen is the core's at the same camera, size and samples.
 void expectViewportMatchesCore(MainWindow& w, double t);
 
 }  // namespace f2::viewer::test

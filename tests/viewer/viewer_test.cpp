@@ -61,6 +61,7 @@ class ViewerTest : public QObject {
     void dialogsStartInTheScenesFolder();
     void helpMenuListsShortcutsAndReference();
     void clickSelectsWhatIsDrawn();
+    void pausedPictureRefinesToAa4();
     void stepGoesFromTheFrameShown();
     void renderScaleFollowsWindow();
     void dragOrbitsWheelZoomsAndSceneCameraResets();
@@ -352,6 +353,43 @@ void ViewerTest::clickSelectsWhatIsDrawn() {
     QVERIFY(slider->markers().isEmpty());
 }
 
+void ViewerTest::pausedPictureRefinesToAa4() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("scene.f2");
+    writeFile(path, kSmallScene);
+    MainWindow w;
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    w.openFile(path);
+    w.setRenderScale(RenderScale::SceneSize);
+    w.playback()->pause();
+    w.playback()->seek(5);
+    QVERIFY(waitForShownFrame(w, 5));  // waits for the refinement to end
+    // Byte for byte what `f2 render --frame 5 --aa 4` writes for this scene.
+    QCOMPARE(w.shownFrame().antialias, MainWindow::kRefinedAntialias);
+    QVERIFY(fromQImage(w.viewport()->image()) == coreRender(*w.document()->scene(), 5, 96, 72, 4));
+    QVERIFY(fromQImage(w.viewport()->image()) != coreRender(*w.document()->scene(), 5, 96, 72, 1));
+
+    // A change restarts it: one sample first, then 2x2, then 4x4, all of frame 6.
+    QSignalSpy frames(w.renderController(), &RenderController::frameReady);
+    w.playback()->seek(6);
+    QVERIFY(waitForShownFrame(w, 6));
+    QList<int> steps;
+    for (const auto& args : frames) {
+        const auto info = args.at(1).value<FrameInfo>();
+        QCOMPARE(info.time, 6.0);
+        steps << info.antialias;
+    }
+    QCOMPARE(steps, (QList<int>{1, 2, 4}));
+    QVERIFY(fromQImage(w.viewport()->image()) == coreRender(*w.document()->scene(), 6, 96, 72, 4));
+
+    // Playing shows one sample per frame; switched off, paused frames stay at one sample.
+    w.setRefinement(false);
+    w.playback()->seek(7);
+    QVERIFY(waitForShownFrame(w, 7));
+    QCOMPARE(w.shownFrame().antialias, 1);
+}
+
 void ViewerTest::stepGoesFromTheFrameShown() {
     // Time 3.7 shows frame 3 (f2::frameAt, the rule `f2 render` uses); a step
     // goes to frame 4, not 5 (stepping used to round the time instead).
@@ -419,7 +457,8 @@ void ViewerTest::dragOrbitsWheelZoomsAndSceneCameraResets() {
     QVERIFY(length(orbited.eye - scene.eye) > 10.0f);
     QVERIFY(waitForShownFrame(w, 120));
     QVERIFY(fromQImage(view->image()) !=
-            coreRender(*w.document()->scene(), 120, view->image().width(), view->image().height()));
+            coreRender(*w.document()->scene(), 120, view->image().width(), view->image().height(),
+                       w.shownFrame().antialias));
     if (qEnvironmentVariableIsSet("F2_VIEWER_DUMP_DIR"))
         view->image().save(qEnvironmentVariable("F2_VIEWER_DUMP_DIR") + "/orbited.png");
 
@@ -580,7 +619,7 @@ void ViewerTest::latestRequestWins() {
     RenderController controller;
     controller.setDebugDelay(300ms);
     QSignalSpy frames(&controller, &RenderController::frameReady);
-    for (int t = 0; t <= 10; ++t) controller.request({scene, double(t), camera});
+    for (int t = 0; t <= 10; ++t) controller.request({scene, double(t), camera, {}});
     QTRY_VERIFY_WITH_TIMEOUT(!controller.hasPendingFrames(), kWaitMs);
     QTest::qWait(400);  // nothing else is coming
     // The first request was in flight; the nine in between were skipped.
