@@ -63,19 +63,6 @@ QTextCharFormat formatAt(const QTextBlock& block, int pos) {
     return {};
 }
 
-/// A window on `path`, paused at frame `t` with that frame on screen.
-std::unique_ptr<MainWindow> windowOn(const QString& path, double t) {
-    auto w = std::make_unique<MainWindow>();
-    w->resizeForViewport({96, 72});
-    w->show();
-    if (!QTest::qWaitForWindowExposed(w.get())) return nullptr;
-    w->openFile(path);
-    w->playback()->pause();
-    w->playback()->seek(t);
-    if (!waitForShownFrame(*w, t)) return nullptr;
-    return w;
-}
-
 }  // namespace
 
 class EditorTest : public QObject {
@@ -110,8 +97,7 @@ void EditorTest::init() {
 
 void EditorTest::editorShowsFileAndHighlights() {
     QTemporaryDir dir;
-    const QString path = dir.filePath("scene.f2");
-    writeFile(path, kSmallScene);
+    const QString path = smallSceneFile(dir);
     auto w = windowOn(path, 0);
     QVERIFY(w);
     QVERIFY(w->editorDock()->isVisible());
@@ -146,8 +132,7 @@ void EditorTest::editorShowsFileAndHighlights() {
 
 void EditorTest::typingRendersLive() {
     QTemporaryDir dir;
-    const QString path = dir.filePath("scene.f2");
-    writeFile(path, kSmallScene);
+    const QString path = smallSceneFile(dir);
     auto w = windowOn(path, 5);
     QVERIFY(w);
     const QImage before = w->viewport()->image();
@@ -174,8 +159,7 @@ void EditorTest::typingRendersLive() {
 
 void EditorTest::errorKeepsImageAndUnderlinesColumn() {
     QTemporaryDir dir;
-    const QString path = dir.filePath("scene.f2");
-    writeFile(path, kSmallScene);
+    const QString path = smallSceneFile(dir);
     auto w = windowOn(path, 5);
     QVERIFY(w);
     const QImage good = w->viewport()->image();
@@ -226,8 +210,7 @@ void EditorTest::errorKeepsImageAndUnderlinesColumn() {
 
 void EditorTest::saveWritesTextAtomically() {
     QTemporaryDir dir;
-    const QString path = dir.filePath("scene.f2");
-    writeFile(path, kSmallScene);
+    const QString path = smallSceneFile(dir);
     auto w = windowOn(path, 0);
     QVERIFY(w);
     typeOver(w->editor(), 2, 13, 2, "90");
@@ -249,8 +232,7 @@ void EditorTest::saveWritesTextAtomically() {
 
 void EditorTest::autosaveRestoresAfterCrash() {
     QTemporaryDir dir;
-    const QString path = dir.filePath("scene.f2");
-    writeFile(path, kSmallScene);
+    const QString path = smallSceneFile(dir);
     QString typed;
     {
         auto w = windowOn(path, 0);
@@ -288,8 +270,7 @@ void EditorTest::autosaveRestoresAfterCrash() {
 
 void EditorTest::diskChangeWithUnsavedEditsAsks() {
     QTemporaryDir dir;
-    const QString path = dir.filePath("scene.f2");
-    writeFile(path, kSmallScene);
+    const QString path = smallSceneFile(dir);
     auto w = windowOn(path, 0);
     QVERIFY(w);
     ScriptedAnswers answers;
@@ -353,9 +334,7 @@ void EditorTest::openAndCloseAskAboutUnsavedEdits() {
 
 void EditorTest::commentFindAndGoToLine() {
     QTemporaryDir dir;
-    const QString path = dir.filePath("scene.f2");
-    writeFile(path, kSmallScene);
-    auto w = windowOn(path, 0);
+    auto w = windowOn(smallSceneFile(dir), 0);
     QVERIFY(w);
     SceneEditor* editor = w->editor();
     QTextDocument* doc = editor->document();
@@ -468,9 +447,7 @@ void EditorTest::largeSceneTypesSmoothly() {
 
 void EditorTest::captureWritesLinesInOneUndoStep() {
     QTemporaryDir dir;
-    const QString path = dir.filePath("scene.f2");
-    writeFile(path, kSmallScene);
-    auto w = windowOn(path, 5);
+    auto w = windowOn(smallSceneFile(dir), 5);
     QVERIFY(w);
     SceneEditor* editor = w->editor();
     const QString original = editor->toPlainText();

@@ -4,15 +4,35 @@
 #include <QElapsedTimer>
 #include <QFile>
 #include <QListWidget>
+#include <QTemporaryDir>
 #include <QTest>
 
 #include "core/render/renderer.h"
 #include "image_convert.h"
 #include "main_window.h"
+#include "playback.h"
 #include "scene_document.h"
 #include "viewport_widget.h"
 
 namespace f2::viewer::test {
+
+QString smallSceneFile(const QTemporaryDir& dir) {
+    const QString path = dir.filePath("scene.f2");
+    writeFile(path, kSmallScene);
+    return path;
+}
+
+std::unique_ptr<MainWindow> windowOn(const QString& path, double t) {
+    auto w = std::make_unique<MainWindow>();
+    w->resizeForViewport({96, 72});
+    w->show();
+    if (!QTest::qWaitForWindowExposed(w.get())) return nullptr;
+    w->openFile(path);
+    w->playback()->pause();
+    w->playback()->seek(t);
+    if (!waitForShownFrame(*w, t)) return nullptr;
+    return w;
+}
 
 void writeFile(const QString& path, const QByteArray& text) {
     QFile f(path);

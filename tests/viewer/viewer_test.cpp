@@ -239,12 +239,9 @@ void ViewerTest::keyboardShortcutsDrivePlayback() {
 
 void ViewerTest::savedFrameSizeIgnoresDocks() {
     QTemporaryDir dir;
-    const QString path = dir.filePath("scene.f2");
-    writeFile(path, kSmallScene);
-    MainWindow w;
-    w.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&w));
-    w.openFile(path);
+    auto window = windowOn(smallSceneFile(dir), 4);
+    QVERIFY(window);
+    MainWindow& w = *window;
     w.playback()->pause();
     w.playback()->seek(4);
     w.setRenderScale(RenderScale::SceneSize);
@@ -289,12 +286,9 @@ void ViewerTest::helpMenuListsShortcutsAndReference() {
 
 void ViewerTest::clickSelectsWhatIsDrawn() {
     QTemporaryDir dir;
-    const QString path = dir.filePath("scene.f2");
-    writeFile(path, kSmallScene);
-    MainWindow w;
-    w.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&w));
-    w.openFile(path);
+    auto window = windowOn(smallSceneFile(dir), 5);
+    QVERIFY(window);
+    MainWindow& w = *window;
     w.editorDock()->hide();  // the offscreen screen is 800 pixels wide: room for the timeline
     w.setRenderScale(RenderScale::SceneSize);  // a 96x72 picture, scaled up on screen
     w.playback()->pause();
@@ -355,12 +349,9 @@ void ViewerTest::clickSelectsWhatIsDrawn() {
 
 void ViewerTest::pausedPictureRefinesToAa4() {
     QTemporaryDir dir;
-    const QString path = dir.filePath("scene.f2");
-    writeFile(path, kSmallScene);
-    MainWindow w;
-    w.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&w));
-    w.openFile(path);
+    auto window = windowOn(smallSceneFile(dir), 5);
+    QVERIFY(window);
+    MainWindow& w = *window;
     w.setRenderScale(RenderScale::SceneSize);
     w.playback()->pause();
     w.playback()->seek(5);
@@ -478,8 +469,7 @@ void ViewerTest::dragOrbitsWheelZoomsAndSceneCameraResets() {
 
 void ViewerTest::brokenFileShowsErrorsAndKeepsImage() {
     QTemporaryDir dir;
-    const QString path = dir.filePath("scene.f2");
-    writeFile(path, kSmallScene);
+    const QString path = smallSceneFile(dir);
     MainWindow w;
     w.resizeForViewport({96, 72});
     w.show();
@@ -523,8 +513,7 @@ void ViewerTest::brokenFileShowsErrorsAndKeepsImage() {
 
 void ViewerTest::reloadsAfterEditorReplacesFile() {
     QTemporaryDir dir;
-    const QString path = dir.filePath("scene.f2");
-    writeFile(path, kSmallScene);
+    const QString path = smallSceneFile(dir);
     SceneDocument doc;
     QSignalSpy changed(&doc, &SceneDocument::sceneChanged);
     QVERIFY(doc.load(path));
