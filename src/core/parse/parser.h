@@ -1,6 +1,7 @@
 #pragma once
-/// The scene language (SPEC 2-7). The parser reports and never exits: the
-/// caller decides what to do with the diagnostics.
+/// The scene language (SPEC 2-7 and 9). The parser reports and never exits:
+/// the caller decides what to do with the diagnostics. `/let`, `/repeat`,
+/// `/include` and expressions are expanded first (source_expander.h).
 #include <cstddef>
 #include <cstdint>
 #include <optional>
