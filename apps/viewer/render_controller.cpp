@@ -71,7 +71,9 @@ void RenderController::workerLoop(int threads) {
         FrameInfo info;
         info.time = request.time;
         info.serial = serial;
-        info.timings = renderer.render(*request.scene, request.time, request.camera, image, {}, &cancel_);
+        info.antialias = request.options.antialias;
+        info.timings =
+            renderer.render(*request.scene, request.time, request.camera, image, request.options, &cancel_);
         info.size = QSize(image.width, image.height);
         if (cancel_.load()) return;  // only the destructor cancels
         QImage frame = toQImage(image);

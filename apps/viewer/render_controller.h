@@ -27,6 +27,7 @@ struct RenderRequest {
     std::shared_ptr<const SceneDesc> scene;
     double time = 0;  ///< in frames, may be fractional
     Camera camera;    ///< already at the render size
+    RenderOptions options;  ///< anti-aliasing, as `f2 render --aa`
 };
 
 /// What came back with a frame.
@@ -34,6 +35,7 @@ struct FrameInfo {
     double time = 0;
     FrameTimings timings;
     QSize size;
+    int antialias = 1;   ///< N of the N x N samples per pixel it was rendered with
     quint64 serial = 0;  ///< request number, increasing
 };
 
