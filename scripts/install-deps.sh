@@ -1,13 +1,21 @@
 #!/usr/bin/env bash
-# Installs every Debian 12 package F2 Stage needs to build, test and run, and
-# nothing when they are already there. Uses sudo when not root.
+# Installs the Debian 12 packages F2 Stage needs, and nothing that is already
+# there. Uses sudo when not root.
+#
+#   scripts/install-deps.sh          everything: build, tests, benchmarks, video,
+#                                    POV-Ray, plots, fuzzing (test.sh, CI)
+#   scripts/install-deps.sh --run    only what building f2 and f2-viewer needs (run.sh)
+#   scripts/install-deps.sh --check  installs nothing; exit 0 if everything is there
 set -euo pipefail
 
-PACKAGES=(
-  # toolchain and build
-  g++ cmake ninja-build pkg-config git
-  # libraries
+# Building and running f2 and the viewer.
+RUN_PACKAGES=(
+  g++ cmake ninja-build pkg-config
   libpng-dev libcli11-dev qt6-base-dev libgl-dev libegl-dev nlohmann-json3-dev
+)
+# Everything else: tests, benchmarks, video and POV-Ray output, plots, fuzzing.
+MORE_PACKAGES=(
+  git
   # tests and benchmarks (GNU parallel: the render-farm test)
   libgtest-dev libbenchmark-dev locales xvfb xauth imagemagick x11-apps parallel
   # the Embree peer renderer f2 is compared with (bench/embree_peer)
@@ -20,9 +28,16 @@ PACKAGES=(
   clang libclang-rt-14-dev
 )
 
-# Node.js and npm for the VS Code extension and its grammar test; a Node.js
-# installed another way (with its own npm) is kept.
-if ! command -v npm >/dev/null 2>&1; then
+mode=${1:-all}
+case "$mode" in
+  --run) PACKAGES=("${RUN_PACKAGES[@]}") ;;
+  all | --check) PACKAGES=("${RUN_PACKAGES[@]}" "${MORE_PACKAGES[@]}") ;;
+  *) echo "usage: $0 [--run | --check]" >&2; exit 2 ;;
+esac
+
+# Node.js and npm for the VS Code extension and its grammar test (not for
+# run.sh); a Node.js installed another way (with its own npm) is kept.
+if [ "$mode" != --run ] && ! command -v npm >/dev/null 2>&1; then
   PACKAGES+=(nodejs npm)
 fi
 
@@ -31,17 +46,20 @@ for p in "${PACKAGES[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 
+if [ "$mode" = --check ]; then
+  [ ${#missing[@]} -eq 0 ] || { echo "install-deps: missing ${missing[*]}"; exit 1; }
+  exit 0
+fi
+
+SUDO=""
+[ "$(id -u)" -eq 0 ] || SUDO="sudo"
 if [ ${#missing[@]} -gt 0 ]; then
-  SUDO=""
-  [ "$(id -u)" -eq 0 ] || SUDO="sudo"
   echo "install-deps: installing ${missing[*]}"
   $SUDO apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
 # A comma-decimal locale, so the tests can prove the parser ignores the system locale.
-if ! locale -a 2>/dev/null | grep -qi '^de_DE\.utf-\?8$'; then
-  SUDO=""
-  [ "$(id -u)" -eq 0 ] || SUDO="sudo"
+if [ "$mode" = all ] && ! locale -a 2>/dev/null | grep -qi '^de_DE\.utf-\?8$'; then
   $SUDO localedef -i de_DE -f UTF-8 de_DE.UTF-8 || echo "install-deps: could not generate de_DE.UTF-8"
 fi

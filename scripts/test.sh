@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds (Release) and runs every test with CTest.
+# Installs what is missing (everything, see install-deps.sh), builds (Release)
+# with the tests and benchmarks, and runs every test with CTest.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
-cmake --preset release
+# Explicitly on: run.sh may have configured build/release without them.
+cmake --preset release -DF2_BUILD_TESTS=ON -DF2_BUILD_BENCH=ON
 cmake --build --preset release
 ctest --preset release "$@"

@@ -7,6 +7,7 @@
 #include "bench_study.h"
 #include "commands.h"
 #include "core/scene/default_scene.h"
+#include "options.h"
 
 namespace f2::cli {
 
@@ -123,22 +124,22 @@ Command addBenchCommand(CLI::App& app) {
     file->excludes(generated);
     sub->add_option("--frame", args->settings.frame,
                     "Animation time to render, in frames; may be fractional (default 0)")
-        ->check(CLI::Range(0.0, 1e7));
+        ->check(finiteNumberIn(0.0, 1e7, "a frame time"));
     sub->add_option("--step", args->settings.step,
                     "Advance the time by this many frames each iteration, looping over the animation "
                     "(default 0: every iteration renders --frame)")
-        ->check(CLI::Range(0.0, 1e7));
+        ->check(finiteNumberIn(0.0, 1e7, "a step"));
     sub->add_option("--size", args->size, "Image size WIDTHxHEIGHT (default 800x600)");
-    sub->add_option("--threads", args->settings.threads, "Render threads (default: all cores)")
-        ->check(CLI::Range(0, 1024));
+    sub->add_option("--threads", args->settings.threads, "Render threads, 0..1024 (default 0: all cores)")
+        ->check(wholeNumberIn(0, 1024));
     sub->add_option("--seconds", args->seconds,
                     "Timed seconds, at least 3 frames (default 3; 1 per point with --study)")
-        ->check(CLI::Range(0.0, 3600.0));
+        ->check(finiteNumberIn(0.0, 3600.0, "a duration"));
     sub->add_option("--warmup", args->settings.warmupSeconds,
                     "Untimed warm-up seconds, at least 1 frame (default 0.5)")
-        ->check(CLI::Range(0.0, 600.0));
-    sub->add_option("--aa", args->settings.antialias, "N x N samples per pixel (default 1)")
-        ->check(CLI::Range(1, 16));
+        ->check(finiteNumberIn(0.0, 600.0, "a duration"));
+    sub->add_option("--aa", args->settings.antialias, "N x N samples per pixel, N = 1..16 (default 1)")
+        ->check(wholeNumberIn(1, 16));
     auto* json =
         sub->add_flag("--json", args->json,
                       "Print one JSON object: fps, ms_median, ms_min, ms_max, ms_eval, ms_build, ms_trace, "

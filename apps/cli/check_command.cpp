@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "commands.h"
+#include "options.h"
 #include "scene_source.h"
 
 namespace f2::cli {
@@ -11,7 +12,8 @@ Command addCheckCommand(CLI::App& app) {
     auto path = std::make_shared<std::string>();
     CLI::App* sub = app.add_subcommand(
         "check", "Parse a scene and report every problem as FILE:LINE:COL: error: ...; exit 1 on error");
-    sub->add_option("scene", *path, "Scene file; '-' reads standard input; none = the default scene");
+    sub->add_option("scene", *path, "Scene file; '-' reads standard input; none = the default scene")
+        ->check(nonEmptyPath("check the default scene"));
     return {sub, [path] {
                 auto loaded = loadScene(*path);
                 if (!loaded) return 1;

@@ -7,6 +7,8 @@
 #include "io/atomic_file.h"
 #include "io/pov_export.h"
 #include "io/prims_export.h"
+#include "options.h"
+#include "output_kind.h"
 #include "scene_source.h"
 
 namespace f2::cli {
@@ -26,6 +28,7 @@ bool writeOutput(const std::string& text, const std::string& path, std::string& 
         if (!std::cout) error = "cannot write to standard output";
         return bool(std::cout);
     }
+    if (!createParentDirectory(path, error)) return false;
     AtomicFile file(path);  // never a half-written scene, even on Ctrl+C
     if (!file.ok()) {
         error = file.error();
@@ -40,17 +43,14 @@ bool writeOutput(const std::string& text, const std::string& path, std::string& 
 
 int runExport(const ExportArgs& args) {
     if (args.pov == args.prims) {
-        std::cerr << "f2 export: choose one format: --pov (POV-Ray 3.7 scene) or --prims (primitive list)\n";
-        return 2;
+        return usageError("export", "choose one format: --pov (POV-Ray 3.7 scene) or --prims (primitive list)");
     }
     auto loaded = loadScene(args.scene);
     if (!loaded) return 1;
     Camera camera = Camera::fromDesc(loaded->scene.camera);
     std::string error;
-    if (!args.size.empty() && !parseSize(args.size, camera.width, camera.height, error)) {
-        std::cerr << "f2 export: " << error << '\n';
-        return 2;
-    }
+    if (!args.size.empty() && !parseSize(args.size, camera.width, camera.height, error))
+        return usageError("export", error);
     std::string text = args.pov ? povScene(loaded->scene, args.frame, camera, loaded->name)
                                 : primsScene(loaded->scene, args.frame, camera, loaded->name);
     if (!writeOutput(text, args.output, error)) {
@@ -71,14 +71,16 @@ Command addExportCommand(CLI::App& app) {
         "export",
         "Write one evaluated frame as a scene for another renderer: POV-Ray (--pov) or the "
         "Embree peer's primitive list (--prims)");
-    sub->add_option("scene", args->scene, "Scene file; '-' reads standard input; none = the default scene");
+    sub->add_option("scene", args->scene, "Scene file; '-' reads standard input; none = the default scene")
+        ->check(nonEmptyPath("export the default scene"));
     sub->add_option("--frame", args->frame, "Frame to export; may be fractional (default 0)")
-        ->check(CLI::Range(0.0, 1e7));
+        ->check(finiteNumberIn(0.0, 1e7, "a frame time"));
     auto* pov = sub->add_flag("--pov", args->pov,
                               "POV-Ray 3.7 scene; render it with: povray +IFILE +Oout.png +WW +HH -A +FN -D");
     sub->add_flag("--prims", args->prims, "Plain-text primitive list (Embree peer renderer format)")
         ->excludes(pov);
-    sub->add_option("-o,--output", args->output, "Output file; '-' = standard output (default)");
+    sub->add_option("-o,--output", args->output, "Output file; '-' = standard output (default)")
+        ->check(nonEmptyPath("write to standard output"));
     sub->add_option("--size", args->size,
                     "Image size WIDTHxHEIGHT written into the camera (default: /camera)");
     return {sub, [args] { return runExport(*args); }};

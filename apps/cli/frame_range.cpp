@@ -5,40 +5,61 @@
 namespace f2::cli {
 
 namespace {
-constexpr int kMaxFrame = 10'000'000;  // SPEC 7's limit on key frame numbers
-
-bool parseInt(std::string_view text, int& value) {
+template <typename T>
+bool parseInt(std::string_view text, T& value) {
     const char* end = text.data() + text.size();
     auto result = std::from_chars(text.data(), end, value);
     return !text.empty() && result.ec == std::errc{} && result.ptr == end;
 }
+
+const std::string kFramesSyntax = "FIRST-LAST, FIRST or FIRST-, optionally :STEP";
 }  // namespace
 
-std::optional<FrameRange> parseFrameRange(const std::string& text, int lastFrame, std::string& error) {
+std::optional<FrameRange> parseFrameRange(const std::string& text, std::int64_t lastFrame, std::string& error) {
     std::string_view s = text;
     FrameRange range;
-    auto dash = s.find('-');
-    bool ok = dash == std::string_view::npos
-                  ? parseInt(s, range.first) && (range.last = range.first, true)
-                  : parseInt(s.substr(0, dash), range.first) &&
-                        (dash + 1 == s.size() ? (range.last = lastFrame, true)
-                                              : parseInt(s.substr(dash + 1), range.last));
-    if (!ok || range.first < 0 || range.last > kMaxFrame) {
-        error = "--frames: expected FIRST-LAST, FIRST or FIRST- (frame numbers 0.." +
-                std::to_string(kMaxFrame) + "), got '" + text + "'";
+    const auto colon = s.find(':');
+    if (colon != std::string_view::npos) {
+        if (!parseInt(s.substr(colon + 1), range.step) || range.step < 1 || range.step > kMaxOutputFrame) {
+            error = "--frames " + text + ": the step after ':' must be a whole number from 1 to " +
+                    std::to_string(kMaxOutputFrame);
+            return std::nullopt;
+        }
+        s = s.substr(0, colon);
+    }
+    const auto dash = s.find('-');
+    const bool open = dash != std::string_view::npos && dash + 1 == s.size();
+    const bool ok = dash == std::string_view::npos
+                        ? parseInt(s, range.first) && (range.last = range.first, true)
+                        : parseInt(s.substr(0, dash), range.first) &&
+                              (open ? (range.last = lastFrame, true) : parseInt(s.substr(dash + 1), range.last));
+    if (!ok || range.first < 0 || range.first > kMaxOutputFrame || (!open && range.last > kMaxOutputFrame)) {
+        error = "--frames: expected " + kFramesSyntax + " (frame numbers 0.." + std::to_string(kMaxOutputFrame) +
+                "), got '" + text + "'";
+        return std::nullopt;
+    }
+    if (open && range.last > kMaxOutputFrame) {
+        error = "--frames " + text + ": the animation ends at output frame " + std::to_string(range.last) +
+                ", past the limit of " + std::to_string(kMaxOutputFrame) + "; give a last frame or a lower --fps";
         return std::nullopt;
     }
     if (range.last < range.first) {
-        error = "--frames " + text + ": the last frame comes before the first";
+        error = "--frames " + text + ": the last frame (" + std::to_string(range.last) +
+                ") comes before the first";
         return std::nullopt;
     }
     return range;
 }
 
-int Shard::countIn(const FrameRange& range) const {
-    // Frames f in [first, last] with f = index (mod count).
-    auto upTo = [this](int n) { return n < index ? 0 : (n - index) / count + 1; };  // in [0, n]
-    return upTo(range.last) - (range.first > 0 ? upTo(range.first - 1) : 0);
+std::string pastTheEndWarning(const AnimationRange& range, std::int64_t lastFrame) {
+    const std::int64_t from = range.first > lastFrame ? range.first : lastFrame + 1;
+    const std::string frames = from == range.lastRendered()
+                                   ? "frame " + std::to_string(from) + " is"
+                                   : "frames " + std::to_string(from) + "-" + std::to_string(range.lastRendered()) +
+                                         " are";
+    return frames + " past the animation's last frame " + std::to_string(lastFrame) + " (at " +
+           std::to_string(range.outputFps) + " fps): " + (from == range.lastRendered() ? "it shows" : "they show") +
+           " its final pose";
 }
 
 std::optional<Shard> parseShard(const std::string& text, std::string& error) {

@@ -1,19 +1,34 @@
 #pragma once
-/// Which frames `f2 render` renders: a range (`--frames 0-239`) and a shard of
-/// it (`--shard K/N`) for render farms.
+/// Which frames `f2 render` renders: a range with an optional step
+/// (`--frames 0-239:4`) and a shard of it (`--shard K/N`) for render farms.
+/// Frame numbers and counts are 64-bit and range-checked: an animation's
+/// length at a high output --fps is computed, never overflowed.
+#include <cstdint>
 #include <optional>
 #include <string>
 
+#include "core/scene/limits.h"
+#include "io/render_animation.h"
+
 namespace f2::cli {
 
-/// Inclusive range of output frame numbers.
+/// The largest output frame number (`--frames`, and the last frame of the
+/// default range at the output --fps): SPEC 7's limit on key frame numbers.
+inline constexpr std::int64_t kMaxOutputFrame = kMaxKeyFrame;
+
+/// Output frames first, first + step, ... up to last (inclusive).
 struct FrameRange {
-    int first = 0, last = 0;
-    int count() const { return last - first + 1; }
+    std::int64_t first = 0, last = 0, step = 1;
+    std::int64_t count() const { return (last - first) / step + 1; }
 };
 
-/// "A-B", "A" (one frame) or "A-" (A to `lastFrame`); 0 <= A <= B <= 10^7.
-std::optional<FrameRange> parseFrameRange(const std::string& text, int lastFrame, std::string& error);
+/// "A-B", "A" (one frame) or "A-" (A to `lastFrame`), each optionally followed
+/// by ":S" (every S-th frame from A); 0 <= A <= B <= kMaxOutputFrame.
+std::optional<FrameRange> parseFrameRange(const std::string& text, std::int64_t lastFrame, std::string& error);
+
+/// "frames 241-400 are past the animation's last frame 240 (at 24 fps): they
+/// show its final pose", for a range that ends after `lastFrame`.
+std::string pastTheEndWarning(const AnimationRange& range, std::int64_t lastFrame);
 
 /// Worker K of N takes every frame whose number is K modulo N (round-robin,
 /// not contiguous blocks): frame cost changes along an animation, so
@@ -21,9 +36,6 @@ std::optional<FrameRange> parseFrameRange(const std::string& text, int lastFrame
 /// a frame's worker does not depend on --frames.
 struct Shard {
     int index = 0, count = 1;
-    bool contains(int frame) const { return frame % count == index; }
-    /// How many frames of `range` this shard renders.
-    int countIn(const FrameRange& range) const;
 };
 
 /// "K/N" with 0 <= K < N <= 100000.

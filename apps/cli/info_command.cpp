@@ -1,8 +1,10 @@
 // f2 info: what a scene holds.
+#include <cstdio>
 #include <iostream>
 #include <memory>
 
 #include "commands.h"
+#include "options.h"
 #include "core/scene/models.h"
 #include "scene_source.h"
 
@@ -27,6 +29,16 @@ void printTrack(const std::string& target, const Track& track) {
               << ".." << track.keys.back().frame << ", " << kInterp[int(track.interpolation)] << '\n';
 }
 
+/// "241 frames, 10.00 s from the first to the last (10.04 s played as a video)":
+/// N frames span N-1 intervals, but a video shows each for 1/fps.
+std::string describeLength(int lastFrame, int fps) {
+    if (lastFrame == 0) return "1 frame (no animation)";
+    char text[128];
+    std::snprintf(text, sizeof text, "%d frames, %.2f s from the first to the last (%.2f s played as a video)",
+                  lastFrame + 1, double(lastFrame) / fps, double(lastFrame + 1) / fps);
+    return text;
+}
+
 int runInfo(const std::string& path) {
     auto loaded = loadScene(path);
     if (!loaded) return 1;
@@ -35,7 +47,7 @@ int runInfo(const std::string& path) {
     std::cout << loaded->name << '\n'
               << "  image:      " << s.camera.width << "x" << s.camera.height << ", d " << s.camera.distance
               << '\n'
-              << "  frames:     0.." << last << " at " << s.fps << " fps (" << double(last) / s.fps << " s)\n"
+              << "  frames:     0.." << last << " at " << s.fps << " fps: " << describeLength(last, s.fps) << '\n'
               << "  lights:     ambient " << s.ambient << ", " << s.lights.size() << " directional\n"
               << "  objects:    " << s.objects.size() << " (" << s.primitiveCount() << " primitives)\n"
               << "  source:     " << loaded->files.size() << (loaded->files.size() == 1 ? " file, " : " files, ")
@@ -55,7 +67,8 @@ int runInfo(const std::string& path) {
 Command addInfoCommand(CLI::App& app) {
     auto path = std::make_shared<std::string>();
     CLI::App* sub = app.add_subcommand("info", "Print a scene's objects, parts, key frames, frame range and fps");
-    sub->add_option("scene", *path, "Scene file; '-' reads standard input; none = the default scene");
+    sub->add_option("scene", *path, "Scene file; '-' reads standard input; none = the default scene")
+        ->check(nonEmptyPath("describe the default scene"));
     return {sub, [path] { return runInfo(*path); }};
 }
 

@@ -5,11 +5,13 @@
 #include <vector>
 
 #include "commands.h"
+#include "options.h"
 
 int main(int argc, char** argv) {
     CLI::App app{
         "f2 — ray-traced key-frame animation of scenes with the robot F-2.\n"
-        "Without a SCENE argument every command uses the embedded default scene (scenes/demo.f2)."};
+        "Without a SCENE argument every command uses the embedded default scene (scenes/demo.f2).",
+        "f2"};
     app.set_version_flag("--version", "f2 0.1.0");
     app.require_subcommand(1);
 
@@ -21,6 +23,11 @@ int main(int argc, char** argv) {
         f2::cli::addBenchCommand(app),
         f2::cli::addLspCommand(app),
     };
+    // `f2` alone: the short help (the commands), as a usage error.
+    if (argc == 1) {
+        std::cerr << app.help();
+        return f2::cli::kUsageError;
+    }
     // CLI11 would only say "a subcommand is required"; name the unknown word.
     if (argc > 1 && argv[1][0] != '-') {
         bool known = false;
@@ -30,14 +37,19 @@ int main(int argc, char** argv) {
             names += (names.empty() ? "" : ", ") + command.app->get_name();
         }
         if (!known) {
-            std::cerr << "f2: unknown command '" << argv[1] << "' (expected " << names << "; see f2 --help)\n";
-            return 2;
+            return f2::cli::usageError("", "unknown command '" + std::string(argv[1]) + "' (expected " + names + ")");
         }
     }
     try {
         app.parse(argc, argv);
+    } catch (const CLI::Success& e) {
+        return app.exit(e);  // --help, --version
     } catch (const CLI::ParseError& e) {
-        return app.exit(e);
+        // CLI11's own exit codes (105, 109, ...) would break the promise of 2
+        // for every usage error; its message names the option.
+        std::string command;
+        for (const CLI::App* sub : app.get_subcommands()) command = sub->get_name();
+        return f2::cli::usageError(command, e.what());
     }
     for (const auto& command : commands)
         if (command.app->parsed()) return command.run();

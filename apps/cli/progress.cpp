@@ -8,6 +8,8 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "test_pause.h"
+
 namespace f2::cli {
 
 Progress::Progress(int total, bool live) : total_(total), live_(live) {}
@@ -29,6 +31,7 @@ double Progress::framesPerSecond() const {
 
 void Progress::update(int done) {
     done_ = done;
+    pauseForTestAfter(done);  // every finished frame passes here
     if (!live_) return;
     auto now = Clock::now();
     // At most ~10 redraws a second: a terminal is slower than a small frame.
@@ -72,6 +75,15 @@ std::string formatDuration(double seconds) {
         std::snprintf(text, sizeof text, "%ld:%02ld:%02ld", s / 3600, s / 60 % 60, s % 60);
     else
         std::snprintf(text, sizeof text, "%ld:%02ld", s / 60, s % 60);
+    return text;
+}
+
+std::string formatMilliseconds(double ms) {
+    char text[32];
+    if (ms >= 1000)
+        std::snprintf(text, sizeof text, "%.3g s", ms / 1000);
+    else
+        std::snprintf(text, sizeof text, ms >= 100 ? "%.0f ms" : ms >= 10 ? "%.1f ms" : "%.2f ms", ms);
     return text;
 }
 

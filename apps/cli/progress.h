@@ -43,4 +43,7 @@ class Progress {
 /// "1:05" / "1:02:05" for a number of seconds.
 std::string formatDuration(double seconds);
 
+/// A frame time with three significant digits: "9.28 ms", "45.1 ms", "312 ms", "1.25 s".
+std::string formatMilliseconds(double ms);
+
 }  // namespace f2::cli

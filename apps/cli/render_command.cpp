@@ -1,5 +1,7 @@
 // f2 render: one frame to a PNG, or an animation to a numbered PNG sequence
 // or a video (mp4, webm, gif through ffmpeg).
+#include <unistd.h>
+
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -7,6 +9,8 @@
 #include "commands.h"
 #include "frame_range.h"
 #include "interrupt.h"
+#include "options.h"
+#include "output_kind.h"
 #include "io/frame_pattern.h"
 #include "io/image_sink.h"
 #include "io/render_animation.h"
@@ -43,13 +47,12 @@ struct AnimationJob {
     int threads;
 };
 
-constexpr int kUsageError = 2;
-
 int interruptedExit() { return 128 + (interruptSignal() ? interruptSignal() : 2); }
 
 std::string describe(const AnimationJob& job) {
     std::ostringstream s;
-    s << job.loaded->name << " frames " << job.range.first << "-" << job.range.last;
+    s << job.loaded->name << " frames " << job.range.first << "-" << job.range.lastRendered();
+    if (job.range.step > 1) s << " every " << job.range.step;
     if (job.range.shardCount > 1) s << " shard " << job.range.shardIndex << "/" << job.range.shardCount;
     s << " (" << job.camera.width << "x" << job.camera.height << ", " << job.range.outputFps << " fps, aa "
       << job.antialias << ")";
@@ -122,7 +125,9 @@ int renderVideo(const AnimationJob& job, VideoFormat format, const std::string& 
 }
 
 int renderImage(const RenderArgs& args, const LoadedScene& loaded, const Camera& camera, double t) {
-    PngImageSink sink(args.output);
+    const bool toStdout = args.output == "-";
+    PngImageSink sink = toStdout ? PngImageSink(stdout, "standard output") : PngImageSink(args.output);
+    const std::string where = toStdout ? "standard output" : args.output;
     const AnimationResult result = renderAnimation(loaded.scene, AnimationRange::still(t, loaded.scene.fps), camera,
                                                    sink, &interruptFlag(), {}, {args.threads, {args.antialias}});
     switch (result.outcome) {
@@ -130,37 +135,66 @@ int renderImage(const RenderArgs& args, const LoadedScene& loaded, const Camera&
             std::cerr << "f2 render: " << result.error << '\n';
             return 1;
         case AnimationResult::Outcome::Cancelled:
-            std::cerr << "f2 render: interrupted; " << args.output << " not written\n";
+            std::cerr << "f2 render: interrupted; " << where << " not written\n";
             return interruptedExit();
         case AnimationResult::Outcome::Finished:
             break;
     }
-    std::cerr << "f2 render: " << loaded.name << " frame " << t << " -> " << args.output << " ("
-              << camera.width << "x" << camera.height << ", " << result.threads << " threads, "
-              << result.renderMs << " ms)\n";
+    std::cerr << "f2 render: " << loaded.name << " frame " << t << " -> " << where << " (" << camera.width << "x"
+              << camera.height << ", " << result.threads << " threads, " << formatMilliseconds(result.renderMs)
+              << ")\n";
     return 0;
 }
 
-int usageError(const std::string& message) {
-    std::cerr << "f2 render: " << message << '\n';
-    return kUsageError;
+int usageError(const std::string& message) { return f2::cli::usageError("render", message); }
+
+/// Option combinations that do not fit the output kind, checked before the scene is read.
+std::string outputMismatch(const RenderArgs& args, const OutputKind& output) {
+    const bool oneFrameOption = args.frameOption->count() > 0;
+    switch (output.kind) {
+        case OutputKind::Kind::Video:
+            if (oneFrameOption) return "--frame picks one image; a video takes --frames (default: all)";
+            if (!args.shard.empty())
+                return "--shard splits a PNG sequence (-o f_%04d.png) across machines; a video cannot "
+                       "be split: render the sequence, then join it with ffmpeg (docs/output.md)";
+            if (args.resume) return "--resume works with a PNG sequence (-o f_%04d.png), not a video";
+            return {};
+        case OutputKind::Kind::Sequence:
+            if (oneFrameOption) return "--frame picks one image; a sequence takes --frames (default: all)";
+            return {};
+        case OutputKind::Kind::StandardOutput:
+            if (::isatty(STDOUT_FILENO))
+                return "-o - writes PNG data to standard output, which is a terminal; redirect it "
+                       "(f2 render -o - > f.png) or pipe it";
+            [[fallthrough]];
+        case OutputKind::Kind::Image:
+            if (!args.shard.empty() || args.resume)
+                return "--shard and --resume need a numbered sequence such as -o f_%04d.png";
+            return {};
+    }
+    return {};
 }
 
 int runRender(const RenderArgs& args) {
-    installInterruptHandlers();
+    std::string error;
+    auto output = classifyOutput(args.output, error);
+    if (!output) return usageError(error);
+    if (std::string mismatch = outputMismatch(args, *output); !mismatch.empty()) return usageError(mismatch);
+    // Reading the scene needs no cleanup: until it is read, Ctrl+C simply ends f2 (exit 130).
     auto loaded = loadScene(args.scene);
     if (!loaded) return 1;
+    installInterruptHandlers();
     Camera camera = Camera::fromDesc(loaded->scene.camera);
-    std::string error;
     if (!args.size.empty() && !parseSize(args.size, camera.width, camera.height, error))
         return usageError(error);
 
     const int fps = args.fps > 0 ? args.fps : loaded->scene.fps;
-    // Default range: the whole animation, frame 0 to the last key at the output rate.
-    const int lastFrame = int(outputFrameAt(loaded->scene.lastFrame(), loaded->scene.fps, fps));
-    FrameRange range{0, lastFrame};
-    if (!args.frames.empty()) {
-        auto parsed = parseFrameRange(args.frames, lastFrame, error);
+    // Default range: the whole animation, frame 0 to the last key at the output rate (64-bit: a
+    // key at 10^7 with /fps 1 at --fps 1000 is 10^10 frames, refused by parseFrameRange).
+    const std::int64_t lastFrame = outputFrameAt(loaded->scene.lastFrame(), loaded->scene.fps, fps);
+    FrameRange range;
+    if (output->isAnimation() || !args.frames.empty()) {
+        auto parsed = parseFrameRange(args.frames.empty() ? "0-" : args.frames, lastFrame, error);
         if (!parsed) return usageError(error);
         range = *parsed;
     }
@@ -170,10 +204,10 @@ int runRender(const RenderArgs& args) {
         if (!parsed) return usageError(error);
         shard = *parsed;
     }
-    const bool oneFrameOption = args.frameOption->count() > 0;
-    const AnimationRange frames{range.first, range.last, loaded->scene.fps, fps, 0, shard.index, shard.count};
+    const AnimationRange frames{range.first, range.last, loaded->scene.fps, fps, 0, shard.index, shard.count, range.step};
+    if (frames.lastRendered() > lastFrame)
+        std::cerr << "f2 render: warning: " << pastTheEndWarning(frames, lastFrame) << '\n';
     AnimationJob job{&*loaded, camera, frames, args.antialias, args.threads};
-
     if (!args.pixel.empty()) {
         if (!args.frames.empty() || !args.shard.empty() || args.resume)
             return usageError("--pixel traces one pixel of one frame: choose the frame with --frame");
@@ -181,28 +215,18 @@ int runRender(const RenderArgs& args) {
         if (!parsePixel(args.pixel, camera.width, camera.height, x, y, error)) return usageError(error);
         return printPixelStory(*loaded, camera, args.frame, x, y, args.antialias, args.threads);
     }
-    if (auto format = videoFormatForPath(args.output)) {
-        if (oneFrameOption)
-            return usageError("--frame picks one image; a video takes --frames (default: all)");
-        if (!args.shard.empty())
-            return usageError(
-                "--shard splits a PNG sequence (-o f_%04d.png) across machines; a video cannot "
-                "be split: render the sequence, then join it with ffmpeg (docs/output.md)");
-        if (args.resume) return usageError("--resume works with a PNG sequence (-o f_%04d.png), not a video");
-        return renderVideo(job, *format, args.output);
+    if (output->kind == OutputKind::Kind::Sequence)
+        return renderSequence(job, output->pattern, args.output, args.resume);
+    // A single file's directory is created as a sequence's is.
+    if (output->kind != OutputKind::Kind::StandardOutput && !createParentDirectory(args.output, error)) {
+        std::cerr << "f2 render: " << error << '\n';
+        return 1;
     }
-    if (looksLikeFramePattern(args.output)) {
-        auto pattern = parseFramePattern(args.output, error);
-        if (!pattern) return usageError(error);
-        if (oneFrameOption)
-            return usageError("--frame picks one image; a sequence takes --frames (default: all)");
-        return renderSequence(job, *pattern, args.output, args.resume);
-    }
-    // One image.
-    if (!args.shard.empty() || args.resume)
-        return usageError("--shard and --resume need a numbered sequence such as -o f_%04d.png");
+    if (output->kind == OutputKind::Kind::Video) return renderVideo(job, output->video, args.output);
     if (!args.frames.empty() && range.count() != 1)
-        return usageError("'" + args.output + "' holds one image; for --frames " + args.frames +
+        return usageError((output->kind == OutputKind::Kind::StandardOutput ? std::string("-o - writes one PNG")
+                                                                            : "'" + args.output + "' holds one image") +
+                          "; for --frames " + args.frames +
                           " write a numbered sequence (-o f_%04d.png) or a video (-o out.mp4)");
     double t = args.frames.empty() ? args.frame : frames.timeOf(range.first);
     return renderImage(args, *loaded, camera, t);
@@ -214,30 +238,36 @@ Command addRenderCommand(CLI::App& app) {
     CLI::App* sub = app.add_subcommand(
         "render", "Render a frame to a PNG, or the animation to a PNG sequence or a video (mp4, webm, gif)");
     sub->footer(
-        "The output name decides: -o f.png = one image; -o frames/f_%04d.png = one file per frame "
-        "(%d, %4d or %04d = frame number; the directory is created); -o out.mp4 | out.webm | out.gif "
-        "= a video, encoded by the ffmpeg program. Ctrl+C stops cleanly: no partial file is left.");
-    sub->add_option("scene", args->scene, "Scene file; '-' reads standard input; none = the default scene");
+        "The output name decides: -o f.png = one image; -o - = one PNG to standard output; "
+        "-o frames/f_%04d.png = one file per frame (%d or %0Nd = frame number); -o out.mp4 | out.webm | "
+        "out.gif = a video, encoded by the ffmpeg program. Any other extension is refused. Missing "
+        "directories of the output are created. Ctrl+C stops cleanly: no partial file is left.");
+    sub->add_option("scene", args->scene, "Scene file; '-' reads standard input; none = the default scene")
+        ->check(nonEmptyPath("render the default scene"));
     args->frameOption = sub->add_option("--frame", args->frame,
-                                        "One image: the scene time in frames; may be fractional (default 0)")
-                            ->check(CLI::Range(0.0, 1e7));
+                                        "One image: the scene time in frames, 0..1e7; may be fractional (default 0)")
+                            ->check(finiteNumberIn(0.0, 1e7, "a frame time"));
     sub->add_option("--frames", args->frames,
                     "Frames of a sequence or video: FIRST-LAST, FIRST or FIRST- (default: 0 to the last key "
-                    "frame); numbered at the output --fps")
+                    "frame), then optionally :STEP for every STEP-th frame (0-239:4); numbered at the output "
+                    "--fps")
         ->excludes(sub->get_option("--frame"));
     sub->add_option("-o,--output", args->output,
-                    "Output: PNG, numbered PNG pattern, .mp4, .webm or .gif (default f2.png)");
+                    "Output: .png, '-' (PNG to standard output), numbered PNG pattern, .mp4, .webm or .gif "
+                    "(default f2.png)")
+        ->check(nonEmptyPath("write f2.png"));
     sub->add_option("--size", args->size, "Image size WIDTHxHEIGHT (default: the scene's /camera)");
-    sub->add_option("--threads", args->threads, "Render threads (default: all cores)")
-        ->check(CLI::Range(0, 1024));
+    sub->add_option("--threads", args->threads, "Render threads, 0..1024 (default 0: all cores)")
+        ->check(wholeNumberIn(0, 1024));
     sub->add_option(
            "--aa", args->antialias,
-           "Anti-aliasing: N x N stratified samples per pixel, averaged (default 1 = the pixel centre)")
-        ->check(CLI::Range(1, 16));
+           "Anti-aliasing: N x N stratified samples per pixel, averaged; N = 1..16 (default 1 = the pixel "
+           "centre)")
+        ->check(wholeNumberIn(1, 16));
     sub->add_option("--fps", args->fps,
-                    "Output frames per second (default: the scene's /fps). The animation keeps its length: "
+                    "Output frames per second, 1..1000 (default: the scene's /fps). The animation keeps its length: "
                     "output frame i shows scene time i * (scene fps) / FPS")
-        ->check(CLI::Range(1, 1000));
+        ->check(wholeNumberIn(1, 1000));
     sub->add_option("--shard", args->shard,
                     "Render farm: worker K of N (K = 0..N-1) renders the frames whose number is K modulo N "
                     "(round-robin); sequences only")

@@ -20,12 +20,18 @@
 #include <QScreen>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTextBlock>
 #include <QVBoxLayout>
 
 #include "animation_exporter.h"
 #include "autosave.h"
 #include "core/anim/frame_time.h"
+#include "core/anim/frame_builder.h"
+#include "core/anim/track.h"
+#include "core/render/pick.h"
+#include "core/render/renderer.h"
 #include "editor_dock.h"
+#include "help_windows.h"
 #include "image_convert.h"
 #include "io/png_writer.h"
 #include "io/sequence_sink.h"
@@ -34,6 +40,7 @@
 #include "playback.h"
 #include "scene_document.h"
 #include "scene_editor.h"
+#include "text_capture.h"
 #include "timeline_widget.h"
 #include "viewport_widget.h"
 
@@ -88,7 +95,9 @@ MainWindow::MainWindow(QWidget* parent)
     timeStatus_ = new QLabel(this);
     fpsStatus_ = new QLabel(this);
     sizeStatus_ = new QLabel(this);
-    for (QLabel* label : {frameStatus_, timeStatus_, fpsStatus_, sizeStatus_})
+    selectionStatus_ = new QLabel(this);
+    refineStatus_ = new QLabel(this);
+    for (QLabel* label : {selectionStatus_, refineStatus_, frameStatus_, timeStatus_, fpsStatus_, sizeStatus_})
         statusBar()->addPermanentWidget(label);
 
     frameTimer_.setSingleShot(true);
@@ -104,11 +113,16 @@ MainWindow::MainWindow(QWidget* parent)
     connect(document_, &SceneDocument::fileChangedOnDisk, this, &MainWindow::onFileChangedOnDisk);
     connect(controller_.get(), &RenderController::frameReady, this, &MainWindow::onFrameReady);
     connect(viewport_, &ViewportWidget::viewChanged, this, &MainWindow::scheduleFrame);
+    connect(viewport_, &ViewportWidget::clicked, this, &MainWindow::selectAt);
     connect(playback_, &Playback::timeChanged, this, [this](double t) {
         timeline_->setTime(t);
         scheduleFrame();
     });
     connect(playback_, &Playback::playingChanged, timeline_, &TimelineWidget::setPlaying);
+    // Pausing shows the frame again, then refines it.
+    connect(playback_, &Playback::playingChanged, this, [this](bool playing) {
+        if (!playing) scheduleFrame();
+    });
     connect(timeline_, &TimelineWidget::playToggled, playback_, &Playback::togglePlaying);
     connect(timeline_, &TimelineWidget::stepRequested, playback_, &Playback::step);
     connect(timeline_, &TimelineWidget::seekRequested, playback_, &Playback::seek);
@@ -202,9 +216,25 @@ void MainWindow::createActions() {
         scales->addAction(a);
         if (int(scale) == saved) viewport_->setRenderScale(scale);
     }
+    QAction* refineAction = view->addAction(tr("&Refine When Paused"), this, &MainWindow::setRefinement);
+    refineAction->setCheckable(true);
+    refineAction->setChecked(refinement_);
     view->addSeparator();
     view->addAction(editorDock_->toggleViewAction());
     view->addAction(diagnosticsDock_->toggleViewAction());
+
+    QMenu* capture = menuBar()->addMenu(tr("&Capture"));
+    capture->addAction(tr("Set &Camera from View"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_C), this,
+                       &MainWindow::setCameraFromView);
+    capture->addAction(tr("&Key Selection Here"), QKeySequence(Qt::CTRL | Qt::Key_K), this,
+                       &MainWindow::keySelectionHere);
+
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&Keyboard Shortcuts"), this, [this] { showShortcuts(this, menuBar()); });
+    help->addAction(tr("Scene &Language Reference"), QKeySequence::HelpContents, this,
+                    [this] { showLanguageReference(this); });
+    help->addSeparator();
+    help->addAction(tr("&About f2-viewer"), this, [this] { showAbout(this); });
 }
 
 void MainWindow::resizeForViewport(QSize viewportSize) {
@@ -431,14 +461,117 @@ void MainWindow::scheduleFrame() {
 void MainWindow::requestFrame() {
     auto scene = document_->scene();
     if (!scene) return;
-    controller_->request({std::move(scene), playback_->time(), viewport_->viewCamera()});
+    lastRequest_ = {std::move(scene), playback_->time(), viewport_->viewCamera(), {}};
+    controller_->request(lastRequest_);
+}
+
+void MainWindow::setRefinement(bool on) {
+    refinement_ = on;
+    if (on)
+        refine();
+    else
+        scheduleFrame();  // back to one sample
+}
+
+bool MainWindow::isRefining() const {
+    return refinement_ && !playback_->isPlaying() && shownFrame_.serial != 0 &&
+           shownFrame_.antialias < kRefinedAntialias;
+}
+
+void MainWindow::refine() {
+    // Only the latest view, only when nothing newer is on its way: any change
+    // (time, camera, size, scene) makes a new one-sample request, which
+    // restarts refinement from its frame.
+    if (!isRefining() || controller_->hasPendingFrames() || frameTimer_.isActive() || !lastRequest_.scene) return;
+    RenderRequest next = lastRequest_;
+    next.options.antialias = shownFrame_.antialias * 2;
+    controller_->request(next);
 }
 
 void MainWindow::onFrameReady(const QImage& image, const FrameInfo& info) {
     shownFrame_ = info;
     viewport_->setImage(image);
+    updateSelectionView();
     updateStatus();
+    refine();
 }
+
+void MainWindow::selectAt(QPointF imagePoint) {
+    const QImage& image = viewport_->image();
+    const auto scene = document_->scene();
+    if (image.isNull() || !scene) return;
+    // The frame on screen: its time and the view at its size, so the pick
+    // names what the user sees.
+    const Camera camera = viewport_->viewCamera(image.size());
+    const auto hit = pickPixel(*scene, shownFrame_.time, camera, int(imagePoint.x()), int(imagePoint.y()));
+    setSelection(hit ? std::optional(selectionOf(*scene, *hit)) : std::nullopt);
+    if (!selection_) return;
+    if (const int line = creatingLine(editor()->toPlainText(), selection_->object)) {
+        QTextCursor cursor(editor()->document()->findBlockByNumber(line - 1));
+        cursor.movePosition(QTextCursor::EndOfBlock, QTextCursor::KeepAnchor);
+        editor()->setTextCursor(cursor);
+        editor()->centerCursor();
+    }
+}
+
+void MainWindow::setSelection(std::optional<Selection> selection) {
+    selection_ = std::move(selection);
+    updateSelectionView();
+}
+
+void MainWindow::updateSelectionView() {
+    const auto scene = document_->scene();
+    const auto object = selection_ && scene ? findObject(*scene, *selection_) : std::nullopt;
+    if (!object) {
+        selection_.reset();  // deleted or renamed in the text
+        viewport_->setSelectionOutline(std::nullopt);
+        selectionStatus_->clear();
+        timeline_->setKeyMarkers({});
+        return;
+    }
+    const SceneObject& target = scene->objects[*object];
+    QList<int> keys;
+    for (const Key& key : (selection_->part ? target.partTracks[std::size_t(*selection_->part)] : target.track).keys)
+        keys << key.frame;
+    timeline_->setKeyMarkers(keys);
+    EvaluatedFrame frame;
+    evaluateFrame(*scene, shownFrame_.time, frame);
+    const Bounds bounds = selectionBounds(*scene, frame, *object, selection_->part);
+    const QImage& image = viewport_->image();
+    viewport_->setSelectionOutline(
+        image.isNull() ? std::nullopt : outlineRect(viewport_->viewCamera(image.size()), bounds));
+    const Vec3 centre = (bounds.lo + bounds.hi) * 0.5f;
+    selectionStatus_->setText(tr("%1 at (%2, %3, %4)")
+                                  .arg(selection_->target())
+                                  .arg(double(centre.x), 0, 'f', 1)
+                                  .arg(double(centre.y), 0, 'f', 1)
+                                  .arg(double(centre.z), 0, 'f', 1));
+}
+
+void MainWindow::setCameraFromView() {
+    const auto scene = document_->scene();
+    const Pose pose = viewport_->orbit() ? viewport_->orbit()->pose() : scene->camera.pose;
+    applyEdit(editor(), cameraEdit(editor()->toPlainText(), scene->camera, pose));
+}
+
+bool MainWindow::keySelectionHere() {
+    const auto scene = document_->scene();
+    const auto object = selection_ ? findObject(*scene, *selection_) : std::nullopt;
+    if (!object) {
+        statusBar()->showMessage(tr("Select an object or part first (click it in the picture)."), 5000);
+        return false;
+    }
+    const SceneObject& target = scene->objects[*object];
+    const int frame = playback_->frame();
+    // An object's key is its absolute pose; a part's, its offset and rotation.
+    const Pose pose = selection_->part
+                          ? evaluateTrack(target.partTracks[std::size_t(*selection_->part)], frame, Pose{})
+                          : evaluateTrack(target.track, frame, target.rest);
+    applyEdit(editor(), keyEdit(editor()->toPlainText(), selection_->target(), frame, pose));
+    return true;
+}
+
+QString MainWindow::selectionStatus() const { return selectionStatus_->text(); }
 
 void MainWindow::updateStatus() {
     const int last = playback_->lastFrame();
@@ -452,6 +585,10 @@ void MainWindow::updateStatus() {
         sizeStatus_->setText(tr("%1×%2").arg(shownFrame_.size.width()).arg(shownFrame_.size.height()));
     }
     fpsStatus_->setText(tr("%1 fps").arg(controller_->achievedFps(), 0, 'f', 1));
+    const int n = shownFrame_.antialias;
+    refineStatus_->setText(shownFrame_.serial == 0 || playback_->isPlaying() || !refinement_ ? QString()
+                           : isRefining() ? tr("refining: %1×%1 samples…").arg(n)
+                                          : tr("refined: %1×%1 samples").arg(n));
 }
 
 void MainWindow::openDialog() {
@@ -479,16 +616,31 @@ bool MainWindow::refuseSceneFile(const QString& path, const QString& title) {
     return false;
 }
 
+QString MainWindow::outputFolder() const {
+    return document_->path().isEmpty() ? QDir::currentPath() : QFileInfo(document_->path()).absolutePath();
+}
+
+Image MainWindow::frameToSave() const {
+    // Rendered again rather than taken from the screen: the picture on screen
+    // may be a stretched older frame while the window resizes, and its size
+    // follows the docks at 25-100 %. One frame is milliseconds, so the GUI
+    // thread can afford it for a menu command.
+    const QSize size = viewport_->renderSize();
+    Renderer renderer;
+    Image image;
+    renderer.render(*document_->scene(), playback_->time(), viewport_->viewCamera(size), image);
+    return image;
+}
+
 void MainWindow::saveFrame() {
-    if (viewport_->image().isNull()) return;
     const QString stem = exportStem();
     const QString suggested =
         QStringLiteral("%1_frame_%2.png").arg(stem).arg(playback_->frame(), 4, 10, QChar('0'));
-    const QString path =
-        QFileDialog::getSaveFileName(this, tr("Save Frame"), suggested, tr("PNG images (*.png)"));
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save Frame"), QDir(outputFolder()).filePath(suggested),
+                                                      tr("PNG images (*.png)"));
     if (path.isEmpty() || refuseSceneFile(path, tr("Save Frame"))) return;
     std::string error;
-    if (!writePng(fromQImage(viewport_->image()), QFile::encodeName(path).toStdString(), error))
+    if (!writePng(frameToSave(), QFile::encodeName(path).toStdString(), error))
         QMessageBox::warning(this, tr("Save Frame"), QString::fromStdString(error));
     else
         statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
@@ -498,7 +650,7 @@ void MainWindow::exportPngSequence() {
     auto scene = document_->scene();
     if (!scene) return;
     playback_->pause();  // the export gets the CPU
-    const QString dir = QFileDialog::getExistingDirectory(this, tr("Export PNG Sequence to Folder"));
+    const QString dir = QFileDialog::getExistingDirectory(this, tr("Export PNG Sequence to Folder"), outputFolder());
     if (dir.isEmpty()) return;
     const QString stem = exportStem();
     const FramePattern pattern = exportSequencePattern(dir, stem, scene->lastFrame() + 1);
@@ -509,7 +661,7 @@ void MainWindow::exportVideo() {
     auto scene = document_->scene();
     if (!scene) return;
     playback_->pause();
-    QFileDialog dialog(this, tr("Export Video"), exportStem() + ".mp4",
+    QFileDialog dialog(this, tr("Export Video"), QDir(outputFolder()).filePath(exportStem() + ".mp4"),
                        tr("MP4 video (*.mp4);;WebM video (*.webm);;GIF animation (*.gif)"));
     dialog.setAcceptMode(QFileDialog::AcceptSave);
     dialog.setDefaultSuffix("mp4");

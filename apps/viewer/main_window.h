@@ -8,7 +8,9 @@
 #include <functional>
 #include <memory>
 
+#include "core/render/image.h"
 #include "render_controller.h"
+#include "selection.h"
 
 class QLabel;
 class QListWidget;
@@ -79,6 +81,35 @@ class MainWindow : public QMainWindow {
     QDockWidget* diagnosticsDock() const { return diagnosticsDock_; }
     EditorDock* editorDock() const { return editorDock_; }
     SceneEditor* editor() const;
+    /// The folder the save and export dialogs start in: the scene's (the
+    /// working folder for an untitled scene).
+    QString outputFolder() const;
+    /// The frame *Save Frame* writes: the current time and view, rendered at
+    /// the render size (the scene's /camera size at *Scene Size*, whatever
+    /// the docks take from the window).
+    Image frameToSave() const;
+    /// Selects what image point `imagePoint` (pixels of the picture on
+    /// screen) shows in the frame on screen, or clears the selection on the
+    /// background: outlined in the picture, named in the status bar, its
+    /// creating line selected in the editor.
+    void selectAt(QPointF imagePoint);
+    void setSelection(std::optional<Selection> selection);
+    const std::optional<Selection>& selection() const { return selection_; }
+    /// Writes the view (the look-around, else the scene camera) into the
+    /// scene's `/camera` line, keeping its size and `d`. One undo step.
+    void setCameraFromView();
+    /// Writes the selection's pose at the current frame as its `/key` line
+    /// there (replacing one at that frame). One undo step. False without a selection.
+    bool keySelectionHere();
+    /// While paused, the picture refines: the same frame again with 2x2, then
+    /// kRefinedAntialias x kRefinedAntialias samples (View › Refine When Paused).
+    void setRefinement(bool on);
+    /// The picture on screen is still to be refined.
+    bool isRefining() const;
+    /// The last step of refinement: what `f2 render --aa 4` computes.
+    static constexpr int kRefinedAntialias = 4;
+    /// The status bar's text about the selection.
+    QString selectionStatus() const;
     /// The frame on screen (time, timings, size); serial 0 before the first.
     const FrameInfo& shownFrame() const { return shownFrame_; }
 
@@ -110,7 +141,11 @@ class MainWindow : public QMainWindow {
     void showDiagnostics();
     void onFrameReady(const QImage& image, const FrameInfo& info);
     void requestFrame();
+    /// Asks for the frame on screen again with more samples, if it should refine.
+    void refine();
     void updateStatus();
+    /// Outline and status of the selection for the frame on screen.
+    void updateSelectionView();
     void openDialog();
     void saveFrame();
     void exportPngSequence();
@@ -140,6 +175,11 @@ class MainWindow : public QMainWindow {
     QLabel* timeStatus_ = nullptr;
     QLabel* fpsStatus_ = nullptr;
     QLabel* sizeStatus_ = nullptr;
+    QLabel* selectionStatus_ = nullptr;
+    std::optional<Selection> selection_;
+    QLabel* refineStatus_ = nullptr;
+    bool refinement_ = true;
+    RenderRequest lastRequest_;  // the view the latest request showed, at 1 sample
     QTimer frameTimer_;   // coalesces scheduleFrame() calls
     QTimer statusTimer_;  // lets the FPS readout fall to 0 when nothing renders
     FrameInfo shownFrame_;

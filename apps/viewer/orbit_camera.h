@@ -28,6 +28,8 @@ class OrbitCamera {
 
     /// The camera at this orbit position with `base`'s field of view and size.
     Camera apply(const Camera& base) const;
+    /// The eye and rotation (degrees, SPEC 1) as `/camera` writes them.
+    Pose pose() const;
 
     Vec3 target() const { return target_; }
     float distance() const { return distance_; }

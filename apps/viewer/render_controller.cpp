@@ -63,13 +63,17 @@ void RenderController::workerLoop(int threads) {
             serial = pendingSerial_;
             pending_.reset();
         }
-        for (int left = debugDelayMs_.load(); left > 0 && !cancel_.load(); left -= kDelaySliceMs)
-            std::this_thread::sleep_for(std::chrono::milliseconds(std::min(left, kDelaySliceMs)));
+        // The delay is read again every slice: lowering it releases a frame it holds.
+        const auto held = std::chrono::steady_clock::now();
+        while (!cancel_.load() && std::chrono::steady_clock::now() - held < std::chrono::milliseconds(debugDelayMs_.load()))
+            std::this_thread::sleep_for(std::chrono::milliseconds(kDelaySliceMs));
 
         FrameInfo info;
         info.time = request.time;
         info.serial = serial;
-        info.timings = renderer.render(*request.scene, request.time, request.camera, image, {}, &cancel_);
+        info.antialias = request.options.antialias;
+        info.timings =
+            renderer.render(*request.scene, request.time, request.camera, image, request.options, &cancel_);
         info.size = QSize(image.width, image.height);
         if (cancel_.load()) return;  // only the destructor cancels
         QImage frame = toQImage(image);

@@ -27,6 +27,7 @@ struct RenderRequest {
     std::shared_ptr<const SceneDesc> scene;
     double time = 0;  ///< in frames, may be fractional
     Camera camera;    ///< already at the render size
+    RenderOptions options;  ///< anti-aliasing, as `f2 render --aa`
 };
 
 /// What came back with a frame.
@@ -34,6 +35,7 @@ struct FrameInfo {
     double time = 0;
     FrameTimings timings;
     QSize size;
+    int antialias = 1;   ///< N of the N x N samples per pixel it was rendered with
     quint64 serial = 0;  ///< request number, increasing
 };
 
@@ -58,7 +60,8 @@ class RenderController : public QObject {
     quint64 framesSkipped() const { return skipped_.load(); }
 
     /// Test hook: the worker sleeps this long before each frame, to stand in
-    /// for a slow scene. 0 (the default) disables it.
+    /// for a slow scene. 0 (the default) disables it. Lowering it releases a
+    /// frame being held, so a test can hold one (a long delay) until it is done.
     void setDebugDelay(std::chrono::milliseconds delay) { debugDelayMs_.store(int(delay.count())); }
 
    signals:

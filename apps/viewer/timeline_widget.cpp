@@ -5,6 +5,7 @@
 #include <QLabel>
 #include <QSignalBlocker>
 #include <QSlider>
+#include <QSpinBox>
 #include <QStyle>
 #include <QToolButton>
 #include <algorithm>
@@ -27,14 +28,22 @@ TimelineWidget::TimelineWidget(QWidget* parent) : QWidget(parent) {
     for (QToolButton* b : {first, back, playButton_, forward, last}) layout->addWidget(b);
     setPlaying(false);
 
-    slider_ = new QSlider(Qt::Horizontal, this);
+    slider_ = new KeyMarkerSlider(this);
+    slider_->setMinimumHeight(slider_->sizeHint().height() + 8);  // room for the key markers
     slider_->setTracking(true);            // the picture follows while dragging
     slider_->setFocusPolicy(Qt::NoFocus);  // keep Space/arrows for the window's shortcuts
     layout->addWidget(slider_, 1);
 
+    // The frame is a box to type into ("frame [116] / 240  4.84 s").
+    layout->addWidget(new QLabel(tr("frame"), this));
+    frameBox_ = new QSpinBox(this);
+    frameBox_->setToolTip(tr("The frame shown; type a number and Enter to go there"));
+    frameBox_->setKeyboardTracking(false);  // seek on Enter or leaving the box, not per digit
+    frameBox_->setButtonSymbols(QAbstractSpinBox::NoButtons);
+    frameBox_->setAlignment(Qt::AlignRight);
+    layout->addWidget(frameBox_);
     frameLabel_ = new QLabel(this);
-    frameLabel_->setMinimumWidth(
-        frameLabel_->fontMetrics().horizontalAdvance("frame 00000 / 00000  000.00 s"));
+    frameLabel_->setMinimumWidth(frameLabel_->fontMetrics().horizontalAdvance("/ 00000  000.00 s"));
     layout->addWidget(frameLabel_);
 
     speed_ = new QComboBox(this);
@@ -51,6 +60,8 @@ TimelineWidget::TimelineWidget(QWidget* parent) : QWidget(parent) {
     connect(last, &QToolButton::clicked, this, [this] { emit seekRequested(lastFrame_); });
     connect(slider_, &QSlider::valueChanged, this, [this](int v) { emit seekRequested(v); });
     connect(slider_, &QSlider::sliderPressed, this, &TimelineWidget::scrubStarted);
+    connect(slider_, &KeyMarkerSlider::markerClicked, this, [this](int frame) { emit seekRequested(frame); });
+    connect(frameBox_, &QSpinBox::valueChanged, this, [this](int frame) { emit seekRequested(frame); });
     connect(slider_, &QSlider::sliderReleased, this, &TimelineWidget::scrubFinished);
     connect(speed_, &QComboBox::currentIndexChanged, this,
             [this](int i) { emit speedChanged(speed_->itemData(i).toDouble()); });
@@ -71,6 +82,8 @@ void TimelineWidget::setRange(int lastFrame, int fps) {
     fps_ = std::max(1, fps);
     const QSignalBlocker block(slider_);
     slider_->setRange(0, lastFrame_);
+    const QSignalBlocker blockBox(frameBox_);
+    frameBox_->setRange(0, lastFrame_);
     slider_->setPageStep(std::max(1, fps_));
 }
 
@@ -80,8 +93,14 @@ void TimelineWidget::setTime(double time) {
         const QSignalBlocker block(slider_);
         if (!slider_->isSliderDown()) slider_->setValue(frame);
     }
-    frameLabel_->setText(tr("frame %1 / %2  %3 s").arg(frame).arg(lastFrame_).arg(time / fps_, 0, 'f', 2));
+    if (!frameBox_->hasFocus()) {  // not while the user types a number
+        const QSignalBlocker block(frameBox_);
+        frameBox_->setValue(frame);
+    }
+    frameLabel_->setText(tr("/ %1  %2 s").arg(lastFrame_).arg(time / fps_, 0, 'f', 2));
 }
+
+void TimelineWidget::setKeyMarkers(QList<int> frames) { slider_->setMarkers(std::move(frames)); }
 
 void TimelineWidget::setPlaying(bool playing) {
     playButton_->setIcon(style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));

@@ -4,9 +4,12 @@
 /// clock owns the time.
 #include <QWidget>
 
+#include "key_marker_slider.h"
+
 class QComboBox;
 class QLabel;
 class QSlider;
+class QSpinBox;
 class QToolButton;
 
 namespace f2::viewer {
@@ -21,7 +24,10 @@ class TimelineWidget : public QWidget {
     void setTime(double time);
     void setPlaying(bool playing);
 
-    QSlider* slider() const { return slider_; }
+    KeyMarkerSlider* slider() const { return slider_; }
+    QSpinBox* frameBox() const { return frameBox_; }
+    /// Key frames of the selection, drawn on the slider; a click on one seeks there.
+    void setKeyMarkers(QList<int> frames);
     QComboBox* speedBox() const { return speed_; }
 
     static constexpr double kSpeeds[] = {0.25, 0.5, 1.0, 2.0, 4.0};
@@ -38,7 +44,8 @@ class TimelineWidget : public QWidget {
     QToolButton* addButton(int standardIcon, const QString& tip);
 
     QToolButton* playButton_ = nullptr;
-    QSlider* slider_ = nullptr;
+    KeyMarkerSlider* slider_ = nullptr;
+    QSpinBox* frameBox_ = nullptr;
     QComboBox* speed_ = nullptr;
     QLabel* frameLabel_ = nullptr;
     int lastFrame_ = 0;

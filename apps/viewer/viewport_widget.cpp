@@ -70,13 +70,39 @@ void ViewportWidget::paintEvent(QPaintEvent*) {
         painter.drawText(rect(), Qt::AlignCenter, tr("Rendering…"));
         return;
     }
-    // Fit the image into the widget keeping its aspect; while a resize is
-    // being rendered the old frame is simply stretched.
-    const QSizeF fitted = QSizeF(image_.size()).scaled(QSizeF(size()), Qt::KeepAspectRatio);
-    const QRectF target((width() - fitted.width()) / 2, (height() - fitted.height()) / 2, fitted.width(),
-                        fitted.height());
+    const QRectF target = imageRect();
     painter.setRenderHint(QPainter::SmoothPixmapTransform, true);
     painter.drawImage(target, image_);
+    if (outline_) {
+        const double sx = target.width() / image_.width(), sy = target.height() / image_.height();
+        const QRectF r(target.left() + outline_->left() * sx, target.top() + outline_->top() * sy,
+                       outline_->width() * sx, outline_->height() * sy);
+        painter.setRenderHint(QPainter::Antialiasing, true);
+        painter.setPen(QPen(QColor(255, 200, 40), 2, Qt::DashLine));
+        painter.setBrush(Qt::NoBrush);
+        painter.drawRect(r.adjusted(-2, -2, 2, 2));
+    }
+}
+
+QRectF ViewportWidget::imageRect() const {
+    // Fit the image into the widget keeping its aspect; while a resize is
+    // being rendered the old frame is simply stretched.
+    if (image_.isNull()) return {};
+    const QSizeF fitted = QSizeF(image_.size()).scaled(QSizeF(size()), Qt::KeepAspectRatio);
+    return {(width() - fitted.width()) / 2, (height() - fitted.height()) / 2, fitted.width(), fitted.height()};
+}
+
+std::optional<QPointF> ViewportWidget::imagePointAt(QPointF pos) const {
+    const QRectF target = imageRect();
+    if (target.isEmpty() || !target.contains(pos)) return std::nullopt;
+    return QPointF((pos.x() - target.left()) * image_.width() / target.width(),
+                   (pos.y() - target.top()) * image_.height() / target.height());
+}
+
+void ViewportWidget::setSelectionOutline(std::optional<QRectF> rect) {
+    if (rect == outline_) return;
+    outline_ = rect;
+    update();
 }
 
 void ViewportWidget::resizeEvent(QResizeEvent* event) {
@@ -92,12 +118,17 @@ OrbitCamera& ViewportWidget::startOrbit() {
 void ViewportWidget::mousePressEvent(QMouseEvent* event) {
     if (event->button() != Qt::LeftButton) return QWidget::mousePressEvent(event);
     dragFrom_ = event->position().toPoint();
+    pressAt_ = *dragFrom_;
+    dragged_ = false;
     setCursor(Qt::ClosedHandCursor);
 }
 
 void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
     if (!dragFrom_) return QWidget::mouseMoveEvent(event);
     const QPoint now = event->position().toPoint();
+    // A hand that shakes during a click does not turn the view.
+    if (!dragged_ && (now - pressAt_).manhattanLength() <= kClickSlop) return;
+    dragged_ = true;
     const QPoint delta = now - *dragFrom_;
     dragFrom_ = now;
     if (delta.isNull()) return;
@@ -110,8 +141,11 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
 
 void ViewportWidget::mouseReleaseEvent(QMouseEvent* event) {
     if (event->button() != Qt::LeftButton) return QWidget::mouseReleaseEvent(event);
+    const bool click = dragFrom_ && !dragged_;
     dragFrom_.reset();
     setCursor(Qt::OpenHandCursor);
+    if (click)
+        if (const auto point = imagePointAt(event->position())) emit clicked(*point);
 }
 
 void ViewportWidget::wheelEvent(QWheelEvent* event) {

@@ -4,6 +4,7 @@
 /// and turns mouse drags and the wheel into an orbit around the scene.
 #include <QImage>
 #include <QPoint>
+#include <QRectF>
 #include <QWidget>
 #include <optional>
 
@@ -26,6 +27,7 @@ class ViewportWidget : public QWidget {
     /// Back to the scene's camera.
     void resetView();
     bool isOrbiting() const { return orbit_.has_value(); }
+    const std::optional<OrbitCamera>& orbit() const { return orbit_; }
 
     void setRenderScale(RenderScale scale);
     RenderScale renderScale() const { return scale_; }
@@ -39,15 +41,27 @@ class ViewportWidget : public QWidget {
     void setImage(const QImage& image);
     const QImage& image() const { return image_; }
 
+    /// Where the image is painted in the widget (fitted, centred).
+    QRectF imageRect() const;
+    /// The image point (pixels of image()) under widget position `pos`, if on the image.
+    std::optional<QPointF> imagePointAt(QPointF pos) const;
+    /// Draws a rectangle round `rect` (in image pixels) over the picture; nothing to clear it.
+    void setSelectionOutline(std::optional<QRectF> rect);
+    std::optional<QRectF> selectionOutline() const { return outline_; }
+
     QSize sizeHint() const override { return {800, 600}; }
     QSize minimumSizeHint() const override { return {160, 120}; }
 
     static constexpr float kOrbitDegPerPixel = 0.3f;
     static constexpr float kZoomPerWheelStep = 0.9f;  ///< distance factor per wheel notch
+    /// A press and release closer than this (pixels) is a click, not a drag.
+    static constexpr int kClickSlop = 3;
 
    signals:
     /// The render size or the view camera changed: render again.
     void viewChanged();
+    /// A click (not a drag) on the picture at `imagePoint` (pixels of image()).
+    void clicked(QPointF imagePoint);
 
    protected:
     void paintEvent(QPaintEvent* event) override;
@@ -66,6 +80,9 @@ class ViewportWidget : public QWidget {
     std::optional<OrbitCamera> orbit_;
     RenderScale scale_ = RenderScale::Full;
     std::optional<QPoint> dragFrom_;
+    QPoint pressAt_;
+    bool dragged_ = false;
+    std::optional<QRectF> outline_;
 };
 
 }  // namespace f2::viewer

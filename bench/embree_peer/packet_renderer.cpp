@@ -4,6 +4,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -51,9 +52,9 @@ namespace {
 using Surface = PacketRenderer::Surface;
 
 /// What the primary rays of a packet found, lane by lane: everything shading
-/// needs. Filled by whole-packet loops, one per distinct primitive hit: lanes
-/// written one at a time and then read as a vector would stall on store
-/// forwarding.
+/// needs, computed for all lanes at once (the shape and surface of each lane
+/// gathered by its primitive), so that the loop vectorises however many
+/// primitives the packet hit.
 template <int W>
 struct PacketSurfaces {
     alignas(64) float normal[3][W];  ///< unit, facing the viewer
@@ -62,34 +63,21 @@ struct PacketSurfaces {
     alignas(64) float kd[W], ks[W], shininess[W];
     alignas(64) float diffuse[W], specular[W];  ///< the sums of SPEC 3, ambient first
     alignas(64) unsigned skip[W];               ///< the primitive the shadow rays skip
-    alignas(64) int hit[W], todo[W];
+    alignas(64) int hit[W];
 
-    /// Marks the lanes that hit something; returns how many.
-    int start(const int* valid, const RTCRayHitNt<W>& rays) {
-        int count = 0;
-#pragma omp simd reduction(+ : count)
-        for (int lane = 0; lane < W; ++lane) {
-            hit[lane] = (valid[lane] != 0) & (rays.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID);
-            todo[lane] = hit[lane];
-            count += hit[lane];
-            diffuse[lane] = specular[lane] = kd[lane] = ks[lane] = shininess[lane] = 0;
-            for (int i = 0; i < 3; ++i) normal[i][lane] = origin[i][lane] = colour[i][lane] = 0;
-            skip[lane] = UserShapeScene::kNoSkip;
-        }
-        return count;
-    }
-
-    /// Fills the lanes that hit primitive `prim`; returns how many.
-    int fill(const Shape& s, const Surface& surface, unsigned prim, const RTCRayHitNt<W>& rays, float ambient) {
+    void fill(const int* valid, const RTCRayHitNt<W>& rays, const Shape* shapes, const Surface* surfaces,
+              float ambient) {
         const float* eye[3] = {rays.ray.org_x, rays.ray.org_y, rays.ray.org_z};
         const float* dir[3] = {rays.ray.dir_x, rays.ray.dir_y, rays.ray.dir_z};
-        const bool cylinder = s.kind == ShapeKind::Cylinder;
-        int count = 0;
-#pragma omp simd reduction(+ : count)
+#pragma omp simd
         for (int lane = 0; lane < W; ++lane) {
-            const bool mine = todo[lane] & (rays.hit.primID[lane] == prim);
-            count += mine;
-            todo[lane] = todo[lane] & !mine;
+            hit[lane] = (valid[lane] != 0) & (rays.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID);
+            // Loads unconditional (GCC does not vectorise masked ones here);
+            // lanes without a hit read primitive 0, and their values go unused.
+            const unsigned hitPrim = rays.hit.primID[lane];
+            const unsigned prim = hit[lane] ? hitPrim : 0;
+            const Shape& s = shapes[prim];
+            const Surface& surface = surfaces[prim];
             const float t = rays.ray.tfar[lane];
             const int face = int(rays.hit.u[lane]);
             float p[3], local[3], d[3];
@@ -98,34 +86,44 @@ struct PacketSurfaces {
                 p[i] = eye[i][lane] + d[i] * t;
                 local[i] = p[i] - s.centre[i];
             }
-            // The normal of shapeNormal(), as selects over the face.
+            // The unit outward normal of the face hit: a sphere's from its
+            // centre, a cylinder's side across its axis, a cap's or a box
+            // face's along the axis of that face.
             const float along = local[0] * s.axes[1][0] + local[1] * s.axes[1][1] + local[2] * s.axes[1][2];
+            const bool cylinder = s.kind == ShapeKind::Cylinder;
             float radial[3];
             for (int i = 0; i < 3; ++i) radial[i] = cylinder ? local[i] - s.axes[1][i] * along : local[i];
             const float scale = 1.0f / std::sqrt(radial[0] * radial[0] + radial[1] * radial[1] + radial[2] * radial[2]);
-            const int flatAxis = face == kCap ? 1 : face - kSlabX;
+            const int flatAxis = face == kCap ? 1 : face == kCurved ? 0 : face - kSlabX;
+            // The face's axis picked with bit masks, not a select: GCC would turn
+            // a select into masked gathers, which it does not vectorise.
             float axis[3];
-            for (int i = 0; i < 3; ++i) axis[i] = flatAxis == 0 ? s.axes[0][i] : flatAxis == 1 ? s.axes[1][i] : s.axes[2][i];
+            for (int i = 0; i < 3; ++i) {
+                const std::uint32_t pick0 = flatAxis == 0 ? ~0u : 0u, pick1 = flatAxis == 1 ? ~0u : 0u;
+                axis[i] = std::bit_cast<float>((std::bit_cast<std::uint32_t>(s.axes[0][i]) & pick0) |
+                                               (std::bit_cast<std::uint32_t>(s.axes[1][i]) & pick1) |
+                                               (std::bit_cast<std::uint32_t>(s.axes[2][i]) & ~(pick0 | pick1)));
+            }
             const float sign = local[0] * axis[0] + local[1] * axis[1] + local[2] * axis[2] >= 0 ? 1.0f : -1.0f;
             float n[3];
             for (int i = 0; i < 3; ++i) n[i] = face == kCurved ? radial[i] * scale : sign * axis[i];
             // Seen from inside the shape: the normal faces the viewer, and the
             // shadow rays must not skip the shape they start in.
             const bool inside = n[0] * d[0] + n[1] * d[1] + n[2] * d[2] > 0;
-            for (float& c : n) c = inside ? -c : c;
-            const float offset = surfaceOffset(p);
+            for (int i = 0; i < 3; ++i) n[i] = inside ? -n[i] : n[i];
+            const float offset = surfaceOffset(p[0], p[1], p[2]);
             for (int i = 0; i < 3; ++i) {
-                normal[i][lane] = mine ? n[i] : normal[i][lane];
-                origin[i][lane] = mine ? p[i] + n[i] * offset : origin[i][lane];
-                colour[i][lane] = mine ? surface.colour[i] : colour[i][lane];
+                normal[i][lane] = hit[lane] ? n[i] : 0.0f;
+                origin[i][lane] = p[i] + n[i] * offset;
+                colour[i][lane] = surface.colour[i];
             }
-            skip[lane] = mine ? (inside ? UserShapeScene::kNoSkip : prim) : skip[lane];
-            kd[lane] = mine ? surface.kd : kd[lane];
-            ks[lane] = mine ? surface.ks : ks[lane];
-            shininess[lane] = mine ? surface.shininess : shininess[lane];
-            diffuse[lane] = mine ? surface.ka * ambient : diffuse[lane];
+            skip[lane] = inside ? UserShapeScene::kNoSkip : prim;
+            kd[lane] = surface.kd;
+            ks[lane] = surface.ks;
+            shininess[lane] = surface.shininess;
+            diffuse[lane] = surface.ka * ambient;
+            specular[lane] = 0;
         }
-        return count;
     }
 };
 
@@ -144,7 +142,7 @@ PacketRenderer::PacketRenderer(const PrimsFrame& frame, int packetWidth, int til
         eye_[row] = frame.worldFromCamera.translation(row);
         for (int col = 0; col < 3; ++col) camera_[row][col] = frame.worldFromCamera.linear(row, col);
     }
-    primaryStart_ = surfaceOffset(eye_);
+    primaryStart_ = surfaceOffset(eye_[0], eye_[1], eye_[2]);
     for (int i = 0; i < 3; ++i) background_[i] = float(frame.background[i]) / 255.0f;
     for (const DirLight& light : frame.lights) {
         const float* d = light.direction;
@@ -222,16 +220,9 @@ void PacketRenderer::renderTile(const UserShapeScene& scene, int tile, RayCounts
             for (int lane = 0; lane < W; ++lane) counts.primary += valid[lane] != 0;
             P::intersect(valid, scene.handle(), &context, rays);
 
-            // The surface each lane found, lifted off for its shadow rays,
-            // one pass per distinct primitive hit (few in a coherent packet).
+            // The surface each lane found, lifted off for its shadow rays.
             PacketSurfaces<W> surf;
-            int remaining = surf.start(valid, rays);
-            while (remaining > 0) {
-                int first = 0;
-                while (!surf.todo[first]) ++first;
-                const unsigned prim = rays.hit.primID[first];
-                remaining -= surf.fill(scene.shape(prim), surfaces_[prim], prim, rays, ambient_);
-            }
+            surf.fill(valid, rays, &scene.shape(0), surfaces_.data(), ambient_);
 
             // One packet of shadow rays per light, for the lanes it faces.
             for (const Light& light : lights_) {

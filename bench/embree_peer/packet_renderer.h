@@ -3,7 +3,9 @@
 /// each traced as blocks of pixels in one ray packet (rtcIntersect16/8/4),
 /// shaded by SPEC 3's Phong formula with a packet of shadow rays per light
 /// (rtcOccluded16/8/4).
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -55,9 +57,9 @@ private:
 /// SPEC 3: shadow rays leave this far off the surface, relative to the hit
 /// point's largest coordinate, so a surface never shadows itself. The same
 /// offset as f2's, so that both renderers take the same shadow decisions.
-inline float surfaceOffset(const float p[3]) {
+inline float surfaceOffset(float x, float y, float z) {
     constexpr float kBias = 5e-5f;
-    return kBias * (1.0f + std::max(std::max(std::fabs(p[0]), std::fabs(p[1])), std::fabs(p[2])));
+    return kBias * (1.0f + std::max(std::max(std::fabs(x), std::fabs(y)), std::fabs(z)));
 }
 
 }  // namespace f2::peer

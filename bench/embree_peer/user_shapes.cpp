@@ -1,6 +1,7 @@
 #include "user_shapes.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <type_traits>
 

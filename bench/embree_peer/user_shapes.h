@@ -4,7 +4,6 @@
 /// all lanes of an Embree ray packet at once.
 #include <embree3/rtcore.h>
 
-#include <cmath>
 #include <vector>
 
 #include "prims_file.h"
@@ -23,25 +22,6 @@ struct alignas(64) Shape {
 };
 
 Shape makeShape(const PrimRecord& record);
-
-/// Unit outward normal at world point `p`, on face `face` of `s`.
-inline void shapeNormal(const Shape& s, const float p[3], int face, float n[3]) {
-    const float local[3] = {p[0] - s.centre[0], p[1] - s.centre[1], p[2] - s.centre[2]};
-    if (face == kCurved) {
-        float v[3] = {local[0], local[1], local[2]};
-        if (s.kind == ShapeKind::Cylinder) {
-            const float* a = s.axes[1];
-            float along = local[0] * a[0] + local[1] * a[1] + local[2] * a[2];
-            for (int i = 0; i < 3; ++i) v[i] = local[i] - a[i] * along;
-        }
-        float scale = 1.0f / std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-        for (int i = 0; i < 3; ++i) n[i] = v[i] * scale;
-        return;
-    }
-    const float* a = s.axes[face == kCap ? 1 : face - kSlabX];
-    float sign = local[0] * a[0] + local[1] * a[1] + local[2] * a[2] >= 0 ? 1.0f : -1.0f;
-    for (int i = 0; i < 3; ++i) n[i] = sign * a[i];
-}
 
 /// How the BVH follows the primitives: built once, or updated every frame.
 enum class BuildMode { Static, Low, Medium, High, Refit };

@@ -4,7 +4,7 @@
 
 namespace f2 {
 
-std::string FramePattern::format(int frame) const {
+std::string FramePattern::format(std::int64_t frame) const {
     std::string digits = std::to_string(frame);
     if (int(digits.size()) < width) digits.insert(0, std::size_t(width) - digits.size(), zeroPad ? '0' : ' ');
     return prefix + digits + suffix;
@@ -45,7 +45,13 @@ std::optional<FramePattern> parseFramePattern(const std::string& path, std::stri
             width = width * 10 + (path[j++] - '0');
         if (j >= path.size() || path[j] != 'd' || width > 9) {
             error = "'" + path +
-                    "': a frame number pattern is %d, %4d or %04d (at most 9 digits); write %% for '%'";
+                    "': a frame number pattern is %d or %0Nd such as %04d (N at most 9); write %% for '%'";
+            return std::nullopt;
+        }
+        // printf's %4d pads with spaces: names that ffmpeg and most tools cannot read back.
+        if (width > 0 && !zero) {
+            error = "'" + path + "': %" + std::to_string(width) + "d would pad with spaces; write %0" +
+                    std::to_string(width) + "d (zero-padded) or %d";
             return std::nullopt;
         }
         if (found) {

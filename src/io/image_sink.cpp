@@ -11,7 +11,7 @@ bool PngImageSink::begin(const FrameFormat& format, std::string& error) {
 }
 
 bool PngImageSink::write(const Image& image, std::int64_t, std::string& error, const std::atomic<bool>*) {
-    written_ = writePng(image, path_, error);
+    written_ = stream_ ? writePng(image, stream_, error) : writePng(image, path_, error);
     return written_;
 }
 

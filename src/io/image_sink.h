@@ -1,5 +1,6 @@
 #pragma once
 /// One PNG image: the single frame of a one-frame range.
+#include <cstdio>
 #include <string>
 
 #include "io/frame_sink.h"
@@ -9,6 +10,8 @@ namespace f2 {
 class PngImageSink : public FrameSink {
    public:
     explicit PngImageSink(std::string path) : path_(std::move(path)) {}
+    /// Writes to an open stream (standard output), named `name` in messages.
+    PngImageSink(std::FILE* stream, std::string name) : path_(std::move(name)), stream_(stream) {}
     /// False unless exactly one frame is coming.
     bool begin(const FrameFormat& format, std::string& error) override;
     /// Writes the file atomically (temporary file, then rename; a device directly).
@@ -20,6 +23,7 @@ class PngImageSink : public FrameSink {
 
    private:
     std::string path_;
+    std::FILE* stream_ = nullptr;
     bool written_ = false;
 };
 

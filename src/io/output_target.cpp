@@ -136,6 +136,11 @@ bool isTemporaryOf(const std::string& name, const std::string& target) {
     return name.size() == prefix.size() + kRandomChars && name.starts_with(prefix);
 }
 
+bool looksLikeTemporary(const std::string& name) {
+    const std::size_t marker = name.rfind(kTempMarker);
+    return marker != std::string::npos && name.size() == marker + kTempSuffixBytes;
+}
+
 bool replaceWithTemporary(const std::string& tempPath, const OutputTarget& target, std::string& error) {
     int fd = ::open(tempPath.c_str(), O_RDONLY | O_CLOEXEC);
     if (fd < 0 || ::fsync(fd) != 0) {

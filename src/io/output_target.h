@@ -39,6 +39,11 @@ int createTemporaryBeside(const std::string& realPath, std::string& tempPath, st
 /// createTemporaryBeside made for `target` (a file name as well).
 bool isTemporaryOf(const std::string& name, const std::string& target);
 
+/// True if `name` (a file name) has the form of a temporary file that
+/// createTemporaryBeside makes, for whichever target: a cheap filter before
+/// isTemporaryOf when a directory is searched for leftovers.
+bool looksLikeTemporary(const std::string& name);
+
 /// Makes a finished file durable and gives it its real name: fsync, then rename
 /// `tempPath` onto `realPath`. False with `error` set (the temporary file is
 /// then still there for the caller to remove).

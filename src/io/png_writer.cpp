@@ -67,6 +67,18 @@ bool writePng(const Image& image, const std::string& path, std::string& error) {
     return true;
 }
 
+bool writePng(const Image& image, std::FILE* stream, std::string& error) {
+    if (image.width <= 0 || image.height <= 0) {
+        error = "cannot write an empty image";
+        return false;
+    }
+    if (!writeRows(stream, image, error) || std::fflush(stream) != 0 || std::ferror(stream)) {
+        error = "cannot write the PNG to the stream" + (error.empty() ? std::string() : ": " + error);
+        return false;
+    }
+    return true;
+}
+
 bool readPng(const std::string& path, Image& image, std::string& error) {
     png_image png{};
     png.version = PNG_IMAGE_VERSION;

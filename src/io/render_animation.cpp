@@ -1,5 +1,7 @@
 #include "io/render_animation.h"
 
+#include <numeric>
+
 namespace f2 {
 
 AnimationRange AnimationRange::still(double t, int sceneFps) {
@@ -10,10 +12,20 @@ AnimationRange AnimationRange::still(double t, int sceneFps) {
 }
 
 std::int64_t AnimationRange::count() const {
-    // Frames f in [0, n] with f = shardIndex (mod shardCount).
-    auto upTo = [this](std::int64_t n) { return n < shardIndex ? 0 : (n - shardIndex) / shardCount + 1; };
     if (last < first) return 0;
-    return upTo(last) - (first > 0 ? upTo(first - 1) : 0);
+    // Frame first + k*step (k = 0..frames-1) is in the shard when it is shardIndex
+    // mod shardCount; that repeats in k with period shardCount / gcd(step, shardCount):
+    // count one period, then the whole periods and the rest.
+    const std::int64_t n = shardCount;
+    const std::int64_t period = n / std::gcd(step % n, n);
+    const std::int64_t frames = (last - first) / step + 1;
+    std::int64_t perPeriod = 0, rest = 0;
+    for (std::int64_t k = 0; k < period && k < frames; ++k) {
+        if (!inShard(first + k * step)) continue;
+        ++perPeriod;
+        if (k < frames % period) ++rest;
+    }
+    return frames / period * perPeriod + rest;
 }
 
 AnimationResult renderAnimation(const SceneDesc& scene, const AnimationRange& range, const Camera& camera,
@@ -40,10 +52,8 @@ AnimationResult renderAnimation(const SceneDesc& scene, const AnimationRange& ra
     std::string error;
     if (!sink.begin({camera.width, camera.height, range.outputFps, result.total}, error)) return stop(error);
     Image image;
-    // The shard's first frame at or after `first`, then every shardCount-th.
-    std::int64_t start = range.first + ((range.shardIndex - range.first % range.shardCount) % range.shardCount +
-                                        range.shardCount) % range.shardCount;
-    for (std::int64_t f = start; f <= range.last; f += range.shardCount) {
+    for (std::int64_t f = range.first; f <= range.last; f += range.step) {
+        if (!range.inShard(f)) continue;
         if (cancelled()) return stop("");
         if (sink.alreadyDone(f)) {
             ++result.skipped;

@@ -20,6 +20,7 @@ struct AnimationRange {
     int sceneFps = 24, outputFps = 24;  ///< see sceneTimeOfOutputFrame
     double timeOffset = 0;              ///< added to every frame's time (a still at a fractional time)
     int shardIndex = 0, shardCount = 1; ///< only frames ≡ shardIndex (mod shardCount): a render farm's worker
+    std::int64_t step = 1;              ///< every step-th frame from first (a quick preview)
 
     /// One image at scene time `t` (frames, may be fractional).
     static AnimationRange still(double t, int sceneFps);
@@ -27,8 +28,12 @@ struct AnimationRange {
     double timeOf(std::int64_t frame) const {
         return timeOffset + sceneTimeOfOutputFrame(frame, sceneFps, outputFps);
     }
-    /// Frames of [first, last] in this shard.
+    /// The frame belongs to this shard (whether or not it is in [first, last]).
+    bool inShard(std::int64_t frame) const { return frame % shardCount == shardIndex; }
+    /// Frames first, first + step, ... up to last that are in this shard.
     std::int64_t count() const;
+    /// The last of first, first + step, ... that is <= last (whatever the shard).
+    std::int64_t lastRendered() const { return last < first ? last : last - (last - first) % step; }
 };
 
 struct AnimationProgress {

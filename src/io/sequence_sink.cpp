@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "io/output_target.h"
 #include "io/png_writer.h"
 
 namespace f2 {
@@ -31,10 +32,32 @@ bool PngSequenceSink::makeDirectoryOf(const std::string& path, std::string& erro
     return true;
 }
 
+void PngSequenceSink::removeLeftoverTemporaries(const std::string& path) {
+    const std::filesystem::path file(path);
+    const std::filesystem::path dir = file.parent_path().empty() ? "." : file.parent_path();
+    std::error_code ec;
+    if (dir.string() != scannedDirectory_) {
+        // One listing per directory: leftovers are few, the frames many.
+        scannedDirectory_ = dir.string();
+        leftoverNames_.clear();
+        for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+            std::string name = it->path().filename().string();
+            if (looksLikeTemporary(name)) leftoverNames_.push_back(std::move(name));
+        }
+    }
+    const std::string target = file.filename().string();
+    for (const std::string& name : leftoverNames_)
+        if (isTemporaryOf(name, target)) std::filesystem::remove(dir / name, ec);
+}
+
 bool PngSequenceSink::alreadyDone(std::int64_t frame) {
+    if (!resume_) return false;
+    // Only this run's own frames: another shard's worker may be writing its
+    // temporaries in the same directory right now.
+    removeLeftoverTemporaries(fileName(frame));
     // Files appear only complete (temporary file, then rename): one that exists is a finished frame.
     std::error_code ec;
-    if (!resume_ || !std::filesystem::exists(fileName(frame), ec)) return false;
+    if (!std::filesystem::exists(fileName(frame), ec)) return false;
     ++completed_;
     return true;
 }

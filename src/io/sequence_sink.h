@@ -4,6 +4,7 @@
 #include <deque>
 #include <future>
 #include <string>
+#include <vector>
 
 #include "io/frame_pattern.h"
 #include "io/frame_sink.h"
@@ -12,7 +13,9 @@ namespace f2 {
 
 class PngSequenceSink : public FrameSink {
    public:
-    /// `resume`: frames whose file already exists are skipped.
+    /// `resume`: frames whose file already exists are skipped, and temporary
+    /// files of this sink's frames left by a killed run (`kill -9`, a lost
+    /// machine) are removed.
     explicit PngSequenceSink(FramePattern pattern, bool resume = false);
     /// Waits for the frames still being written.
     ~PngSequenceSink() override;
@@ -37,11 +40,15 @@ class PngSequenceSink : public FrameSink {
     /// Waits for the oldest write; false (and error_) if it failed.
     bool collectOldest();
     bool makeDirectoryOf(const std::string& path, std::string& error);
+    /// Removes the temporary files of `path` left by an earlier, killed run.
+    void removeLeftoverTemporaries(const std::string& path);
 
     FramePattern pattern_;
     bool resume_;
     std::deque<std::future<std::string>> writes_;  // each write's error, empty on success
     std::string error_, lastDirectory_;
+    std::string scannedDirectory_;             // the directory whose temporaries are listed below
+    std::vector<std::string> leftoverNames_;  // file names there that look like temporaries
     std::int64_t completed_ = 0;
 };
 

@@ -149,6 +149,27 @@ TEST(RenderAnimation, AShardRendersEveryNthFrameAndSkipsFinishedOnes) {
     EXPECT_EQ((AnimationRange{5, 5, 24, 24, 0, 1, 3}.count()), 0);
 }
 
+TEST(RenderAnimation, AStepRendersEveryStepthFrameAlsoInAShard) {
+    const SceneDesc scene = test::sceneFromText(kMovingBall);
+    AnimationRange range{2, 20, 24, 24, 0, 1, 2, 3};  // 2, 5, 8, 11, 14, 17, 20; odd ones: 5, 11, 17
+    EXPECT_EQ(range.count(), 3);
+    EXPECT_EQ(range.lastRendered(), 20);
+    RecordingSink sink;
+    renderAnimation(scene, range, Camera::fromDesc(scene.camera), sink, nullptr);
+    EXPECT_EQ(sink.calls, (std::vector<std::string>{"begin", "write 5", "write 11", "write 17", "finish"}));
+    // Counting by periods agrees with counting one by one, for many ranges, steps and shards.
+    for (std::int64_t first : {0, 1, 7})
+        for (std::int64_t last : {first, first + 1, first + 30, first + 97})
+            for (std::int64_t step : {1, 2, 3, 4, 6, 9})
+                for (int n : {1, 2, 3, 4, 6}) {
+                    const AnimationRange r{first, last, 24, 24, 0, n - 1, n, step};
+                    std::int64_t expected = 0;
+                    for (std::int64_t f = first; f <= last; f += step) expected += r.inShard(f);
+                    EXPECT_EQ(r.count(), expected) << first << "-" << last << ":" << step << " shard " << n - 1 << "/" << n;
+                }
+    EXPECT_EQ((AnimationRange{0, 10, 24, 24, 0, 0, 1, 4}.lastRendered()), 8);
+}
+
 TEST(RenderAnimation, CancelAndErrorsAbandonTheSink) {
     const SceneDesc scene = test::sceneFromText(kMovingBall);
     const Camera camera = Camera::fromDesc(scene.camera);

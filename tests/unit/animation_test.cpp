@@ -35,6 +35,18 @@ TEST(Track, LinearAtBetweenAndOutsideKeys) {
     EXPECT_FLOAT_EQ(xAt(t, 99), 300);    // after the last the last holds
 }
 
+// Regression (issue 13.1): NaN passed every comparison, upper_bound returned
+// end() and the segment read one key past the buffer (ASan: heap overflow).
+TEST(Track, NonFiniteTimesStayOnTheKeys) {
+    for (Interpolation mode : {Interpolation::Linear, Interpolation::Ease, Interpolation::Spline}) {
+        Track t = trackOf({{0, 10}, {5, 20}, {10, 30}}, mode);
+        EXPECT_FLOAT_EQ(xAt(t, std::nan("")), 10);
+        EXPECT_FLOAT_EQ(xAt(t, -std::nan("")), 10);
+        EXPECT_FLOAT_EQ(xAt(t, -INFINITY), 10);
+        EXPECT_FLOAT_EQ(xAt(t, INFINITY), 30);
+    }
+}
+
 TEST(Track, LinearInterpolatesAllSixNumbers) {
     Track t;
     t.keys = {{0, Pose{{0, 10, 20}, {0, 90, -40}}}, {4, Pose{{4, 30, 20}, {40, 0, 40}}}};

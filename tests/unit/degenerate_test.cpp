@@ -302,6 +302,23 @@ TEST(Degenerate, TinyAndHugeObjects) {
 }
 
 // Threads change nothing, even in these scenes.
+// Regression (issue 13.10): a material and light at the float limit made
+// 0 * inf = NaN (a black channel times an infinite diffuse sum, an infinite
+// ks * intensity times a highlight that underflows to 0): the pixel went black
+// instead of saturating.
+TEST(Degenerate, HugeMaterialsSaturateInsteadOfTurningBlack) {
+    const std::string view = "/camera 64 48 0.5 0 0 -100\n/background 10 20 30\n/sphere s 60 0 0 0\n";
+    // Black paint, ka * ambient = inf: only the highlight (n tiny: everywhere lit, pow = 1) remains.
+    Rendered black = render(view + "/paint s 0 0 0\n/material s 3e38 1 1 1e-30\n/amb_light 10\n/dir_light 1 0 0 1\n");
+    EXPECT_EQ(black.nonFinite, 0);
+    EXPECT_EQ(describe(black.image.at(kW / 2, kH / 2)), "255 255 255");
+    // ks * intensity = inf, n huge: pow() underflows off the highlight's centre.
+    Rendered white = render(view + "/paint s 255 255 255\n/material s 1 1 3e38 3e38\n/amb_light 0.5\n"
+                                   "/dir_light 3e38 0 0 1\n");
+    EXPECT_EQ(white.nonFinite, 0);
+    EXPECT_EQ(notEqual(white.image, kW / 2 - 8, kH / 2 - 8, kW / 2 + 8, kH / 2 + 8, Rgb8{255, 255, 255}), 0);
+}
+
 TEST(Degenerate, OneAndTwoThreadsGiveTheSameImage) {
     const std::string text =
         "/camera 64 48 0.5\n/box o 2 2 2 1 1 10\n/cylinder c 1 4 1 0 10 90 0 0\n/sphere s 1 0 0 1\n"

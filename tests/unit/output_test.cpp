@@ -50,9 +50,15 @@ TEST(FramePattern, FormatsPaddedFrameNumbers) {
     auto plain = parseFramePattern("%d.png", error);
     ASSERT_TRUE(plain);
     EXPECT_EQ(plain->format(42), "42.png");
-    auto spaced = parseFramePattern("100%%_%3d.png", error);
-    ASSERT_TRUE(spaced);
-    EXPECT_EQ(spaced->format(5), "100%_  5.png");
+    auto percent = parseFramePattern("100%%_%03d.png", error);
+    ASSERT_TRUE(percent);
+    EXPECT_EQ(percent->format(5), "100%_005.png");
+}
+
+TEST(FramePattern, RefusesSpacePaddingAndSuggestsZeros) {
+    std::string error;
+    EXPECT_FALSE(parseFramePattern("x_%4d.png", error));
+    EXPECT_NE(error.find("%04d"), std::string::npos) << error;
 }
 
 TEST(FramePattern, RejectsAnythingButOneIntegerConversion) {

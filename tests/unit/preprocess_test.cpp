@@ -331,14 +331,14 @@ class Include : public ::testing::Test {
 };
 
 TEST_F(Include, ReadsFilesRelativeToTheIncludingFile) {
-    write("parts/robots.f2", "/include ../shared/size.f2\n/robot r{n} 0 0 0\n");
-    write("shared/size.f2", "/let n 4\n");
+    write("parts/robots.f2", "/include ../common/size.f2\n/robot r{n} 0 0 0\n");
+    write("common/size.f2", "/let n 4\n");
     const std::string main = write("main.f2", "/include parts/robots.f2\n/sphere s (n) 0 0 0\n");
     const ParseResult r = parseSceneFile(main);
     ASSERT_TRUE(r.ok()) << dump(r);
     EXPECT_EQ(names(*r.scene), (std::vector<std::string>{"r4", "s"}));
     EXPECT_EQ(radius(*r.scene, "s"), 4);  // variables are shared
-    EXPECT_EQ(r.files, (std::vector<std::string>{main, path("parts/robots.f2"), path("shared/size.f2")}));
+    EXPECT_EQ(r.files, (std::vector<std::string>{main, path("parts/robots.f2"), path("common/size.f2")}));
     EXPECT_EQ(r.linesRead, 5u);
 }
 

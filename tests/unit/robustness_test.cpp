@@ -326,6 +326,18 @@ TEST(Robustness, SmallLimitsHoldForEveryCounter) {
     EXPECT_EQ(r.diagnostics[5].format(), "t.f2:7:1: error: too many errors (5); parsing stopped here");
 }
 
+// SPEC 7: at most 1,000 lights, ambient and directional together.
+TEST(Robustness, ThousandLightsAtMost) {
+    std::string text;
+    for (int i = 0; i < 500; ++i) text += "/amb_light 0.001\n/dir_light 0.001 0 -1 1\n";
+    const ParseResult ok = parseScene(text, "t.f2");
+    EXPECT_TRUE(ok.ok()) << dump(ok);
+    const ParseResult r = parseScene(text + "/dir_light 1 0 -1 1\n/amb_light 1\n", "t.f2");
+    ASSERT_EQ(r.diagnostics.size(), 2u) << dump(r);
+    EXPECT_EQ(r.diagnostics[0].format(),
+              "t.f2:1001:1: error: too many lights: at most 1000 allowed (ambient and directional together)");
+}
+
 // Files
 
 class RobustnessFile : public ::testing::Test {

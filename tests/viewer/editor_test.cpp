@@ -11,6 +11,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTextBlock>
+#include <cmath>
 #include <memory>
 
 #include "autosave.h"
@@ -24,6 +25,7 @@
 #include "scene_editor.h"
 #include "scene_highlighter.h"
 #include "test_support.h"
+#include "text_capture.h"
 #include "viewport_widget.h"
 
 using namespace f2;
@@ -61,19 +63,6 @@ QTextCharFormat formatAt(const QTextBlock& block, int pos) {
     return {};
 }
 
-/// A window on `path`, paused at frame `t` with that frame on screen.
-std::unique_ptr<MainWindow> windowOn(const QString& path, double t) {
-    auto w = std::make_unique<MainWindow>();
-    w->resizeForViewport({96, 72});
-    w->show();
-    if (!QTest::qWaitForWindowExposed(w.get())) return nullptr;
-    w->openFile(path);
-    w->playback()->pause();
-    w->playback()->seek(t);
-    if (!waitForShownFrame(*w, t)) return nullptr;
-    return w;
-}
-
 }  // namespace
 
 class EditorTest : public QObject {
@@ -92,6 +81,8 @@ class EditorTest : public QObject {
     void commentFindAndGoToLine();
     void missingOrBrokenFileShowsItself();
     void largeSceneTypesSmoothly();
+    void captureWritesLinesInOneUndoStep();
+    void captureLinesGoNextToTheirTarget();
 };
 
 void EditorTest::initTestCase() {
@@ -106,8 +97,7 @@ void EditorTest::init() {
 
 void EditorTest::editorShowsFileAndHighlights() {
     QTemporaryDir dir;
-    const QString path = dir.filePath("scene.f2");
-    writeFile(path, kSmallScene);
+    const QString path = smallSceneFile(dir);
     auto w = windowOn(path, 0);
     QVERIFY(w);
     QVERIFY(w->editorDock()->isVisible());
@@ -142,8 +132,7 @@ void EditorTest::editorShowsFileAndHighlights() {
 
 void EditorTest::typingRendersLive() {
     QTemporaryDir dir;
-    const QString path = dir.filePath("scene.f2");
-    writeFile(path, kSmallScene);
+    const QString path = smallSceneFile(dir);
     auto w = windowOn(path, 5);
     QVERIFY(w);
     const QImage before = w->viewport()->image();
@@ -170,8 +159,7 @@ void EditorTest::typingRendersLive() {
 
 void EditorTest::errorKeepsImageAndUnderlinesColumn() {
     QTemporaryDir dir;
-    const QString path = dir.filePath("scene.f2");
-    writeFile(path, kSmallScene);
+    const QString path = smallSceneFile(dir);
     auto w = windowOn(path, 5);
     QVERIFY(w);
     const QImage good = w->viewport()->image();
@@ -222,8 +210,7 @@ void EditorTest::errorKeepsImageAndUnderlinesColumn() {
 
 void EditorTest::saveWritesTextAtomically() {
     QTemporaryDir dir;
-    const QString path = dir.filePath("scene.f2");
-    writeFile(path, kSmallScene);
+    const QString path = smallSceneFile(dir);
     auto w = windowOn(path, 0);
     QVERIFY(w);
     typeOver(w->editor(), 2, 13, 2, "90");
@@ -245,8 +232,7 @@ void EditorTest::saveWritesTextAtomically() {
 
 void EditorTest::autosaveRestoresAfterCrash() {
     QTemporaryDir dir;
-    const QString path = dir.filePath("scene.f2");
-    writeFile(path, kSmallScene);
+    const QString path = smallSceneFile(dir);
     QString typed;
     {
         auto w = windowOn(path, 0);
@@ -284,8 +270,7 @@ void EditorTest::autosaveRestoresAfterCrash() {
 
 void EditorTest::diskChangeWithUnsavedEditsAsks() {
     QTemporaryDir dir;
-    const QString path = dir.filePath("scene.f2");
-    writeFile(path, kSmallScene);
+    const QString path = smallSceneFile(dir);
     auto w = windowOn(path, 0);
     QVERIFY(w);
     ScriptedAnswers answers;
@@ -349,9 +334,7 @@ void EditorTest::openAndCloseAskAboutUnsavedEdits() {
 
 void EditorTest::commentFindAndGoToLine() {
     QTemporaryDir dir;
-    const QString path = dir.filePath("scene.f2");
-    writeFile(path, kSmallScene);
-    auto w = windowOn(path, 0);
+    auto w = windowOn(smallSceneFile(dir), 0);
     QVERIFY(w);
     SceneEditor* editor = w->editor();
     QTextDocument* doc = editor->document();
@@ -460,6 +443,81 @@ void EditorTest::largeSceneTypesSmoothly() {
     qInfo("10,000-line scene: parse %.1f ms (worker thread), open %.1f ms, typing %.2f ms per key "
           "(slowest %.2f ms) with the parse off the GUI thread",
           parseMs, openMs, perKeyMs, slowestMs);
+}
+
+void EditorTest::captureWritesLinesInOneUndoStep() {
+    QTemporaryDir dir;
+    auto w = windowOn(smallSceneFile(dir), 5);
+    QVERIFY(w);
+    SceneEditor* editor = w->editor();
+    const QString original = editor->toPlainText();
+    QTextDocument* doc = editor->document();
+
+    // Set Camera from View after a drag: /camera keeps "96 72 0.6", takes the orbit's pose.
+    const QPoint centre = w->viewport()->rect().center();
+    QTest::mousePress(w->viewport(), Qt::LeftButton, {}, centre);
+    QTest::mouseMove(w->viewport(), centre + QPoint(30, 10));
+    QTest::mouseRelease(w->viewport(), Qt::LeftButton, {}, centre + QPoint(30, 10));
+    QVERIFY(w->viewport()->isOrbiting());
+    const Pose view = w->viewport()->orbit()->pose();
+    w->setCameraFromView();
+    const QString expected = QStringLiteral("/camera 96 72 0.6 %1 %2 %3 %4 %5 0")
+                                 .arg(formatNumber(view.position.x), formatNumber(view.position.y),
+                                      formatNumber(view.position.z), formatNumber(view.rotation.x),
+                                      formatNumber(view.rotation.y));
+    QCOMPARE(doc->firstBlock().text(), expected);
+    QCOMPARE(editor->textCursor().selectedText(), expected);
+    QTRY_VERIFY_WITH_TIMEOUT(std::fabs(w->document()->scene()->camera.pose.rotation.y - view.rotation.y) < 0.01f,
+                             kWaitMs);
+    editor->undo();
+    QCOMPARE(editor->toPlainText(), original);
+
+    // Key Selection Here at frame 5: the ball's pose there, after its last key.
+    w->setSelection(Selection{"ball", std::nullopt});
+    QVERIFY(w->keySelectionHere());
+    QCOMPARE(doc->findBlockByNumber(8).text(), QStringLiteral("/key 5 ball 0 0 8 0 0 0"));
+    QCOMPARE(doc->findBlockByNumber(7).text(), QStringLiteral("/key 10 ball 3 0 8 0 0 0"));
+    editor->undo();
+    QCOMPARE(editor->toPlainText(), original);
+
+    // At a frame that has a key, that key is replaced in place.
+    w->playback()->seek(0);
+    QVERIFY(w->keySelectionHere());
+    QCOMPARE(doc->findBlockByNumber(6).text(), QStringLiteral("/key 0 ball -3 0 8 0 0 0"));
+    QCOMPARE(doc->blockCount(), original.count('\n') + 1);
+    editor->undo();
+    QCOMPARE(editor->toPlainText(), original);
+
+    // Without a selection nothing is written.
+    w->setSelection(std::nullopt);
+    QVERIFY(!w->keySelectionHere());
+    QCOMPARE(editor->toPlainText(), original);
+}
+
+void EditorTest::captureLinesGoNextToTheirTarget() {
+    const Pose pose{{1.5f, -0.001f, 2}, {0, 90, 0}};
+    QCOMPARE(formatNumber(1.0), QStringLiteral("1"));
+    QCOMPARE(formatNumber(-0.001), QStringLiteral("0"));
+    QCOMPARE(formatNumber(-2.5), QStringLiteral("-2.5"));
+    const QString text = "/camera 800 600 (1/2)   # wide\n/robot r 0 0 0\n/sphere s 1 0 0 0\n/key 4 s\n";
+    // /camera keeps its expression and its comment.
+    const TextEdit camera = cameraEdit(text, CameraDesc{}, pose);
+    QCOMPARE(camera.line, 1);
+    QVERIFY(camera.replace);
+    QCOMPARE(camera.text, QStringLiteral("/camera 800 600 (1/2) 1.5 0 2 0 90 0   # wide"));
+    // A part without keys: after the robot's creating line.
+    const TextEdit head = keyEdit(text, "r.head", 3, pose);
+    QCOMPARE(head.line, 3);
+    QVERIFY(!head.replace);
+    QCOMPARE(head.text, QStringLiteral("/key 3 r.head 1.5 0 2 0 90 0"));
+    // After the target's last key; at the end for an unknown line; /camera first if missing.
+    QCOMPARE(keyEdit(text, "s", 9, pose).line, 5);
+    QCOMPARE(keyEdit(text, "s", 4, pose).replace, true);
+    QCOMPARE(keyEdit(text, "gen{1}", 0, pose).line, 5);
+    const TextEdit missing = cameraEdit("/sphere s 1 0 0 0\n", CameraDesc{}, pose);
+    QCOMPARE(missing.line, 1);
+    QVERIFY(!missing.replace);
+    QCOMPARE(missing.text, QStringLiteral("/camera 800 600 0.5 1.5 0 2 0 90 0"));
 }
 
 QTEST_MAIN(EditorTest)

@@ -4,15 +4,35 @@
 #include <QElapsedTimer>
 #include <QFile>
 #include <QListWidget>
+#include <QTemporaryDir>
 #include <QTest>
 
 #include "core/render/renderer.h"
 #include "image_convert.h"
 #include "main_window.h"
+#include "playback.h"
 #include "scene_document.h"
 #include "viewport_widget.h"
 
 namespace f2::viewer::test {
+
+QString smallSceneFile(const QTemporaryDir& dir) {
+    const QString path = dir.filePath("scene.f2");
+    writeFile(path, kSmallScene);
+    return path;
+}
+
+std::unique_ptr<MainWindow> windowOn(const QString& path, double t) {
+    auto w = std::make_unique<MainWindow>();
+    w->resizeForViewport({96, 72});
+    w->show();
+    if (!QTest::qWaitForWindowExposed(w.get())) return nullptr;
+    w->openFile(path);
+    w->playback()->pause();
+    w->playback()->seek(t);
+    if (!waitForShownFrame(*w, t)) return nullptr;
+    return w;
+}
 
 void writeFile(const QString& path, const QByteArray& text) {
     QFile f(path);
@@ -25,10 +45,12 @@ QByteArray readFile(const QString& path) {
     return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
 }
 
-Image coreRender(const SceneDesc& scene, double t, int width, int height) {
+Image coreRender(const SceneDesc& scene, double t, int width, int height, int antialias) {
     Renderer renderer;
     Image image;
-    renderer.render(scene, t, Camera::fromDesc(scene.camera).resized(width, height), image);
+    RenderOptions options;
+    options.antialias = antialias;
+    renderer.render(scene, t, Camera::fromDesc(scene.camera).resized(width, height), image, options);
     return image;
 }
 
@@ -38,7 +60,7 @@ bool waitForShownFrame(MainWindow& w, double t) {
     while (clock.elapsed() < kWaitMs) {
         QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
         if (!w.renderController()->hasPendingFrames() && w.shownFrame().serial != 0 &&
-            w.shownFrame().time == t)
+            w.shownFrame().time == t && !w.isRefining())
             return true;
         QTest::qWait(5);
     }
@@ -55,7 +77,8 @@ void expectViewportMatchesCore(MainWindow& w, double t) {
     const QImage shown = w.viewport()->image();
     QVERIFY(!shown.isNull());
     QCOMPARE(shown.size(), w.viewport()->renderSize());
-    const Image expected = coreRender(*w.document()->scene(), t, shown.width(), shown.height());
+    const Image expected =
+        coreRender(*w.document()->scene(), t, shown.width(), shown.height(), w.shownFrame().antialias);
     QVERIFY2(fromQImage(shown) == expected,
              "viewer image differs from Renderer::render at the same camera/size");
 }

@@ -3,6 +3,7 @@
 // the core's picture for comparison and waits for the window's frames.
 #include <QByteArray>
 #include <QString>
+#include <memory>
 
 #include "core/render/image.h"
 #include "core/scene/scene_desc.h"
@@ -10,6 +11,7 @@
 namespace f2::viewer {
 class MainWindow;
 }
+class QTemporaryDir;
 
 namespace f2::viewer::test {
 
@@ -26,20 +28,28 @@ inline constexpr const char* kSmallScene = R"(/camera 96 72 0.6 0 0 -10
 /key 10 ball 3 0 8 0 0 0
 )";
 
+/// Writes kSmallScene as scene.f2 in `dir`; returns its path.
+QString smallSceneFile(const QTemporaryDir& dir);
+
+/// A shown window on `path`, paused at frame `t` with that frame on screen
+/// (null if that does not happen in time).
+std::unique_ptr<MainWindow> windowOn(const QString& path, double t);
+
 /// Writes `text` to `path` (a QVERIFY failure if it cannot).
 void writeFile(const QString& path, const QByteArray& text);
 QByteArray readFile(const QString& path);
 
-/// What `f2 render --frame t --size WxH` gives for the scene's own camera.
-Image coreRender(const SceneDesc& scene, double t, int width, int height);
+/// What `f2 render --frame t --size WxH --aa N` gives for the scene's own camera.
+Image coreRender(const SceneDesc& scene, double t, int width, int height, int antialias = 1);
 
-/// Waits until the window shows the latest requested frame and it is frame `t`.
+/// Waits until the window shows the latest requested frame, it is frame `t`
+/// and, when paused, refined to its last step.
 bool waitForShownFrame(MainWindow& w, double t);
 
 /// The Problems list's lines, one per line.
 QString problemsText(MainWindow& w);
 
-/// The picture on screen is the core's at the same camera and size.
+/// The picture on screen is the core's at the same camera, size and samples.
 void expectViewportMatchesCore(MainWindow& w, double t);
 
 }  // namespace f2::viewer::test

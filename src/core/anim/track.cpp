@@ -28,7 +28,9 @@ Pose poseFrom(const double (&v)[6]) {
 Pose evaluateTrack(const Track& track, double t, const Pose& rest) {
     const std::vector<Key>& keys = track.keys;
     if (keys.empty()) return rest;
-    if (t <= keys.front().frame) return keys.front().pose;
+    // Callers pass finite times; `!(t > first)` still sends NaN to the first
+    // key, so the search below always finds a key after t (never end()).
+    if (!(t > keys.front().frame)) return keys.front().pose;
     if (t >= keys.back().frame) return keys.back().pose;
 
     // First key strictly after t; the segment is [i1, i2].

@@ -6,6 +6,7 @@ namespace f2 {
 
 /// Pose of `track` at time `t` (frames, may be fractional). Before the first key
 /// the first holds, after the last the last holds; `rest` when there are no keys.
+/// `t` should be finite (the front ends check); NaN gives the first key.
 Pose evaluateTrack(const Track& track, double t, const Pose& rest);
 
 /// Smoothstep 3u^2 - 2u^3 used by `/interp ease`.

@@ -94,7 +94,7 @@ void intersectPacket(const Bvh& bvh, const EyeRays& rays, Mask active, Float tMi
                 Int face = hit.face;
                 Mask found = intersectPrimitiveP(ordered[i], rays, lanes, tMin, bound, t, face);
                 if (simd::none(found)) continue;
-                Int frameIndex(std::int32_t(original[i]));
+                Int frameIndex(static_cast<std::int32_t>(original[i]));
                 Mask take = found & ((t < hit.t) | (frameIndex < hit.frameIndex));
                 hit.t = simd::select(take, t, hit.t);
                 hit.face = simd::select(take, face, hit.face);

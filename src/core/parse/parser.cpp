@@ -586,8 +586,16 @@ class Parser : private ExpansionSink {
         scene_.camera = camera;
     }
 
+    /// SPEC 7: at most maxLights light commands of every kind together.
+    bool lightAllowed() {
+        if (++lightLines_ <= limits_.maxLights) return true;
+        error(commandPos(), "too many lights: at most " + std::to_string(limits_.maxLights) +
+                                " allowed (ambient and directional together)");
+        return false;
+    }
+
     void parseAmbLight() {
-        if (!expectArgs({1})) return;
+        if (!expectArgs({1}) || !lightAllowed()) return;
         bool ok = true;
         const float i = nonNegative(0, "ambient intensity", ok);
         if (!ok) return;
@@ -600,7 +608,7 @@ class Parser : private ExpansionSink {
     }
 
     void parseDirLight() {
-        if (!expectArgs({4})) return;
+        if (!expectArgs({4}) || !lightAllowed()) return;
         bool ok = true;
         DirectionalLight light;
         light.intensity = nonNegative(0, "light intensity", ok);
@@ -909,6 +917,7 @@ class Parser : private ExpansionSink {
     std::vector<TrackBook> trackBooks_;
     std::optional<Pos> cameraSeen_, backgroundSeen_, fpsSeen_;
     std::size_t keyLines_ = 0;
+    std::size_t lightLines_ = 0;
 };
 
 ParseResult readError(const std::string& displayName, std::string message) {

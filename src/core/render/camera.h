@@ -32,6 +32,17 @@ struct Camera {
         return {eye, worldFromCamera * normalize(Vec3{x, y, distance})};
     }
 
+    /// The image point (pixel coordinates as rayThrough) whose ray passes
+    /// through world point `p`: the inverse of rayThrough. False if `p` is
+    /// not in front of the eye.
+    bool project(Vec3 p, float& px, float& py) const {
+        const Vec3 c = worldFromCamera.transposed() * (p - eye);
+        if (!(c.z > 0)) return false;
+        px = (c.x / c.z * distance + 0.5f) * float(width);
+        py = (0.5f - c.y / c.z * distance / aspect()) * float(height);
+        return true;
+    }
+
     /// The pyramid from the eye through the pixel rectangle [x0, x1] x [y0, y1]
     /// (pixel coordinates as rayThrough), widened by a pixel on every side so
     /// that rounding cannot leave one of its rays outside.

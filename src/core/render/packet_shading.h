@@ -97,9 +97,12 @@ inline ColorP shadeSurfaces(const FrameScene& frame, const PacketSurface& s,
         Float rDotV = dot(reflected, s.toEye);
         Mask shiny = lit & (rDotV > Float(0.0f)) & (s.ks > Float(0.0f));
         if (simd::any(shiny))
-            specular =
-                simd::select(shiny, specular + intensity * s.ks * simd::powPositive(rDotV, s.shininess), specular);
+            specular = simd::select(
+                shiny,
+                specular + simd::min(intensity * s.ks, Float(kMaxLight)) * simd::powPositive(rDotV, s.shininess),
+                specular);
     }
+    diffuse = simd::min(diffuse, Float(kMaxLight));  // see kMaxLight: no 0 * inf in a black channel
     out.r = simd::select(s.hitLanes, s.color.x * diffuse + specular, out.r);
     out.g = simd::select(s.hitLanes, s.color.y * diffuse + specular, out.g);
     out.b = simd::select(s.hitLanes, s.color.z * diffuse + specular, out.b);

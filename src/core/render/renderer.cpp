@@ -76,7 +76,9 @@ public:
         : frame_(frame), camera_(camera), aa_(aa), counts_(counts) {}
 
     /// Pixels [x0, x1) x [y0, y1) into `dst` (kTileSize pixels per row).
-    void render(int x0, int y0, int x1, int y1, Rgb8* dst) {
+    /// False, with `dst` incomplete, if `cancel` was raised: checked before
+    /// each sample pass, as one tile with --aa 16 and many lights takes seconds.
+    bool render(int x0, int y0, int x1, int y1, Rgb8* dst, const std::atomic<bool>* cancel) {
         static const LaneOffsets lanes;
         // The tile's primary packets start below the top of the tree, at the nodes its frustum reaches.
         std::uint32_t entryStore[kEntryNodes];
@@ -87,6 +89,7 @@ public:
         const int blocks = blocksX * blocksY;
         for (int sy = 0; sy < aa_; ++sy) {
             for (int sx = 0; sx < aa_; ++sx) {
+                if (cancel && cancel->load(std::memory_order_relaxed)) return false;
                 // One sample: the pixel centre, or the centre of sub-cell (sx, sy) of N x N.
                 Float ox((float(sx) + 0.5f) / float(aa_)), oy((float(sy) + 0.5f) / float(aa_));
                 Vec3P lo(Vec3{kInfinity, kInfinity, kInfinity}), hi(Vec3{-kInfinity, -kInfinity, -kInfinity});
@@ -115,6 +118,7 @@ public:
             writeBlock(c, std::min(kBlockWidth, x1 - x0 - bx), std::min(kBlockHeight, y1 - y0 - by),
                        dst + by * kTileSize + bx);
         }
+        return true;
     }
 
 private:
@@ -170,10 +174,6 @@ bool Renderer::trace(const FrameScene& frame, const Camera& camera, Image& out, 
     std::atomic<std::uint64_t> primaryRays{0}, shadowRays{0};
 
     pool_.parallelFor(std::uint32_t(tilesX * tilesY), [&](std::uint32_t tile) {
-        if (cancel && cancel->load(std::memory_order_relaxed)) {
-            cancelled.store(true, std::memory_order_relaxed);
-            return;
-        }
         const int x0 = int(tile % std::uint32_t(tilesX)) * kTileSize;
         const int y0 = int(tile / std::uint32_t(tilesX)) * kTileSize;
         const int x1 = std::min(x0 + kTileSize, camera.width);
@@ -183,7 +183,10 @@ bool Renderer::trace(const FrameScene& frame, const Camera& camera, Image& out, 
         // writing pixel by pixel would pass back and forth.
         Rgb8 local[kTileSize * kTileSize];
         RayCounts tileRays;
-        TileRenderer(frame, camera, aa, tileRays).render(x0, y0, x1, y1, local);
+        if (!TileRenderer(frame, camera, aa, tileRays).render(x0, y0, x1, y1, local, cancel)) {
+            cancelled.store(true, std::memory_order_relaxed);
+            return;
+        }
         for (int y = y0; y < y1; ++y)
             std::copy_n(&local[(y - y0) * kTileSize], x1 - x0, &out.at(x0, y));
         primaryRays.fetch_add(tileRays.primary, std::memory_order_relaxed);

@@ -2,6 +2,7 @@
 /// Phong shading with one shadow ray per directional light (SPEC 3).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/render/frame_scene.h"
 
@@ -20,6 +21,12 @@ inline float shadowOffset(Vec3 p) {
 /// surface, roots at t ~ 0 would otherwise fall either side of 0 by rounding
 /// and speckle the image; this way they consistently count as behind the eye.
 inline float primaryRayStart(Vec3 eye) { return shadowOffset(eye); }
+
+/// Light terms are capped at the largest float before they meet a factor that
+/// may be 0 (a black channel, a highlight's pow() that underflows): huge
+/// materials and lights then saturate as they should, instead of 0 * inf = NaN
+/// (a black pixel). Finite values pass unchanged, so images do not move.
+inline constexpr float kMaxLight = std::numeric_limits<float>::max();
 
 /// Where a ray's nearest hit is shaded from: the point, the normal turned to
 /// face the viewer, and where its shadow rays start.
@@ -79,14 +86,14 @@ inline Vec3 shadeHit(const FrameScene& frame, const Ray& ray, const HitRecord& h
                 Vec3 reflected = n * (2 * term.nDotL) - light.toLight;
                 float rDotV = dot(reflected, toEye);
                 if (rDotV > 0 && m.ks > 0) {
-                    term.specular = light.intensity * m.ks * std::pow(rDotV, m.n);
+                    term.specular = std::min(light.intensity * m.ks, kMaxLight) * std::pow(rDotV, m.n);
                     specular += term.specular;
                 }
             }
         }
         onLight(term);
     }
-    return surface.color * diffuse + Vec3{specular, specular, specular};
+    return surface.color * std::min(diffuse, kMaxLight) + Vec3{specular, specular, specular};
 }
 
 inline Vec3 shadeHit(const FrameScene& frame, const Ray& ray, const HitRecord& hit) {

@@ -1,0 +1,51 @@
+#include "selection.h"
+
+#include <QRegularExpression>
+#include <QStringList>
+#include <algorithm>
+
+namespace f2::viewer {
+
+QString Selection::target() const {
+    QString name = QString::fromStdString(object);
+    if (part) name += QLatin1Char('.') + QString::fromLatin1(kPartNames[std::size_t(*part)]);
+    return name;
+}
+
+Selection selectionOf(const SceneDesc& scene, const PickHit& hit) {
+    return {scene.objects[hit.object].name, hit.part};
+}
+
+std::optional<std::size_t> findObject(const SceneDesc& scene, const Selection& selection) {
+    for (std::size_t i = 0; i < scene.objects.size(); ++i)
+        if (scene.objects[i].name == selection.object) return i;
+    return std::nullopt;
+}
+
+int creatingLine(const QString& text, const std::string& name) {
+    const QRegularExpression command(
+        QStringLiteral(R"(^\s*/(sphere|cylinder|box|robot|human)[ \t]+%1(\s|#|$))")
+            .arg(QRegularExpression::escape(QString::fromStdString(name))));
+    const QStringList lines = text.split(QLatin1Char('\n'));
+    for (qsizetype i = 0; i < lines.size(); ++i)
+        if (command.match(lines[i]).hasMatch()) return int(i) + 1;
+    return 0;
+}
+
+std::optional<QRectF> outlineRect(const Camera& camera, const Bounds& bounds) {
+    if (!(bounds.lo.x <= bounds.hi.x)) return std::nullopt;
+    float left = kInfinity, top = kInfinity, right = -kInfinity, bottom = -kInfinity;
+    for (int corner = 0; corner < 8; ++corner) {
+        const Vec3 p{corner & 1 ? bounds.hi.x : bounds.lo.x, corner & 2 ? bounds.hi.y : bounds.lo.y,
+                     corner & 4 ? bounds.hi.z : bounds.lo.z};
+        float px = 0, py = 0;
+        if (!camera.project(p, px, py)) return std::nullopt;
+        left = std::min(left, px);
+        right = std::max(right, px);
+        top = std::min(top, py);
+        bottom = std::max(bottom, py);
+    }
+    return QRectF(QPointF(left, top), QPointF(right, bottom));
+}
+
+}  // namespace f2::viewer

@@ -1,0 +1,36 @@
+#pragma once
+/// The picked object or part: what identifies it across edits (its name, not
+/// its index), and the helpers that show it (outline, creating line, label).
+#include <QRectF>
+#include <QString>
+#include <optional>
+#include <string>
+
+#include "core/render/camera.h"
+#include "core/render/pick.h"
+
+namespace f2::viewer {
+
+struct Selection {
+    std::string object;          ///< the object's name
+    std::optional<PartId> part;  ///< a part of a robot or human
+
+    /// `name` or `name.part`, as the scene language writes the target.
+    QString target() const;
+    friend bool operator==(const Selection&, const Selection&) = default;
+};
+
+/// The selection a pick names.
+Selection selectionOf(const SceneDesc& scene, const PickHit& hit);
+/// Index of the selected object in `scene`, if it still exists.
+std::optional<std::size_t> findObject(const SceneDesc& scene, const Selection& selection);
+
+/// The 1-based line of `text` that creates object `name` (`/sphere name …`,
+/// `/robot name …`, …), or 0. Names made by `/repeat` or `{ }` are not found.
+int creatingLine(const QString& text, const std::string& name);
+
+/// The image rectangle (pixels of `camera`'s image) that holds the projection
+/// of `bounds`; nothing if part of it is behind the eye or it is empty.
+std::optional<QRectF> outlineRect(const Camera& camera, const Bounds& bounds);
+
+}  // namespace f2::viewer

@@ -1,0 +1,37 @@
+#pragma once
+/// Capture into the text: the lines *Set Camera from View* and *Key Selection
+/// Here* write, and where they go. Pure functions of the text, so the exact
+/// lines are unit-tested; the window applies an edit as one undo step.
+#include <QString>
+
+#include "core/scene/scene_desc.h"
+
+class QPlainTextEdit;
+
+namespace f2::viewer {
+
+/// Replace line `line` (1-based) with `text`, or insert `text` before it
+/// (`line` may be one past the last line).
+struct TextEdit {
+    int line = 1;
+    bool replace = false;
+    QString text;
+};
+
+/// A number as the scene text writes it: at most two decimals, no trailing zeros.
+QString formatNumber(double value);
+
+/// The `/camera` edit for a view at `pose`: the scene's `/camera` line keeps
+/// its size and `d` as written (and its comment), the eye and rotation become
+/// `pose`; without one, a line with the scene's size and `d` goes first.
+TextEdit cameraEdit(const QString& text, const CameraDesc& camera, const Pose& pose);
+
+/// The `/key` edit for `target` (`name` or `name.part`) at `frame` with
+/// `pose`: replaces that target's key at that frame, else goes after the last
+/// key of the target, else after the line that creates the object (or at the end).
+TextEdit keyEdit(const QString& text, const QString& target, int frame, const Pose& pose);
+
+/// Applies `edit` to `editor` as one undo step and selects the written line.
+void applyEdit(QPlainTextEdit* editor, const TextEdit& edit);
+
+}  // namespace f2::viewer
