@@ -191,8 +191,8 @@ Json completion(const Analysis& a, Position p) {
                 items.push_back(item(o->object.name, kCompletionVariable, objectKindName(o->object.kind), replace,
                                      o->object.name));
             }
-            if (language.cameraTarget && doc->name != "/paint" && doc->name != "/material" &&
-                doc->name != "/look_at") {
+            if (language.cameraTarget && std::string_view("camera").starts_with(typing->partial) &&
+                doc->name != "/paint" && doc->name != "/material" && doc->name != "/look_at") {
                 items.push_back(item("camera", kCompletionKeyword, "the scene camera", replace, "camera"));
             }
             break;
