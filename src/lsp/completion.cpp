@@ -13,6 +13,9 @@ namespace f2::lsp {
 
 namespace {
 
+/// At most this many object names in one answer (a scene may have a million).
+constexpr std::size_t kMaxNameItems = 1000;
+
 /// The token being typed: its index on the line and its text up to the cursor.
 struct Typing {
     int index = 0;               ///< 0 = the command word
@@ -178,12 +181,18 @@ Json completion(const Analysis& a, Position p) {
         case ArgKind::Target:
         case ArgKind::Object:
         case ArgKind::PointOrTarget:
+            // Names that start as typed; a huge scene gives a first part of them,
+            // marked incomplete, and the client asks again as the user types on.
             for (const IndexedObject* o : visibleObjects(a, lineNumber)) {
+                if (!o->object.name.starts_with(typing->partial)) continue;
+                if (items.size() == kMaxNameItems) {
+                    return {{"isIncomplete", true}, {"items", std::move(items)}};
+                }
                 items.push_back(item(o->object.name, kCompletionVariable, objectKindName(o->object.kind), replace,
                                      o->object.name));
             }
-            if (language.cameraTarget && doc->name != "/paint" && doc->name != "/material" &&
-                doc->name != "/look_at") {
+            if (language.cameraTarget && std::string_view("camera").starts_with(typing->partial) &&
+                doc->name != "/paint" && doc->name != "/material" && doc->name != "/look_at") {
                 items.push_back(item("camera", kCompletionKeyword, "the scene camera", replace, "camera"));
             }
             break;

@@ -135,6 +135,14 @@ TEST(Server, HandlesALargeDocument) {
     ASSERT_TRUE(refs.is_array());
     EXPECT_EQ(refs.size(), 2u);
     EXPECT_EQ(documentSymbols(a).size(), 50'001u);
+    // Names as typed, at most 1000 of them, marked incomplete beyond that.
+    const Json some = completion(a, {100'000, 8});  // after "/key 1 s"
+    ASSERT_TRUE(some.is_object());
+    EXPECT_EQ(some["isIncomplete"], true);
+    EXPECT_EQ(some["items"].size(), 1000u);
+    const Json few = completion(a, {100'000, 12});  // after "/key 1 s4999"
+    ASSERT_TRUE(few.is_array());
+    EXPECT_EQ(few.size(), 11u);  // s4999, s49990 … s49999
 }
 
 TEST(Changes, ApplyRangesInUtf16Units) {
