@@ -44,7 +44,8 @@ int checkReplies(const std::vector<std::string>& replies, long long id) {
         if (j.is_discarded() || !j.is_object()) fail("a reply is not a JSON object", reply);
         if (j.value("jsonrpc", "") != "2.0") fail("a reply without jsonrpc 2.0", reply);
         const bool isResponse = j.contains("id") && (j.contains("result") || j.contains("error"));
-        if (!isResponse && !j.contains("method")) fail("a reply that is neither a response nor a notification", reply);
+        if (!isResponse && !j.contains("method"))
+            fail("a reply that is neither a response nor a notification", reply);
         if (isResponse && j["id"].is_number_integer() && j["id"].get<long long>() == id) ++withId;
     }
     return withId;
@@ -82,7 +83,8 @@ void streamMode(f2::lsp::Server& server, std::string_view bytes) {
         i += chunk;
         f2::lsp::MessageReader::Item item;
         while (reader.next(item)) {
-            if (item.kind == f2::lsp::MessageReader::Item::Kind::Body) checkReplies(handle(server, item.text), -1);
+            if (item.kind == f2::lsp::MessageReader::Item::Kind::Body)
+                checkReplies(handle(server, item.text), -1);
         }
     }
 }
@@ -90,7 +92,8 @@ void streamMode(f2::lsp::Server& server, std::string_view bytes) {
 void documentMode(f2::lsp::Server& server, std::string_view bytes) {
     const std::size_t nul = bytes.find('\0');
     // JSON strings must be UTF-8: invalid bytes become U+FFFD, as an editor sends them.
-    const std::string text = Json(std::string(bytes.substr(0, nul))).dump(-1, ' ', false, Json::error_handler_t::replace);
+    const std::string text =
+        Json(std::string(bytes.substr(0, nul))).dump(-1, ' ', false, Json::error_handler_t::replace);
     const Json textJson = Json::parse(text);
     const std::string uri = "file:///fuzz/scene.f2";
     notify(server, "textDocument/didOpen",
@@ -102,7 +105,8 @@ void documentMode(f2::lsp::Server& server, std::string_view bytes) {
         // Lines and characters around and beyond the text, negative ones included.
         const int line = static_cast<signed char>(positions[k]) / 4;
         const int character = static_cast<signed char>(positions[k + 1]);
-        const Json at = {{"textDocument", {{"uri", uri}}}, {"position", {{"line", line}, {"character", character}}}};
+        const Json at = {{"textDocument", {{"uri", uri}}},
+                         {"position", {{"line", line}, {"character", character}}}};
         for (const char* method : {"textDocument/completion", "textDocument/hover", "textDocument/definition",
                                    "textDocument/references", "textDocument/prepareRename"}) {
             request(server, ++id, method, at);
@@ -115,7 +119,8 @@ void documentMode(f2::lsp::Server& server, std::string_view bytes) {
                             {"end", {{"line", line + (character & 1)}, {"character", 0}}}};
         notify(server, "textDocument/didChange",
                {{"textDocument", {{"uri", uri}, {"version", 2 + static_cast<int>(k)}}},
-                {"contentChanges", Json::array({{{"range", range}, {"text", std::string(1, positions[k] & 0x7F)}}})}});
+                {"contentChanges",
+                 Json::array({{{"range", range}, {"text", std::string(1, positions[k] & 0x7F)}}})}});
         const Json doc = {{"textDocument", {{"uri", uri}}}};
         for (const char* method :
              {"textDocument/documentSymbol", "textDocument/foldingRange", "textDocument/formatting"}) {

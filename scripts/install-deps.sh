@@ -26,6 +26,8 @@ MORE_PACKAGES=(
   ffmpeg povray gnuplot-nox
   # fuzzing (clang's libFuzzer runtime)
   clang libclang-rt-14-dev
+  # the formatting check of .ci/run (scripts/check-format.sh)
+  clang-format
 )
 
 mode=${1:-all}

@@ -37,7 +37,9 @@ void expectOnlyError(std::string_view text, int line, int column, std::string_vi
 }
 
 SceneDesc sceneFromText(std::string_view text) { return unwrap(parseScene(text, "test.f2")); }
-SceneDesc sceneFromRepo(const std::string& name) { return unwrap(parseSceneFile(sourcePath("scenes/" + name))); }
+SceneDesc sceneFromRepo(const std::string& name) {
+    return unwrap(parseSceneFile(sourcePath("scenes/" + name)));
+}
 std::string sourcePath(const std::string& relative) { return std::string(F2_SOURCE_DIR) + "/" + relative; }
 
 std::uint32_t testSeed(std::uint32_t fallback) {

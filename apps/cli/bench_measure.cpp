@@ -169,16 +169,16 @@ std::string benchJson(const BenchResult& r) {
     std::ostringstream j;
     j << "{\"scene\": " << jsonString(r.scene) << ", \"size\": \"" << r.width << 'x' << r.height << "\""
       << ", \"width\": " << r.width << ", \"height\": " << r.height << ", \"threads\": " << r.threads
-      << ", \"simd\": \"" << packetIsaName() << "\", \"aa\": " << r.antialias << ", \"frame_t\": " << fixed(r.frame, 3)
-      << ", \"step\": " << fixed(r.step, 3) << ", \"primitives\": " << r.primitives
-      << ", \"frames\": " << r.frames << ", \"warmup_frames\": " << r.warmupFrames
-      << ", \"seconds\": " << fixed(r.seconds, 3) << ", \"fps\": " << fixed(r.fps(), 2)
-      << ", \"ms_median\": " << fixed(r.msMedian, 4) << ", \"ms_min\": " << fixed(r.msMin, 4)
-      << ", \"ms_max\": " << fixed(r.msMax, 4) << ", \"ms_p10\": " << fixed(r.msP10, 4)
-      << ", \"ms_p90\": " << fixed(r.msP90, 4) << ", \"ms_eval\": " << fixed(r.msEval, 4)
-      << ", \"ms_build\": " << fixed(r.msBuild, 4) << ", \"ms_trace\": " << fixed(r.msTrace, 4)
-      << ", \"primary_rays\": " << r.rays.primary << ", \"shadow_rays\": " << r.rays.shadow
-      << ", \"mrays_per_s\": " << fixed(r.mraysPerSecond(), 3)
+      << ", \"simd\": \"" << packetIsaName() << "\", \"aa\": " << r.antialias
+      << ", \"frame_t\": " << fixed(r.frame, 3) << ", \"step\": " << fixed(r.step, 3)
+      << ", \"primitives\": " << r.primitives << ", \"frames\": " << r.frames
+      << ", \"warmup_frames\": " << r.warmupFrames << ", \"seconds\": " << fixed(r.seconds, 3)
+      << ", \"fps\": " << fixed(r.fps(), 2) << ", \"ms_median\": " << fixed(r.msMedian, 4)
+      << ", \"ms_min\": " << fixed(r.msMin, 4) << ", \"ms_max\": " << fixed(r.msMax, 4)
+      << ", \"ms_p10\": " << fixed(r.msP10, 4) << ", \"ms_p90\": " << fixed(r.msP90, 4)
+      << ", \"ms_eval\": " << fixed(r.msEval, 4) << ", \"ms_build\": " << fixed(r.msBuild, 4)
+      << ", \"ms_trace\": " << fixed(r.msTrace, 4) << ", \"primary_rays\": " << r.rays.primary
+      << ", \"shadow_rays\": " << r.rays.shadow << ", \"mrays_per_s\": " << fixed(r.mraysPerSecond(), 3)
       << ", \"mrays_per_s_trace\": " << fixed(r.mraysPerSecondTrace(), 3)
       << ", \"peak_rss_mb\": " << fixed(r.peakRssMb, 2) << "}";
     return j.str();

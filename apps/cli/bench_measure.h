@@ -6,8 +6,8 @@
 #include <ostream>
 #include <string>
 
-#include "core/render/frame_scene.h"
 #include "core/render/camera.h"
+#include "core/render/frame_scene.h"
 #include "core/render/renderer.h"
 #include "core/scene/bench_scenes.h"
 #include "scene_source.h"
@@ -28,7 +28,6 @@ struct BenchSettings {
 
 /// Timed frames never fewer than this, however slow, so a median exists.
 inline constexpr int kMinTimedFrames = 3;
-
 
 struct BenchResult {
     std::string scene;
@@ -58,7 +57,6 @@ std::optional<LoadedScene> loadBenchScene(const BenchSceneSpec& spec, int width,
 /// at its time, cameraAt); `name` labels the result.
 BenchResult runBench(const SceneDesc& scene, const std::string& name, int width, int height,
                      const BenchSettings& settings);
-
 
 /// Peak resident set of this process in MB (VmHWM, else ru_maxrss).
 double peakRssMb();

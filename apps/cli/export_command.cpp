@@ -43,7 +43,8 @@ bool writeOutput(const std::string& text, const std::string& path, std::string& 
 
 int runExport(const ExportArgs& args) {
     if (args.pov == args.prims) {
-        return usageError("export", "choose one format: --pov (POV-Ray 3.7 scene) or --prims (primitive list)");
+        return usageError("export",
+                          "choose one format: --pov (POV-Ray 3.7 scene) or --prims (primitive list)");
     }
     auto loaded = loadScene(args.scene);
     if (!loaded) return 1;

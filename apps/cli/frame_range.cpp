@@ -15,7 +15,8 @@ bool parseInt(std::string_view text, T& value) {
 const std::string kFramesSyntax = "FIRST-LAST, FIRST or FIRST-, optionally :STEP";
 }  // namespace
 
-std::optional<FrameRange> parseFrameRange(const std::string& text, std::int64_t lastFrame, std::string& error) {
+std::optional<FrameRange> parseFrameRange(const std::string& text, std::int64_t lastFrame,
+                                          std::string& error) {
     std::string_view s = text;
     FrameRange range;
     const auto colon = s.find(':');
@@ -29,18 +30,20 @@ std::optional<FrameRange> parseFrameRange(const std::string& text, std::int64_t 
     }
     const auto dash = s.find('-');
     const bool open = dash != std::string_view::npos && dash + 1 == s.size();
-    const bool ok = dash == std::string_view::npos
-                        ? parseInt(s, range.first) && (range.last = range.first, true)
-                        : parseInt(s.substr(0, dash), range.first) &&
-                              (open ? (range.last = lastFrame, true) : parseInt(s.substr(dash + 1), range.last));
+    const bool ok =
+        dash == std::string_view::npos
+            ? parseInt(s, range.first) && (range.last = range.first, true)
+            : parseInt(s.substr(0, dash), range.first) &&
+                  (open ? (range.last = lastFrame, true) : parseInt(s.substr(dash + 1), range.last));
     if (!ok || range.first < 0 || range.first > kMaxOutputFrame || (!open && range.last > kMaxOutputFrame)) {
-        error = "--frames: expected " + kFramesSyntax + " (frame numbers 0.." + std::to_string(kMaxOutputFrame) +
-                "), got '" + text + "'";
+        error = "--frames: expected " + kFramesSyntax + " (frame numbers 0.." +
+                std::to_string(kMaxOutputFrame) + "), got '" + text + "'";
         return std::nullopt;
     }
     if (open && range.last > kMaxOutputFrame) {
         error = "--frames " + text + ": the animation ends at output frame " + std::to_string(range.last) +
-                ", past the limit of " + std::to_string(kMaxOutputFrame) + "; give a last frame or a lower --fps";
+                ", past the limit of " + std::to_string(kMaxOutputFrame) +
+                "; give a last frame or a lower --fps";
         return std::nullopt;
     }
     if (range.last < range.first) {
@@ -53,13 +56,13 @@ std::optional<FrameRange> parseFrameRange(const std::string& text, std::int64_t 
 
 std::string pastTheEndWarning(const AnimationRange& range, std::int64_t lastFrame) {
     const std::int64_t from = range.first > lastFrame ? range.first : lastFrame + 1;
-    const std::string frames = from == range.lastRendered()
-                                   ? "frame " + std::to_string(from) + " is"
-                                   : "frames " + std::to_string(from) + "-" + std::to_string(range.lastRendered()) +
-                                         " are";
+    const std::string frames =
+        from == range.lastRendered()
+            ? "frame " + std::to_string(from) + " is"
+            : "frames " + std::to_string(from) + "-" + std::to_string(range.lastRendered()) + " are";
     return frames + " past the animation's last frame " + std::to_string(lastFrame) + " (at " +
-           std::to_string(range.outputFps) + " fps): " + (from == range.lastRendered() ? "it shows" : "they show") +
-           " its final pose";
+           std::to_string(range.outputFps) +
+           " fps): " + (from == range.lastRendered() ? "it shows" : "they show") + " its final pose";
 }
 
 std::optional<Shard> parseShard(const std::string& text, std::string& error) {

@@ -24,7 +24,8 @@ struct FrameRange {
 
 /// "A-B", "A" (one frame) or "A-" (A to `lastFrame`), each optionally followed
 /// by ":S" (every S-th frame from A); 0 <= A <= B <= kMaxOutputFrame.
-std::optional<FrameRange> parseFrameRange(const std::string& text, std::int64_t lastFrame, std::string& error);
+std::optional<FrameRange> parseFrameRange(const std::string& text, std::int64_t lastFrame,
+                                          std::string& error);
 
 /// "frames 241-400 are past the animation's last frame 240 (at 24 fps): they
 /// show its final pose", for a range that ends after `lastFrame`.

@@ -4,8 +4,8 @@
 #include <memory>
 
 #include "commands.h"
-#include "options.h"
 #include "core/scene/models.h"
+#include "options.h"
 #include "scene_source.h"
 
 namespace f2::cli {
@@ -13,11 +13,16 @@ namespace f2::cli {
 namespace {
 const char* kindName(ObjectKind kind) {
     switch (kind) {
-        case ObjectKind::Sphere: return "sphere";
-        case ObjectKind::Cylinder: return "cylinder";
-        case ObjectKind::Box: return "box";
-        case ObjectKind::Robot: return "robot";
-        case ObjectKind::Human: return "human";
+        case ObjectKind::Sphere:
+            return "sphere";
+        case ObjectKind::Cylinder:
+            return "cylinder";
+        case ObjectKind::Box:
+            return "box";
+        case ObjectKind::Robot:
+            return "robot";
+        case ObjectKind::Human:
+            return "human";
     }
     return "?";
 }
@@ -33,10 +38,12 @@ void printTrack(const std::string& target, const Track& track) {
     for (const Key& k : track.keys) {
         if (!k.mode) continue;
         if (withMode < kShownKeyModes)
-            std::cout << (withMode == 0 ? "; from key " : ", ") << k.frame << ' ' << interpolationName(*k.mode);
+            std::cout << (withMode == 0 ? "; from key " : ", ") << k.frame << ' '
+                      << interpolationName(*k.mode);
         ++withMode;
     }
-    if (withMode > kShownKeyModes) std::cout << " (and " << withMode - kShownKeyModes << " more keys with a mode)";
+    if (withMode > kShownKeyModes)
+        std::cout << " (and " << withMode - kShownKeyModes << " more keys with a mode)";
     std::cout << '\n';
 }
 
@@ -75,8 +82,9 @@ void printCamera(const SceneDesc& s) {
 std::string describeLength(int lastFrame, int fps) {
     if (lastFrame == 0) return "1 frame (no animation)";
     char text[128];
-    std::snprintf(text, sizeof text, "%d frames, %.2f s from the first to the last (%.2f s played as a video)",
-                  lastFrame + 1, double(lastFrame) / fps, double(lastFrame + 1) / fps);
+    std::snprintf(text, sizeof text,
+                  "%d frames, %.2f s from the first to the last (%.2f s played as a video)", lastFrame + 1,
+                  double(lastFrame) / fps, double(lastFrame + 1) / fps);
     return text;
 }
 
@@ -88,20 +96,20 @@ int runInfo(const std::string& path) {
     std::cout << loaded->name << '\n'
               << "  image:      " << s.camera.width << "x" << s.camera.height << ", d " << s.camera.distance
               << '\n'
-              << "  frames:     0.." << last << " at " << s.fps << " fps: " << describeLength(last, s.fps) << '\n'
+              << "  frames:     0.." << last << " at " << s.fps << " fps: " << describeLength(last, s.fps)
+              << '\n'
               << "  lights:     ambient " << s.ambient << ", " << s.lights.size() << " directional\n"
               << "  objects:    " << s.objects.size() << " (" << s.primitiveCount() << " primitives)\n"
-              << "  source:     " << loaded->files.size() << (loaded->files.size() == 1 ? " file, " : " files, ")
-              << loaded->linesInFiles << " lines, " << loaded->linesRead
-              << " read with /repeat and /include expanded\n";
+              << "  source:     " << loaded->files.size()
+              << (loaded->files.size() == 1 ? " file, " : " files, ") << loaded->linesInFiles << " lines, "
+              << loaded->linesRead << " read with /repeat and /include expanded\n";
     printCamera(s);
     for (const SceneObject& o : s.objects) {
         std::cout << "  " << kindName(o.kind) << ' ' << o.name << '\n';
         if (o.attachedTo) std::cout << "    rides on " << refName(s, *o.attachedTo) << '\n';
         printTrack(o.name, o.track);
         if (isModel(o.kind))
-            for (int p = 0; p < kPartCount; ++p)
-                printTrack(o.name + "." + kPartNames[p], o.partTracks[p]);
+            for (int p = 0; p < kPartCount; ++p) printTrack(o.name + "." + kPartNames[p], o.partTracks[p]);
     }
     return 0;
 }
@@ -109,7 +117,8 @@ int runInfo(const std::string& path) {
 
 Command addInfoCommand(CLI::App& app) {
     auto path = std::make_shared<std::string>();
-    CLI::App* sub = app.add_subcommand("info", "Print a scene's camera, objects, parts, key frames, attachments, frame range and fps");
+    CLI::App* sub = app.add_subcommand(
+        "info", "Print a scene's camera, objects, parts, key frames, attachments, frame range and fps");
     sub->add_option("scene", *path, "Scene file; '-' reads standard input; none = the default scene")
         ->check(nonEmptyPath("describe the default scene"));
     return {sub, [path] { return runInfo(*path); }};

@@ -12,9 +12,11 @@ namespace f2::cli {
 
 Command addLspCommand(CLI::App& app) {
     CLI::App* sub = app.add_subcommand(
-        "lsp", "Run the language server (Language Server Protocol over standard input and output) for editors");
+        "lsp",
+        "Run the language server (Language Server Protocol over standard input and output) for editors");
     auto stdio = std::make_shared<bool>(false);
-    sub->add_flag("--stdio", *stdio, "Accepted for editors that pass it; standard input and output are always used");
+    sub->add_flag("--stdio", *stdio,
+                  "Accepted for editors that pass it; standard input and output are always used");
     return {sub, [stdio] {
                 // The client closing the pipe must end the server, not kill it mid-write.
                 std::signal(SIGPIPE, SIG_IGN);

@@ -28,7 +28,8 @@ CLI::Validator wholeNumberIn(long lo, long hi) {
     return CLI::Validator(
         [lo, hi, range](std::string& text) -> std::string {
             long value = 0;
-            if (!parseDecimal(text, value)) return "'" + text + "' is not a whole number (expected " + range + ")";
+            if (!parseDecimal(text, value))
+                return "'" + text + "' is not a whole number (expected " + range + ")";
             if (value < lo || value > hi) return text + " is outside " + range;
             return {};
         },

@@ -13,7 +13,8 @@ constexpr const char* kKnownKinds =
 
 std::string lowerExtension(const std::string& name) {
     std::string ext = std::filesystem::path(name).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
     return ext;
 }
 }  // namespace
@@ -27,8 +28,8 @@ std::optional<OutputKind> classifyOutput(const std::string& name, std::string& e
     std::error_code ec;
     if (name.back() == '/' || std::filesystem::is_directory(name, ec)) {
         const std::string dir = name.back() == '/' ? name : name + "/";
-        error = "'" + name + "' is a directory; name a file in it (" + dir + "f2.png) or a numbered sequence (" +
-                dir + "f_%04d.png)";
+        error = "'" + name + "' is a directory; name a file in it (" + dir +
+                "f2.png) or a numbered sequence (" + dir + "f_%04d.png)";
         return std::nullopt;
     }
     if (auto video = videoFormatForPath(name)) {
@@ -47,9 +48,9 @@ std::optional<OutputKind> classifyOutput(const std::string& name, std::string& e
         target.pattern = *pattern;
     }
     if (ext != ".png") {
-        error = "'" + name + "': " +
-                (ext.empty() ? std::string("no extension") : "unknown output type '" + ext + "'") + "; " +
-                kKnownKinds;
+        error = "'" + name +
+                "': " + (ext.empty() ? std::string("no extension") : "unknown output type '" + ext + "'") +
+                "; " + kKnownKinds;
         return std::nullopt;
     }
     return target;

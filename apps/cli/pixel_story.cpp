@@ -19,11 +19,16 @@ std::string str(Vec3 v) {
 
 const char* faceName(const Primitive& prim, Face face) {
     switch (face) {
-        case Face::Curved: return prim.kind == ShapeKind::Sphere ? "surface" : "side";
-        case Face::Cap: return "cap";
-        case Face::SlabX: return "local x face";
-        case Face::SlabY: return "local y face";
-        case Face::SlabZ: return "local z face";
+        case Face::Curved:
+            return prim.kind == ShapeKind::Sphere ? "surface" : "side";
+        case Face::Cap:
+            return "cap";
+        case Face::SlabX:
+            return "local x face";
+        case Face::SlabY:
+            return "local y face";
+        case Face::SlabZ:
+            return "local z face";
     }
     return "?";
 }
@@ -42,8 +47,8 @@ bool parsePixel(const std::string& text, int width, int height, int& x, int& y, 
         return false;
     }
     if (x < 0 || x >= width || y < 0 || y >= height) {
-        error = "--pixel: " + text + " is outside the " + std::to_string(width) + "x" + std::to_string(height) +
-                " image (0,0 is the top-left pixel)";
+        error = "--pixel: " + text + " is outside the " + std::to_string(width) + "x" +
+                std::to_string(height) + " image (0,0 is the top-left pixel)";
         return false;
     }
     return true;
@@ -61,11 +66,14 @@ int printPixelStory(const LoadedScene& loaded, const Camera& camera, double t, i
     out << std::setprecision(6);
 
     out << "pixel " << x << "," << y << " of " << camera.width << "x" << camera.height << ", " << loaded.name
-        << " at frame " << t << " (single-ray reference path, the pixel centre " << r.px << ", " << r.py << ")\n";
-    out << "ray      from " << str(r.ray.origin) << " along " << str(r.ray.direction) << ", hits beyond t = "
-        << r.tMin << "\n";
-    if (r.crossings.empty()) out << "along it nothing\n";
-    else out << "along it, nearest first:\n";
+        << " at frame " << t << " (single-ray reference path, the pixel centre " << r.px << ", " << r.py
+        << ")\n";
+    out << "ray      from " << str(r.ray.origin) << " along " << str(r.ray.direction)
+        << ", hits beyond t = " << r.tMin << "\n";
+    if (r.crossings.empty())
+        out << "along it nothing\n";
+    else
+        out << "along it, nearest first:\n";
     for (const PixelReport::Crossing& c : r.crossings) {
         bool chosen = r.hit && c.primitive == r.chosen.primitive && c.t == r.chosen.t;
         out << "  t = " << std::setw(10) << std::left << c.t << std::right << " #" << c.primitive << " "
@@ -75,24 +83,27 @@ int printPixelStory(const LoadedScene& loaded, const Camera& camera, double t, i
     if (!r.hit) {
         out << "hit      none: the background " << str(frame.background) << "\n";
     } else {
-        out << "hit      #" << r.chosen.primitive << " " << name(r.chosen.primitive) << " at t = " << r.chosen.t
-            << ", point " << str(r.surface.position) << "\n";
+        out << "hit      #" << r.chosen.primitive << " " << name(r.chosen.primitive)
+            << " at t = " << r.chosen.t << ", point " << str(r.surface.position) << "\n";
         out << "normal   " << str(r.surface.normal)
-            << (r.surface.inside ? " (seen from inside: turned to face the eye)" : " (facing the eye)") << "\n";
-        out << "surface  colour " << str(r.surfaceColor) << ", ka " << r.material.ka << " kd " << r.material.kd
-            << " ks " << r.material.ks << " n " << r.material.n << "\n";
+            << (r.surface.inside ? " (seen from inside: turned to face the eye)" : " (facing the eye)")
+            << "\n";
+        out << "surface  colour " << str(r.surfaceColor) << ", ka " << r.material.ka << " kd "
+            << r.material.kd << " ks " << r.material.ks << " n " << r.material.n << "\n";
         out << "ambient  ka * " << frame.ambient << " = " << r.ambientTerm << "\n";
         out << "shadow rays from " << str(r.surface.shadowOrigin)
             << (r.surface.skip == Bvh::kNoPrimitive ? "" : ", skipping the primitive itself") << "\n";
         for (const PixelReport::Light& l : r.lights) {
             const LightSample& light = frame.lights[l.term.light];
-            out << "light " << l.term.light + 1 << "  intensity " << light.intensity << " toward " << str(l.toLight)
-                << ", N.L = " << l.term.nDotL << ": ";
-            if (l.term.nDotL <= 0) out << "faces away (no shadow ray)\n";
+            out << "light " << l.term.light + 1 << "  intensity " << light.intensity << " toward "
+                << str(l.toLight) << ", N.L = " << l.term.nDotL << ": ";
+            if (l.term.nDotL <= 0)
+                out << "faces away (no shadow ray)\n";
             else if (l.term.shadowed)
                 out << "in shadow of #" << l.occluder << " " << name(l.occluder) << " at t = " << l.occluderT
                     << "\n";
-            else out << "lit, diffuse " << l.term.diffuse << ", specular " << l.term.specular << "\n";
+            else
+                out << "lit, diffuse " << l.term.diffuse << ", specular " << l.term.specular << "\n";
         }
     }
     out << "colour   " << str(r.color) << " -> pixel " << int(r.pixel.r) << " " << int(r.pixel.g) << " "

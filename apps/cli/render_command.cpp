@@ -9,13 +9,13 @@
 #include "commands.h"
 #include "frame_range.h"
 #include "interrupt.h"
-#include "options.h"
-#include "output_kind.h"
 #include "io/frame_pattern.h"
 #include "io/image_sink.h"
 #include "io/render_animation.h"
 #include "io/sequence_sink.h"
 #include "io/video_sink.h"
+#include "options.h"
+#include "output_kind.h"
 #include "pixel_story.h"
 #include "progress.h"
 #include "scene_source.h"
@@ -62,14 +62,13 @@ std::string describe(const AnimationJob& job) {
 /// f2::renderAnimation with the live progress bar and Ctrl+C.
 AnimationResult renderWithProgress(const AnimationJob& job, FrameSink& sink, Progress& progress) {
     std::int64_t skipped = 0;
-    AnimationResult result = renderAnimation(
-        job.loaded->scene, job.range, job.view, sink, &interruptFlag(),
-        [&](const AnimationProgress& p) {
-            progress.skipped(int(p.skipped - skipped));
-            skipped = p.skipped;
-            progress.update(int(p.done));
-        },
-        {job.threads, {job.antialias}});
+    AnimationResult result = renderAnimation(job.loaded->scene, job.range, job.view, sink, &interruptFlag(),
+                                             [&](const AnimationProgress& p) {
+                                                 progress.skipped(int(p.skipped - skipped));
+                                                 skipped = p.skipped;
+                                                 progress.update(int(p.done));
+                                             },
+                                             {job.threads, {job.antialias}});
     progress.clear();
     return result;
 }
@@ -90,7 +89,8 @@ int renderSequence(const AnimationJob& job, const FramePattern& pattern, const s
         case AnimationResult::Outcome::Finished:
             break;
     }
-    std::cerr << "f2 render: " << describe(job) << " -> " << output << ": " << result.rendered() << " rendered";
+    std::cerr << "f2 render: " << describe(job) << " -> " << output << ": " << result.rendered()
+              << " rendered";
     if (resume) std::cerr << ", " << result.skipped << " already on disk";
     std::cerr << ", " << result.threads << " threads, " << progress.summary() << "\n";
     return 0;
@@ -109,18 +109,20 @@ int renderVideo(const AnimationJob& job, VideoFormat format, const std::string& 
     switch (result.outcome) {
         case AnimationResult::Outcome::Failed:
             std::cerr << "f2 render: " << result.error;
-            if (findProgram("ffmpeg").empty()) std::cerr << "; or write a PNG sequence with -o frames/f_%04d.png";
+            if (findProgram("ffmpeg").empty())
+                std::cerr << "; or write a PNG sequence with -o frames/f_%04d.png";
             std::cerr << '\n';
             return 1;
         case AnimationResult::Outcome::Cancelled:
-            std::cerr << "f2 render: interrupted after " << result.done << " of " << result.total << " frames; no "
-                      << output << " written\n";
+            std::cerr << "f2 render: interrupted after " << result.done << " of " << result.total
+                      << " frames; no " << output << " written\n";
             return interruptedExit();
         case AnimationResult::Outcome::Finished:
             break;
     }
     std::cerr << "f2 render: " << describe(job) << " -> " << output << ": " << result.done << " frames of "
-              << videoFormatName(format) << ", " << result.threads << " threads, " << progress.summary() << "\n";
+              << videoFormatName(format) << ", " << result.threads << " threads, " << progress.summary()
+              << "\n";
     return 0;
 }
 
@@ -128,8 +130,9 @@ int renderImage(const RenderArgs& args, const LoadedScene& loaded, const FrameVi
     const bool toStdout = args.output == "-";
     PngImageSink sink = toStdout ? PngImageSink(stdout, "standard output") : PngImageSink(args.output);
     const std::string where = toStdout ? "standard output" : args.output;
-    const AnimationResult result = renderAnimation(loaded.scene, AnimationRange::still(t, loaded.scene.fps), view,
-                                                   sink, &interruptFlag(), {}, {args.threads, {args.antialias}});
+    const AnimationResult result =
+        renderAnimation(loaded.scene, AnimationRange::still(t, loaded.scene.fps), view, sink,
+                        &interruptFlag(), {}, {args.threads, {args.antialias}});
     switch (result.outcome) {
         case AnimationResult::Outcome::Failed:
             std::cerr << "f2 render: " << result.error << '\n';
@@ -140,9 +143,9 @@ int renderImage(const RenderArgs& args, const LoadedScene& loaded, const FrameVi
         case AnimationResult::Outcome::Finished:
             break;
     }
-    std::cerr << "f2 render: " << loaded.name << " frame " << t << " -> " << where << " (" << view.width << "x"
-              << view.height << ", " << result.threads << " threads, " << formatMilliseconds(result.renderMs)
-              << ")\n";
+    std::cerr << "f2 render: " << loaded.name << " frame " << t << " -> " << where << " (" << view.width
+              << "x" << view.height << ", " << result.threads << " threads, "
+              << formatMilliseconds(result.renderMs) << ")\n";
     return 0;
 }
 
@@ -203,7 +206,8 @@ int runRender(const RenderArgs& args) {
         if (!parsed) return usageError(error);
         shard = *parsed;
     }
-    const AnimationRange frames{range.first, range.last, loaded->scene.fps, fps, 0, shard.index, shard.count, range.step};
+    const AnimationRange frames{range.first, range.last,  loaded->scene.fps, fps,
+                                0,           shard.index, shard.count,       range.step};
     if (frames.lastRendered() > lastFrame)
         std::cerr << "f2 render: warning: " << pastTheEndWarning(frames, lastFrame) << '\n';
     AnimationJob job{&*loaded, FrameView::sceneCamera(width, height), frames, args.antialias, args.threads};
@@ -212,8 +216,8 @@ int runRender(const RenderArgs& args) {
             return usageError("--pixel traces one pixel of one frame: choose the frame with --frame");
         int x = 0, y = 0;
         if (!parsePixel(args.pixel, width, height, x, y, error)) return usageError(error);
-        return printPixelStory(*loaded, job.view.at(loaded->scene, args.frame), args.frame, x, y, args.antialias,
-                               args.threads);
+        return printPixelStory(*loaded, job.view.at(loaded->scene, args.frame), args.frame, x, y,
+                               args.antialias, args.threads);
     }
     if (output->kind == OutputKind::Kind::Sequence)
         return renderSequence(job, output->pattern, args.output, args.resume);
@@ -224,8 +228,9 @@ int runRender(const RenderArgs& args) {
     }
     if (output->kind == OutputKind::Kind::Video) return renderVideo(job, output->video, args.output);
     if (!args.frames.empty() && range.count() != 1)
-        return usageError((output->kind == OutputKind::Kind::StandardOutput ? std::string("-o - writes one PNG")
-                                                                            : "'" + args.output + "' holds one image") +
+        return usageError((output->kind == OutputKind::Kind::StandardOutput
+                               ? std::string("-o - writes one PNG")
+                               : "'" + args.output + "' holds one image") +
                           "; for --frames " + args.frames +
                           " write a numbered sequence (-o f_%04d.png) or a video (-o out.mp4)");
     double t = args.frames.empty() ? args.frame : frames.timeOf(range.first);
@@ -244,9 +249,10 @@ Command addRenderCommand(CLI::App& app) {
         "directories of the output are created. Ctrl+C stops cleanly: no partial file is left.");
     sub->add_option("scene", args->scene, "Scene file; '-' reads standard input; none = the default scene")
         ->check(nonEmptyPath("render the default scene"));
-    args->frameOption = sub->add_option("--frame", args->frame,
-                                        "One image: the scene time in frames, 0..1e7; may be fractional (default 0)")
-                            ->check(finiteNumberIn(0.0, 1e7, "a frame time"));
+    args->frameOption =
+        sub->add_option("--frame", args->frame,
+                        "One image: the scene time in frames, 0..1e7; may be fractional (default 0)")
+            ->check(finiteNumberIn(0.0, 1e7, "a frame time"));
     sub->add_option("--frames", args->frames,
                     "Frames of a sequence or video: FIRST-LAST, FIRST or FIRST- (default: 0 to the last key "
                     "frame), then optionally :STEP for every STEP-th frame (0-239:4); numbered at the output "
@@ -264,18 +270,20 @@ Command addRenderCommand(CLI::App& app) {
            "Anti-aliasing: N x N stratified samples per pixel, averaged; N = 1..16 (default 1 = the pixel "
            "centre)")
         ->check(wholeNumberIn(1, 16));
-    sub->add_option("--fps", args->fps,
-                    "Output frames per second, 1..1000 (default: the scene's /fps). The animation keeps its length: "
-                    "output frame i shows scene time i * (scene fps) / FPS")
+    sub->add_option(
+           "--fps", args->fps,
+           "Output frames per second, 1..1000 (default: the scene's /fps). The animation keeps its length: "
+           "output frame i shows scene time i * (scene fps) / FPS")
         ->check(wholeNumberIn(1, 1000));
     sub->add_option("--shard", args->shard,
                     "Render farm: worker K of N (K = 0..N-1) renders the frames whose number is K modulo N "
                     "(round-robin); sequences only")
         ->type_name("K/N");
     sub->add_flag("--resume", args->resume, "Sequence: skip frames whose file already exists");
-    sub->add_option("--pixel", args->pixel,
-                    "Print the story of one pixel (its ray, every primitive along it, the hit, the normal, each "
-                    "light's term and shadow, the colour) instead of writing an image")
+    sub->add_option(
+           "--pixel", args->pixel,
+           "Print the story of one pixel (its ray, every primitive along it, the hit, the normal, each "
+           "light's term and shadow, the colour) instead of writing an image")
         ->type_name("X,Y");
     return {sub, [args] { return runRender(*args); }};
 }

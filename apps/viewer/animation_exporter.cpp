@@ -52,7 +52,8 @@ void AnimationExporter::run(ExportJob job) {
         });
     switch (result.outcome) {
         case AnimationResult::Outcome::Cancelled:
-            return report(false, tr("Export cancelled after %1 of %2 frames").arg(result.done).arg(result.total));
+            return report(false,
+                          tr("Export cancelled after %1 of %2 frames").arg(result.done).arg(result.total));
         case AnimationResult::Outcome::Failed:
             return report(false, QString::fromStdString(result.error));
         case AnimationResult::Outcome::Finished:

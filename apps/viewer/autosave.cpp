@@ -14,7 +14,8 @@ const QByteArray kHeader = "# f2-viewer autosave of: ";
 }  // namespace
 
 QString Autosave::directory() {
-    return QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation) + QStringLiteral("/autosave");
+    return QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation) +
+           QStringLiteral("/autosave");
 }
 
 QString Autosave::copyPath(const QString& scenePath) {

@@ -94,7 +94,8 @@ void EditorDock::showFind() {
 bool EditorDock::findNext(bool backward) {
     const QString what = findField_->text();
     if (what.isEmpty()) return false;
-    const QTextDocument::FindFlags flags = backward ? QTextDocument::FindBackward : QTextDocument::FindFlags();
+    const QTextDocument::FindFlags flags =
+        backward ? QTextDocument::FindBackward : QTextDocument::FindFlags();
     QTextCursor found = editor_->document()->find(what, editor_->textCursor(), flags);
     if (found.isNull()) {
         // Wrap round to the other end.
@@ -111,9 +112,9 @@ bool EditorDock::findNext(bool backward) {
 
 void EditorDock::goToLineDialog() {
     bool ok = false;
-    const int line = QInputDialog::getInt(this, tr("Go to Line"), tr("Line (1–%1):").arg(editor_->blockCount()),
-                                          editor_->textCursor().blockNumber() + 1, 1, editor_->blockCount(), 1,
-                                          &ok);
+    const int line =
+        QInputDialog::getInt(this, tr("Go to Line"), tr("Line (1–%1):").arg(editor_->blockCount()),
+                             editor_->textCursor().blockNumber() + 1, 1, editor_->blockCount(), 1, &ok);
     if (ok) editor_->goTo(line);
 }
 

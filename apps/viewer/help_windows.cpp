@@ -62,9 +62,10 @@ QString languageReference() {
 void showShortcuts(QWidget* parent, const QMenuBar* menus) {
     const QString text =
         shortcutList(menus) +
-        QObject::tr("\n\nSpace, Left, Right, Home, End and C act while the picture or the timeline has the "
-                    "focus (click the picture); in the editor they type.\n"
-                    "In the picture: drag to orbit, wheel to zoom.");
+        QObject::tr(
+            "\n\nSpace, Left, Right, Home, End and C act while the picture or the timeline has the "
+            "focus (click the picture); in the editor they type.\n"
+            "In the picture: drag to orbit, wheel to zoom.");
     showText(parent, QObject::tr("Keyboard Shortcuts"), text, false);
 }
 

@@ -25,8 +25,8 @@
 
 #include "animation_exporter.h"
 #include "autosave.h"
-#include "core/anim/frame_time.h"
 #include "core/anim/frame_builder.h"
+#include "core/anim/frame_time.h"
 #include "core/anim/track.h"
 #include "core/render/pick.h"
 #include "core/render/renderer.h"
@@ -97,7 +97,8 @@ MainWindow::MainWindow(QWidget* parent)
     sizeStatus_ = new QLabel(this);
     selectionStatus_ = new QLabel(this);
     refineStatus_ = new QLabel(this);
-    for (QLabel* label : {selectionStatus_, refineStatus_, frameStatus_, timeStatus_, fpsStatus_, sizeStatus_})
+    for (QLabel* label :
+         {selectionStatus_, refineStatus_, frameStatus_, timeStatus_, fpsStatus_, sizeStatus_})
         statusBar()->addPermanentWidget(label);
 
     frameTimer_.setSingleShot(true);
@@ -190,18 +191,18 @@ void MainWindow::createActions() {
     QMenu* play = menuBar()->addMenu(tr("&Playback"));
     stageShortcut(play->addAction(tr("&Play / Pause"), QKeySequence(Qt::Key_Space), playback_,
                                   &Playback::togglePlaying));
-    stageShortcut(play->addAction(tr("Step &Back"), QKeySequence(Qt::Key_Left), this,
-                                  [this] { playback_->step(-1); }));
+    stageShortcut(
+        play->addAction(tr("Step &Back"), QKeySequence(Qt::Key_Left), this, [this] { playback_->step(-1); }));
     stageShortcut(play->addAction(tr("Step &Forward"), QKeySequence(Qt::Key_Right), this,
                                   [this] { playback_->step(1); }));
-    stageShortcut(play->addAction(tr("F&irst Frame"), QKeySequence(Qt::Key_Home), playback_,
-                                  &Playback::seekToStart));
+    stageShortcut(
+        play->addAction(tr("F&irst Frame"), QKeySequence(Qt::Key_Home), playback_, &Playback::seekToStart));
     stageShortcut(
         play->addAction(tr("&Last Frame"), QKeySequence(Qt::Key_End), playback_, &Playback::seekToEnd));
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
-    stageShortcut(view->addAction(tr("&Scene Camera"), QKeySequence(Qt::Key_C), viewport_,
-                                  &ViewportWidget::resetView));
+    stageShortcut(
+        view->addAction(tr("&Scene Camera"), QKeySequence(Qt::Key_C), viewport_, &ViewportWidget::resetView));
     QMenu* scaleMenu = view->addMenu(tr("Render S&cale"));
     auto* scales = new QActionGroup(this);
     const std::pair<QString, RenderScale> choices[] = {{tr("25 %"), RenderScale::Quarter},
@@ -302,8 +303,9 @@ bool MainWindow::saveScene() {
 
 bool MainWindow::saveSceneAs() {
     const QString dir = document_->path().isEmpty() ? QString() : QFileInfo(document_->path()).absolutePath();
-    const QString suggested = QDir(dir).filePath(
-        document_->path().isEmpty() ? QStringLiteral("untitled.f2") : QFileInfo(document_->path()).fileName());
+    const QString suggested =
+        QDir(dir).filePath(document_->path().isEmpty() ? QStringLiteral("untitled.f2")
+                                                       : QFileInfo(document_->path()).fileName());
     QFileDialog dialog(this, tr("Save Scene"), suggested, tr("F2 scenes (*.f2);;All files (*)"));
     dialog.setAcceptMode(QFileDialog::AcceptSave);
     dialog.setDefaultSuffix("f2");
@@ -315,7 +317,8 @@ bool MainWindow::writeScene(const QString& path) {
     const QString text = editor()->toPlainText();
     QSaveFile file(path);  // a temporary file renamed over the old one
     if (!file.open(QIODevice::WriteOnly) || file.write(text.toUtf8()) < 0 || !file.commit()) {
-        QMessageBox::warning(this, tr("Save Scene"), tr("Could not save %1: %2").arg(path, file.errorString()));
+        QMessageBox::warning(this, tr("Save Scene"),
+                             tr("Could not save %1: %2").arg(path, file.errorString()));
         return false;
     }
     const QString oldPath = document_->path();
@@ -331,7 +334,8 @@ bool MainWindow::writeScene(const QString& path) {
 
 bool MainWindow::maybeSave() {
     if (!editorDock_->isModified()) return true;
-    switch (ask(Question::SaveChanges, tr("%1 has unsaved changes. Save them?").arg(document_->displayName()))) {
+    switch (
+        ask(Question::SaveChanges, tr("%1 has unsaved changes. Save them?").arg(document_->displayName()))) {
         case QMessageBox::Save:
             return saveScene();
         case QMessageBox::Discard:
@@ -421,11 +425,12 @@ void MainWindow::onDiagnosticsChanged() {
         item->setData(kFileRole, QString::fromStdString(d.loc.file));
         item->setData(kLineRole, d.loc.line);
         item->setData(kColumnRole, d.loc.column);
-        item->setForeground(d.severity == Severity::Error ? QColor(0xb0, 0x00, 0x20) : QColor(0x90, 0x60, 0x00));
+        item->setForeground(d.severity == Severity::Error ? QColor(0xb0, 0x00, 0x20)
+                                                          : QColor(0x90, 0x60, 0x00));
         // Problems in an included file are listed but not underlined here.
         if (d.loc.file == ownFile)
-            inEditor.push_back({d.loc.line, d.loc.column, QString::fromStdString(d.message),
-                                d.severity == Severity::Error});
+            inEditor.push_back(
+                {d.loc.line, d.loc.column, QString::fromStdString(d.message), d.severity == Severity::Error});
     }
     if (lines.isEmpty()) problemsList_->addItem(tr("No problems."));
     editor()->setProblems(std::move(inEditor));
@@ -484,7 +489,8 @@ void MainWindow::refine() {
     // Only the latest view, only when nothing newer is on its way: any change
     // (time, camera, size, scene) makes a new one-sample request, which
     // restarts refinement from its frame.
-    if (!isRefining() || controller_->hasPendingFrames() || frameTimer_.isActive() || !lastRequest_.scene) return;
+    if (!isRefining() || controller_->hasPendingFrames() || frameTimer_.isActive() || !lastRequest_.scene)
+        return;
     RenderRequest next = lastRequest_;
     next.options.antialias = shownFrame_.antialias * 2;
     controller_->request(next);
@@ -533,15 +539,16 @@ void MainWindow::updateSelectionView() {
     }
     const SceneObject& target = scene->objects[*object];
     QList<int> keys;
-    for (const Key& key : (selection_->part ? target.partTracks[std::size_t(*selection_->part)] : target.track).keys)
+    for (const Key& key :
+         (selection_->part ? target.partTracks[std::size_t(*selection_->part)] : target.track).keys)
         keys << key.frame;
     timeline_->setKeyMarkers(keys);
     EvaluatedFrame frame;
     evaluateFrame(*scene, shownFrame_.time, frame);
     const Bounds bounds = selectionBounds(*scene, frame, *object, selection_->part);
     const QImage& image = viewport_->image();
-    viewport_->setSelectionOutline(
-        image.isNull() ? std::nullopt : outlineRect(viewport_->viewCamera(image.size()), bounds));
+    viewport_->setSelectionOutline(image.isNull() ? std::nullopt
+                                                  : outlineRect(viewport_->viewCamera(image.size()), bounds));
     const Vec3 centre = (bounds.lo + bounds.hi) * 0.5f;
     selectionStatus_->setText(tr("%1 at (%2, %3, %4)")
                                   .arg(selection_->target())
@@ -611,8 +618,9 @@ bool MainWindow::refuseSceneFile(const QString& path, const QString& title) {
     for (const QString& source : document_->sources()) {
         if (QFileInfo(path) != QFileInfo(source)) continue;
         QMessageBox::warning(this, title,
-                             source == document_->path() ? tr("Refusing to overwrite the scene file.")
-                                                         : tr("Refusing to overwrite a file the scene includes."));
+                             source == document_->path()
+                                 ? tr("Refusing to overwrite the scene file.")
+                                 : tr("Refusing to overwrite a file the scene includes."));
         return true;
     }
     return false;
@@ -638,8 +646,8 @@ void MainWindow::saveFrame() {
     const QString stem = exportStem();
     const QString suggested =
         QStringLiteral("%1_frame_%2.png").arg(stem).arg(playback_->frame(), 4, 10, QChar('0'));
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save Frame"), QDir(outputFolder()).filePath(suggested),
-                                                      tr("PNG images (*.png)"));
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Save Frame"), QDir(outputFolder()).filePath(suggested), tr("PNG images (*.png)"));
     if (path.isEmpty() || refuseSceneFile(path, tr("Save Frame"))) return;
     std::string error;
     if (!writePng(frameToSave(), QFile::encodeName(path).toStdString(), error))
@@ -652,11 +660,13 @@ void MainWindow::exportPngSequence() {
     auto scene = document_->scene();
     if (!scene) return;
     playback_->pause();  // the export gets the CPU
-    const QString dir = QFileDialog::getExistingDirectory(this, tr("Export PNG Sequence to Folder"), outputFolder());
+    const QString dir =
+        QFileDialog::getExistingDirectory(this, tr("Export PNG Sequence to Folder"), outputFolder());
     if (dir.isEmpty()) return;
     const QString stem = exportStem();
     const FramePattern pattern = exportSequencePattern(dir, stem, scene->lastFrame() + 1);
-    runExport(std::move(scene), std::make_unique<PngSequenceSink>(pattern), QDir(dir).filePath(stem + "_*.png"));
+    runExport(std::move(scene), std::make_unique<PngSequenceSink>(pattern),
+              QDir(dir).filePath(stem + "_*.png"));
 }
 
 void MainWindow::exportVideo() {

@@ -180,8 +180,8 @@ class MainWindow : public QMainWindow {
     QLabel* refineStatus_ = nullptr;
     bool refinement_ = true;
     RenderRequest lastRequest_;  // the view the latest request showed, at 1 sample
-    QTimer frameTimer_;   // coalesces scheduleFrame() calls
-    QTimer statusTimer_;  // lets the FPS readout fall to 0 when nothing renders
+    QTimer frameTimer_;          // coalesces scheduleFrame() calls
+    QTimer statusTimer_;         // lets the FPS readout fall to 0 when nothing renders
     FrameInfo shownFrame_;
     // Declared last so it is destroyed first: its worker joins while every
     // widget it could talk to still exists.

@@ -56,8 +56,6 @@ Camera OrbitCamera::apply(const Camera& base) const {
     return c;
 }
 
-Pose OrbitCamera::pose() const {
-    return {apply(Camera{}).eye, {pitchDeg_, yawDeg_, 0.0f}};
-}
+Pose OrbitCamera::pose() const { return {apply(Camera{}).eye, {pitchDeg_, yawDeg_, 0.0f}}; }
 
 }  // namespace f2::viewer

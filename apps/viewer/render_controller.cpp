@@ -65,7 +65,8 @@ void RenderController::workerLoop(int threads) {
         }
         // The delay is read again every slice: lowering it releases a frame it holds.
         const auto held = std::chrono::steady_clock::now();
-        while (!cancel_.load() && std::chrono::steady_clock::now() - held < std::chrono::milliseconds(debugDelayMs_.load()))
+        while (!cancel_.load() &&
+               std::chrono::steady_clock::now() - held < std::chrono::milliseconds(debugDelayMs_.load()))
             std::this_thread::sleep_for(std::chrono::milliseconds(kDelaySliceMs));
 
         FrameInfo info;

@@ -25,8 +25,8 @@ namespace f2::viewer {
 /// worker can read it while the GUI loads the next version of the file.
 struct RenderRequest {
     std::shared_ptr<const SceneDesc> scene;
-    double time = 0;  ///< in frames, may be fractional
-    Camera camera;    ///< already at the render size
+    double time = 0;        ///< in frames, may be fractional
+    Camera camera;          ///< already at the render size
     RenderOptions options;  ///< anti-aliasing, as `f2 render --aa`
 };
 

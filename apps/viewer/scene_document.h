@@ -114,11 +114,11 @@ class SceneDocument : public QObject {
     std::optional<QString> readDisk() const;
     static Stamp stampOf(const QString& path);
 
-    QString path_;      // file being shown/watched; empty = untitled
-    QString text_;      // the text of the latest load or edit
-    QString diskText_;  // the file's content as last read or saved
-    QString goodPath_;  // document the current good scene came from
-    quint64 documentId_ = 0;   // a new id per load of another document
+    QString path_;            // file being shown/watched; empty = untitled
+    QString text_;            // the text of the latest load or edit
+    QString diskText_;        // the file's content as last read or saved
+    QString goodPath_;        // document the current good scene came from
+    quint64 documentId_ = 0;  // a new id per load of another document
     quint64 goodDocument_ = 0;
     std::shared_ptr<const SceneDesc> scene_;
     QStringList diagnostics_;
@@ -134,8 +134,8 @@ class SceneDocument : public QObject {
 
     QFileSystemWatcher watcher_;
     QTimer reloadTimer_;
-    QStringList sources_;        // files of the latest parse, watched
-    QList<Stamp> sourceStamps_;  // parallel to sources_: as they were when read
+    QStringList sources_;           // files of the latest parse, watched
+    QList<Stamp> sourceStamps_;     // parallel to sources_: as they were when read
     QSet<QString> changedSources_;  // reported by the watcher since the last check
 };
 

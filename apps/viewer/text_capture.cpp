@@ -66,8 +66,9 @@ TextEdit cameraEdit(const QString& text, const CameraDesc& camera, const Pose& p
         const QStringList args = argumentsOf(lines[i], &comment);
         if (args.isEmpty() || args[0] != QStringLiteral("/camera") || args.size() < 4) continue;
         const qsizetype indent = lines[i].indexOf(u'/');
-        return {int(i) + 1, true,
-                lines[i].left(indent) + QStringList(args.mid(0, 4)).join(u' ') + u' ' + poseText(pose) + comment};
+        return {
+            int(i) + 1, true,
+            lines[i].left(indent) + QStringList(args.mid(0, 4)).join(u' ') + u' ' + poseText(pose) + comment};
     }
     return {1, false,
             QStringLiteral("/camera %1 %2 %3 %4")

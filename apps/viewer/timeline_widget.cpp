@@ -30,7 +30,7 @@ TimelineWidget::TimelineWidget(QWidget* parent) : QWidget(parent) {
 
     slider_ = new KeyMarkerSlider(this);
     slider_->setMinimumHeight(slider_->sizeHint().height() + 8);  // room for the key markers
-    slider_->setTracking(true);            // the picture follows while dragging
+    slider_->setTracking(true);                                   // the picture follows while dragging
     slider_->setFocusPolicy(Qt::NoFocus);  // keep Space/arrows for the window's shortcuts
     layout->addWidget(slider_, 1);
 

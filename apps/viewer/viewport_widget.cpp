@@ -89,7 +89,8 @@ QRectF ViewportWidget::imageRect() const {
     // being rendered the old frame is simply stretched.
     if (image_.isNull()) return {};
     const QSizeF fitted = QSizeF(image_.size()).scaled(QSizeF(size()), Qt::KeepAspectRatio);
-    return {(width() - fitted.width()) / 2, (height() - fitted.height()) / 2, fitted.width(), fitted.height()};
+    return {(width() - fitted.width()) / 2, (height() - fitted.height()) / 2, fitted.width(),
+            fitted.height()};
 }
 
 std::optional<QPointF> ViewportWidget::imagePointAt(QPointF pos) const {

@@ -8,10 +8,10 @@
 // It prints a summary and one machine-readable line,
 //   RESULT prims=... threads=... packet=... rebuild=... fps=... total_fps=... ...
 // which scripts/compare_peers.sh reads.
-#include <CLI/CLI.hpp>
 #include <embree3/rtcore.h>
 #include <tbb/global_control.h>
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -58,8 +58,10 @@ struct FrameTimes {
 };
 
 int run(const Options& options) {
-    const std::map<std::string, BuildMode> modes = {{"none", BuildMode::Static}, {"low", BuildMode::Low},
-                                                    {"medium", BuildMode::Medium}, {"high", BuildMode::High},
+    const std::map<std::string, BuildMode> modes = {{"none", BuildMode::Static},
+                                                    {"low", BuildMode::Low},
+                                                    {"medium", BuildMode::Medium},
+                                                    {"high", BuildMode::High},
                                                     {"refit", BuildMode::Refit}};
     const BuildMode mode = modes.at(options.rebuild);
     const bool perFrameBuild = mode != BuildMode::Static;
@@ -72,7 +74,8 @@ int run(const Options& options) {
     }
 
     // Both Embree's builders and our tiles run on TBB: one limit for both.
-    tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism, std::size_t(options.threads));
+    tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism,
+                                    std::size_t(options.threads));
     const std::string config = "threads=" + std::to_string(options.threads);
     RTCDevice device = rtcNewDevice(config.c_str());
     if (!device) {
@@ -111,10 +114,12 @@ int run(const Options& options) {
 
         RayCounts counts;
         int warmupFrames = 0;
-        for (auto begin = Clock::now(); warmupFrames < 3 || msSince(begin) < options.warmup * 1000; ++warmupFrames)
+        for (auto begin = Clock::now(); warmupFrames < 3 || msSince(begin) < options.warmup * 1000;
+             ++warmupFrames)
             renderFrame(counts);
         std::vector<double> update, build, render, total;
-        for (auto begin = Clock::now(); int(total.size()) < options.minFrames || msSince(begin) < options.seconds * 1000;) {
+        for (auto begin = Clock::now();
+             int(total.size()) < options.minFrames || msSince(begin) < options.seconds * 1000;) {
             const FrameTimes t = renderFrame(counts);
             update.push_back(t.update);
             build.push_back(t.build);
@@ -125,24 +130,30 @@ int run(const Options& options) {
         const double renderMs = median(render), totalMs = median(total);
         const double rays = double(counts.primary + counts.shadow);
         const bool ray16 = rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_NATIVE_RAY16_SUPPORTED) != 0;
-        std::printf("f2_embree_peer: %s, %zu primitives, %dx%d, %d threads, %d-ray packets (native 16: %s), "
-                    "%dx%d tiles\n",
-                    options.prims.c_str(), frame.prims.size(), frame.width, frame.height, options.threads,
-                    options.packet, ray16 ? "yes" : "no", options.tile, options.tile);
-        std::printf("first build %.3f ms; %zu frames timed after %d warm-up frames\n", firstBuildMs, total.size(),
-                    warmupFrames);
+        std::printf(
+            "f2_embree_peer: %s, %zu primitives, %dx%d, %d threads, %d-ray packets (native 16: %s), "
+            "%dx%d tiles\n",
+            options.prims.c_str(), frame.prims.size(), frame.width, frame.height, options.threads,
+            options.packet, ray16 ? "yes" : "no", options.tile, options.tile);
+        std::printf("first build %.3f ms; %zu frames timed after %d warm-up frames\n", firstBuildMs,
+                    total.size(), warmupFrames);
         std::printf("render: median %.3f ms (min %.3f, max %.3f) -> %.1f FPS, %.1f Mrays/s\n", renderMs,
-                    *std::min_element(render.begin(), render.end()), *std::max_element(render.begin(), render.end()),
-                    1000.0 / renderMs, rays / (renderMs * 1e3));
+                    *std::min_element(render.begin(), render.end()),
+                    *std::max_element(render.begin(), render.end()), 1000.0 / renderMs,
+                    rays / (renderMs * 1e3));
         if (perFrameBuild)
-            std::printf("per frame with the BVH updated (%s): update %.3f + build %.3f ms, whole frame %.3f ms -> %.1f FPS\n",
-                        options.rebuild.c_str(), median(update), median(build), totalMs, 1000.0 / totalMs);
-        std::printf("RESULT prims=%zu threads=%d packet=%d tile=%d rebuild=%s build_ms=%.3f render_ms=%.4f fps=%.2f "
-                    "primary=%llu shadow=%llu mrays=%.2f update_ms=%.4f rebuild_ms=%.4f total_ms=%.4f total_fps=%.2f\n",
-                    frame.prims.size(), options.threads, options.packet, options.tile, options.rebuild.c_str(),
-                    firstBuildMs, renderMs, 1000.0 / renderMs, static_cast<unsigned long long>(counts.primary),
-                    static_cast<unsigned long long>(counts.shadow), rays / (renderMs * 1e3), median(update),
-                    median(build), totalMs, 1000.0 / totalMs);
+            std::printf(
+                "per frame with the BVH updated (%s): update %.3f + build %.3f ms, whole frame %.3f ms -> "
+                "%.1f FPS\n",
+                options.rebuild.c_str(), median(update), median(build), totalMs, 1000.0 / totalMs);
+        std::printf(
+            "RESULT prims=%zu threads=%d packet=%d tile=%d rebuild=%s build_ms=%.3f render_ms=%.4f fps=%.2f "
+            "primary=%llu shadow=%llu mrays=%.2f update_ms=%.4f rebuild_ms=%.4f total_ms=%.4f "
+            "total_fps=%.2f\n",
+            frame.prims.size(), options.threads, options.packet, options.tile, options.rebuild.c_str(),
+            firstBuildMs, renderMs, 1000.0 / renderMs, static_cast<unsigned long long>(counts.primary),
+            static_cast<unsigned long long>(counts.shadow), rays / (renderMs * 1e3), median(update),
+            median(build), totalMs, 1000.0 / totalMs);
 
         if (!options.out.empty() && !f2::writePng(renderer.image(), options.out, error)) {
             std::fprintf(stderr, "f2_embree_peer: %s\n", error.c_str());
@@ -159,7 +170,8 @@ int main(int argc, char** argv) {
     Options options;
     CLI::App app{"f2_embree_peer: renders a frame of `f2 export --prims` with Intel Embree 3 and times it"};
     app.add_option("prims", options.prims, "the frame, as written by f2 export --prims")->required();
-    app.add_option("--threads", options.threads, "threads (TBB; default: every core)")->check(CLI::Range(1, 1024));
+    app.add_option("--threads", options.threads, "threads (TBB; default: every core)")
+        ->check(CLI::Range(1, 1024));
     app.add_option("--rebuild", options.rebuild,
                    "none: BVH built once; low|medium|high: rebuilt every frame at that Embree quality; "
                    "refit: refitted every frame")
@@ -167,11 +179,16 @@ int main(int argc, char** argv) {
     app.add_option("--packet", options.packet, "rays per packet: 16 (4x4 pixels), 8 (4x2) or 4 (2x2)")
         ->check(CLI::IsMember({4, 8, 16}));
     app.add_option("--tile", options.tile, "tile side in pixels, a multiple of 4 up to 64")
-        ->check(CLI::Range(4, 64) & CLI::Validator([](std::string& s) {
-                    return std::stoi(s) % 4 == 0 ? std::string() : std::string("not a multiple of 4");
-                }, "MULTIPLE OF 4"));
-    app.add_option("--seconds", options.seconds, "timed seconds (at least --min-frames frames)")->check(CLI::NonNegativeNumber);
-    app.add_option("--warmup", options.warmup, "untimed seconds first (at least 3 frames)")->check(CLI::NonNegativeNumber);
+        ->check(CLI::Range(4, 64) & CLI::Validator(
+                                        [](std::string& s) {
+                                            return std::stoi(s) % 4 == 0 ? std::string()
+                                                                         : std::string("not a multiple of 4");
+                                        },
+                                        "MULTIPLE OF 4"));
+    app.add_option("--seconds", options.seconds, "timed seconds (at least --min-frames frames)")
+        ->check(CLI::NonNegativeNumber);
+    app.add_option("--warmup", options.warmup, "untimed seconds first (at least 3 frames)")
+        ->check(CLI::NonNegativeNumber);
     app.add_option("--min-frames", options.minFrames, "timed frames at least")->check(CLI::Range(1, 1000000));
     app.add_option("--out", options.out, "write the last frame as PNG");
     CLI11_PARSE(app, argc, argv);

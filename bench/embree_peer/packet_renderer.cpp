@@ -25,14 +25,20 @@ struct Packet {
     static constexpr int kColumns = W == 4 ? 2 : 4, kRows = W / kColumns;
 
     static void intersect(const int* valid, RTCScene s, RTCIntersectContext* c, RTCRayHitNt<W>& r) {
-        if constexpr (W == 16) rtcIntersect16(valid, s, c, reinterpret_cast<RTCRayHit16*>(&r));
-        else if constexpr (W == 8) rtcIntersect8(valid, s, c, reinterpret_cast<RTCRayHit8*>(&r));
-        else rtcIntersect4(valid, s, c, reinterpret_cast<RTCRayHit4*>(&r));
+        if constexpr (W == 16)
+            rtcIntersect16(valid, s, c, reinterpret_cast<RTCRayHit16*>(&r));
+        else if constexpr (W == 8)
+            rtcIntersect8(valid, s, c, reinterpret_cast<RTCRayHit8*>(&r));
+        else
+            rtcIntersect4(valid, s, c, reinterpret_cast<RTCRayHit4*>(&r));
     }
     static void occluded(const int* valid, RTCScene s, RTCIntersectContext* c, RTCRayNt<W>& r) {
-        if constexpr (W == 16) rtcOccluded16(valid, s, c, reinterpret_cast<RTCRay16*>(&r));
-        else if constexpr (W == 8) rtcOccluded8(valid, s, c, reinterpret_cast<RTCRay8*>(&r));
-        else rtcOccluded4(valid, s, c, reinterpret_cast<RTCRay4*>(&r));
+        if constexpr (W == 16)
+            rtcOccluded16(valid, s, c, reinterpret_cast<RTCRay16*>(&r));
+        else if constexpr (W == 8)
+            rtcOccluded8(valid, s, c, reinterpret_cast<RTCRay8*>(&r));
+        else
+            rtcOccluded4(valid, s, c, reinterpret_cast<RTCRay4*>(&r));
     }
 };
 
@@ -93,18 +99,21 @@ struct PacketSurfaces {
             const bool cylinder = s.kind == ShapeKind::Cylinder;
             float radial[3];
             for (int i = 0; i < 3; ++i) radial[i] = cylinder ? local[i] - s.axes[1][i] * along : local[i];
-            const float scale = 1.0f / std::sqrt(radial[0] * radial[0] + radial[1] * radial[1] + radial[2] * radial[2]);
+            const float scale =
+                1.0f / std::sqrt(radial[0] * radial[0] + radial[1] * radial[1] + radial[2] * radial[2]);
             const int flatAxis = face == kCap ? 1 : face == kCurved ? 0 : face - kSlabX;
             // The face's axis picked with bit masks, not a select: GCC would turn
             // a select into masked gathers, which it does not vectorise.
             float axis[3];
             for (int i = 0; i < 3; ++i) {
                 const std::uint32_t pick0 = flatAxis == 0 ? ~0u : 0u, pick1 = flatAxis == 1 ? ~0u : 0u;
-                axis[i] = std::bit_cast<float>((std::bit_cast<std::uint32_t>(s.axes[0][i]) & pick0) |
-                                               (std::bit_cast<std::uint32_t>(s.axes[1][i]) & pick1) |
-                                               (std::bit_cast<std::uint32_t>(s.axes[2][i]) & ~(pick0 | pick1)));
+                axis[i] =
+                    std::bit_cast<float>((std::bit_cast<std::uint32_t>(s.axes[0][i]) & pick0) |
+                                         (std::bit_cast<std::uint32_t>(s.axes[1][i]) & pick1) |
+                                         (std::bit_cast<std::uint32_t>(s.axes[2][i]) & ~(pick0 | pick1)));
             }
-            const float sign = local[0] * axis[0] + local[1] * axis[1] + local[2] * axis[2] >= 0 ? 1.0f : -1.0f;
+            const float sign =
+                local[0] * axis[0] + local[1] * axis[1] + local[2] * axis[2] >= 0 ? 1.0f : -1.0f;
             float n[3];
             for (int i = 0; i < 3; ++i) n[i] = face == kCurved ? radial[i] * scale : sign * axis[i];
             // Seen from inside the shape: the normal faces the viewer, and the
@@ -151,23 +160,33 @@ PacketRenderer::PacketRenderer(const PrimsFrame& frame, int packetWidth, int til
     }
     for (const PrimRecord& p : frame.prims)
         surfaces_.push_back({{float(p.rgb[0]) / 255.0f, float(p.rgb[1]) / 255.0f, float(p.rgb[2]) / 255.0f},
-                             p.ka, p.kd, p.ks, p.shininess});
+                             p.ka,
+                             p.kd,
+                             p.ks,
+                             p.shininess});
 }
 
 RayCounts PacketRenderer::render(const UserShapeScene& scene) {
     std::atomic<std::uint64_t> primary{0}, shadow{0};
-    tbb::parallel_for(tbb::blocked_range<int>(0, tilesX_ * tilesY_, 1), [&](const tbb::blocked_range<int>& range) {
-        RayCounts counts;
-        for (int tile = range.begin(); tile != range.end(); ++tile) {
-            switch (packetWidth_) {
-                case 16: renderTile<16>(scene, tile, counts); break;
-                case 8: renderTile<8>(scene, tile, counts); break;
-                default: renderTile<4>(scene, tile, counts); break;
-            }
-        }
-        primary += counts.primary;
-        shadow += counts.shadow;
-    });
+    tbb::parallel_for(tbb::blocked_range<int>(0, tilesX_ * tilesY_, 1),
+                      [&](const tbb::blocked_range<int>& range) {
+                          RayCounts counts;
+                          for (int tile = range.begin(); tile != range.end(); ++tile) {
+                              switch (packetWidth_) {
+                                  case 16:
+                                      renderTile<16>(scene, tile, counts);
+                                      break;
+                                  case 8:
+                                      renderTile<8>(scene, tile, counts);
+                                      break;
+                                  default:
+                                      renderTile<4>(scene, tile, counts);
+                                      break;
+                              }
+                          }
+                          primary += counts.primary;
+                          shadow += counts.shadow;
+                      });
     return {primary.load(), shadow.load()};
 }
 
@@ -232,7 +251,8 @@ void PacketRenderer::renderTile(const UserShapeScene& scene, int tile, RayCounts
                 int active = 0;
 #pragma omp simd reduction(+ : active)
                 for (int lane = 0; lane < W; ++lane) {
-                    nDotL[lane] = surf.normal[0][lane] * light.toLight[0] + surf.normal[1][lane] * light.toLight[1] +
+                    nDotL[lane] = surf.normal[0][lane] * light.toLight[0] +
+                                  surf.normal[1][lane] * light.toLight[1] +
                                   surf.normal[2][lane] * light.toLight[2];
                     lit[lane] = (surf.hit[lane] != 0) & (nDotL[lane] > 0) ? -1 : 0;
                     active += lit[lane] & 1;
@@ -272,7 +292,8 @@ void PacketRenderer::renderTile(const UserShapeScene& scene, int tile, RayCounts
                 if (!anyShiny) continue;
                 for (int lane = 0; lane < W; ++lane)
                     if (shiny[lane])
-                        surf.specular[lane] += light.intensity * surf.ks[lane] * std::pow(rDotV[lane], surf.shininess[lane]);
+                        surf.specular[lane] +=
+                            light.intensity * surf.ks[lane] * std::pow(rDotV[lane], surf.shininess[lane]);
             }
 
             // SPEC 3's sum, clamped and rounded to bytes (kept in ints, which

@@ -21,7 +21,7 @@ struct RayCounts {
 };
 
 class PacketRenderer {
-public:
+   public:
     /// `packetWidth` 4, 8 or 16 lanes (2x2, 4x2, 4x4 pixels); `tileSize` pixels a side.
     PacketRenderer(const PrimsFrame& frame, int packetWidth, int tileSize);
 
@@ -40,7 +40,7 @@ public:
         float intensity;
     };
 
-private:
+   private:
     template <int W>
     void renderTile(const UserShapeScene& scene, int tile, RayCounts& counts);
 

@@ -34,7 +34,7 @@ std::vector<Token> tokenize(const std::string& line) {
 
 /// Reads one line's records; throws nothing, reports through `fail`.
 class LineReader {
-public:
+   public:
     LineReader(const std::string& name, int line, const std::vector<Token>& tokens)
         : name_(name), line_(line), tokens_(tokens) {}
 
@@ -94,7 +94,7 @@ public:
         return name_ + ":" + std::to_string(line_) + ":" + std::to_string(column) + ": error: ";
     }
 
-private:
+   private:
     const std::string& name_;
     int line_;
     const std::vector<Token>& tokens_;
@@ -122,8 +122,9 @@ bool readPrimitive(const LineReader& in, ShapeKind kind, PrimRecord& p, std::str
     float unused;
     for (std::size_t i = 1; i <= 5; ++i)
         if (!in.number(i, unused, error)) return false;
-    return in.affine(6, p.worldFromLocal, error) && in.colour(18, p.rgb, error) && in.number(21, p.ka, error) &&
-           in.number(22, p.kd, error) && in.number(23, p.ks, error) && in.positive(24, p.shininess, error);
+    return in.affine(6, p.worldFromLocal, error) && in.colour(18, p.rgb, error) &&
+           in.number(21, p.ka, error) && in.number(22, p.kd, error) && in.number(23, p.ks, error) &&
+           in.positive(24, p.shininess, error);
 }
 
 }  // namespace
@@ -163,7 +164,7 @@ bool parsePrims(const std::string& text, const std::string& name, PrimsFrame& fr
             frame.lights.push_back(light);
         } else if (word == "sphere" || word == "cylinder" || word == "box") {
             PrimRecord p;
-            ShapeKind kind = word == "sphere" ? ShapeKind::Sphere
+            ShapeKind kind = word == "sphere"     ? ShapeKind::Sphere
                              : word == "cylinder" ? ShapeKind::Cylinder
                                                   : ShapeKind::Box;
             ok = readPrimitive(in, kind, p, error);

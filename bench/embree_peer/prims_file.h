@@ -21,9 +21,9 @@ enum class ShapeKind : std::uint32_t { Sphere, Cylinder, Box };
 /// One `sphere|cylinder|box` line.
 struct PrimRecord {
     ShapeKind kind = ShapeKind::Sphere;
-    float radius = 0, height = 0;    ///< sphere: radius; cylinder: radius and height
-    float sides[3] = {0, 0, 0};      ///< box: side lengths along local x, y, z
-    Affine worldFromLocal;           ///< canonical frame: centred, cylinder axis along local y
+    float radius = 0, height = 0;  ///< sphere: radius; cylinder: radius and height
+    float sides[3] = {0, 0, 0};    ///< box: side lengths along local x, y, z
+    Affine worldFromLocal;         ///< canonical frame: centred, cylinder axis along local y
     std::uint8_t rgb[3] = {200, 200, 200};
     float ka = 1, kd = 1, ks = 0.3f, shininess = 32;
 };

@@ -36,7 +36,9 @@ inline void clipSlab(float o, float d, float h, int face, Span& span) {
     span.ok = span.ok & ((along & (std::fabs(o) <= h)) | (!along & (span.enter <= span.exit)));
 }
 
-inline float dot3(float ax, float ay, float az, const float b[3]) { return ax * b[0] + ay * b[1] + az * b[2]; }
+inline float dot3(float ax, float ay, float az, const float b[3]) {
+    return ax * b[0] + ay * b[1] + az * b[2];
+}
 
 template <ShapeKind K>
 inline Span shapeSpan(const Shape& s, float ox, float oy, float oz, float dx, float dy, float dz) {
@@ -58,8 +60,8 @@ inline Span shapeSpan(const Shape& s, float ox, float oy, float oz, float dx, fl
         const float* a = s.axes[1];
         const float r = s.half[0];
         const float oa = dot3(cx, cy, cz, a), da = dot3(dx, dy, dz, a);
-        const float px = cx - a[0] * oa, py = cy - a[1] * oa, pz = cz - a[2] * oa;      // across the axis
-        const float ex = dx - a[0] * da, ey = dy - a[1] * da, ez = dz - a[2] * da;      // its direction
+        const float px = cx - a[0] * oa, py = cy - a[1] * oa, pz = cz - a[2] * oa;  // across the axis
+        const float ex = dx - a[0] * da, ey = dy - a[1] * da, ez = dz - a[2] * da;  // its direction
         const float qa = ex * ex + ey * ey + ez * ez;
         const float c = (px * px + py * py + pz * pz) - r * r;
         const bool parallel = qa <= 1e-20f;  // inside for all t, or never
@@ -154,16 +156,23 @@ template <class Kernel>
 void withWidthAndKind(unsigned width, ShapeKind kind, Kernel kernel) {
     auto withKind = [&](auto n) {
         switch (kind) {
-            case ShapeKind::Sphere: return kernel(n, std::integral_constant<ShapeKind, ShapeKind::Sphere>{});
-            case ShapeKind::Cylinder: return kernel(n, std::integral_constant<ShapeKind, ShapeKind::Cylinder>{});
-            case ShapeKind::Box: return kernel(n, std::integral_constant<ShapeKind, ShapeKind::Box>{});
+            case ShapeKind::Sphere:
+                return kernel(n, std::integral_constant<ShapeKind, ShapeKind::Sphere>{});
+            case ShapeKind::Cylinder:
+                return kernel(n, std::integral_constant<ShapeKind, ShapeKind::Cylinder>{});
+            case ShapeKind::Box:
+                return kernel(n, std::integral_constant<ShapeKind, ShapeKind::Box>{});
         }
     };
     switch (width) {
-        case 1: return withKind(std::integral_constant<unsigned, 1>{});
-        case 4: return withKind(std::integral_constant<unsigned, 4>{});
-        case 8: return withKind(std::integral_constant<unsigned, 8>{});
-        case 16: return withKind(std::integral_constant<unsigned, 16>{});
+        case 1:
+            return withKind(std::integral_constant<unsigned, 1>{});
+        case 4:
+            return withKind(std::integral_constant<unsigned, 4>{});
+        case 8:
+            return withKind(std::integral_constant<unsigned, 8>{});
+        case 16:
+            return withKind(std::integral_constant<unsigned, 16>{});
     }
 }
 
@@ -187,7 +196,9 @@ void boundsCallback(const RTCBoundsFunctionArguments* args) {
     float extent[3];
     for (int i = 0; i < 3; ++i) {
         switch (s.kind) {
-            case ShapeKind::Sphere: extent[i] = s.half[0]; break;
+            case ShapeKind::Sphere:
+                extent[i] = s.half[0];
+                break;
             case ShapeKind::Cylinder: {
                 // The cap disc of radius r across axis a reaches r*sqrt(1 - a_i^2) along world axis i.
                 const float a = s.axes[1][i];
@@ -216,10 +227,13 @@ void boundsCallback(const RTCBoundsFunctionArguments* args) {
 RTCBuildQuality sceneQuality(BuildMode mode) {
     switch (mode) {
         case BuildMode::Low:
-        case BuildMode::Refit: return RTC_BUILD_QUALITY_LOW;
-        case BuildMode::Medium: return RTC_BUILD_QUALITY_MEDIUM;
+        case BuildMode::Refit:
+            return RTC_BUILD_QUALITY_LOW;
+        case BuildMode::Medium:
+            return RTC_BUILD_QUALITY_MEDIUM;
         case BuildMode::Static:
-        case BuildMode::High: return RTC_BUILD_QUALITY_HIGH;
+        case BuildMode::High:
+            return RTC_BUILD_QUALITY_HIGH;
     }
     return RTC_BUILD_QUALITY_MEDIUM;
 }
@@ -234,7 +248,9 @@ Shape makeShape(const PrimRecord& record) {
         for (int col = 0; col < 3; ++col) s.axes[col][row] = record.worldFromLocal.linear(row, col);
     }
     switch (record.kind) {
-        case ShapeKind::Sphere: s.half[0] = s.half[1] = s.half[2] = record.radius; break;
+        case ShapeKind::Sphere:
+            s.half[0] = s.half[1] = s.half[2] = record.radius;
+            break;
         case ShapeKind::Cylinder:
             s.half[0] = s.half[2] = record.radius;
             s.half[1] = record.height * 0.5f;
@@ -251,7 +267,8 @@ UserShapeScene::UserShapeScene(RTCDevice device, BuildMode mode) {
     rtcSetSceneFlags(scene_, mode == BuildMode::Static ? RTC_SCENE_FLAG_NONE : RTC_SCENE_FLAG_DYNAMIC);
     rtcSetSceneBuildQuality(scene_, sceneQuality(mode));
     geometry_ = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
-    rtcSetGeometryBuildQuality(geometry_, mode == BuildMode::Refit ? RTC_BUILD_QUALITY_REFIT : sceneQuality(mode));
+    rtcSetGeometryBuildQuality(geometry_,
+                               mode == BuildMode::Refit ? RTC_BUILD_QUALITY_REFIT : sceneQuality(mode));
     rtcSetGeometryBoundsFunction(geometry_, boundsCallback, nullptr);
     rtcSetGeometryIntersectFunction(geometry_, intersectCallback);
     rtcSetGeometryOccludedFunction(geometry_, occludedCallback);

@@ -30,7 +30,7 @@ enum class BuildMode { Static, Low, Medium, High, Refit };
 /// A shadow ray's `id` names the primitive it must skip (the convex shape it
 /// leaves from outside), or kNoSkip.
 class UserShapeScene {
-public:
+   public:
     static constexpr unsigned kNoSkip = RTC_INVALID_GEOMETRY_ID;
 
     UserShapeScene(RTCDevice device, BuildMode mode);
@@ -46,7 +46,7 @@ public:
     RTCScene handle() const { return scene_; }
     const Shape& shape(unsigned id) const { return shapes_[id]; }
 
-private:
+   private:
     RTCScene scene_ = nullptr;
     RTCGeometry geometry_ = nullptr;
     std::vector<Shape> shapes_;

@@ -12,7 +12,7 @@
 namespace f2 {
 
 class AtomicFile {
-public:
+   public:
     /// Opens a unique temporary file beside `path` (see createTemporaryBeside),
     /// or `path` itself if it is a device. Check ok() / error().
     explicit AtomicFile(std::string path);
@@ -31,7 +31,7 @@ public:
     /// any write failed, for example on a full disk or /dev/full.
     bool commit();
 
-private:
+   private:
     OutputTarget target_;
     std::string tempPath_, error_;
     std::FILE* file_ = nullptr;

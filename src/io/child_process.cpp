@@ -64,7 +64,8 @@ void drain(int& fd, std::string& kept) {
     for (;;) {
         ssize_t n = ::read(fd, buffer, sizeof buffer);
         if (n > 0) {
-            std::size_t room = ChildProcess::kMaxKeptOutput - std::min(kept.size(), ChildProcess::kMaxKeptOutput);
+            std::size_t room =
+                ChildProcess::kMaxKeptOutput - std::min(kept.size(), ChildProcess::kMaxKeptOutput);
             kept.append(buffer, std::min(room, std::size_t(n)));
             continue;
         }
@@ -83,7 +84,8 @@ ChildProcess::~ChildProcess() {
     closeFd(pidfd_);
 }
 
-bool ChildProcess::start(const std::string& program, const std::vector<std::string>& args, std::string& error) {
+bool ChildProcess::start(const std::string& program, const std::vector<std::string>& args,
+                         std::string& error) {
     int in[2] = {-1, -1}, out[2] = {-1, -1}, err[2] = {-1, -1};
     if (::pipe2(in, O_CLOEXEC) != 0 || ::pipe2(out, O_CLOEXEC) != 0 || ::pipe2(err, O_CLOEXEC) != 0) {
         error = std::string("cannot create a pipe: ") + std::strerror(errno);
@@ -135,7 +137,9 @@ bool ChildProcess::start(const std::string& program, const std::vector<std::stri
 }
 
 bool ChildProcess::pump(int blockMs, bool alsoInput) {
-    pollfd fds[4] = {{outPipe_, POLLIN, 0}, {errPipe_, POLLIN, 0}, {pidfd_, POLLIN, 0},
+    pollfd fds[4] = {{outPipe_, POLLIN, 0},
+                     {errPipe_, POLLIN, 0},
+                     {pidfd_, POLLIN, 0},
                      {alsoInput ? in_ : -1, POLLOUT, 0}};
     if (::poll(fds, 4, blockMs) <= 0) return false;  // timeout or a signal: the caller looks at its flag
     if (fds[0].revents) drain(outPipe_, out_);
@@ -143,7 +147,8 @@ bool ChildProcess::pump(int blockMs, bool alsoInput) {
     return fds[2].revents != 0;
 }
 
-ChildProcess::Io ChildProcess::writeInput(const void* data, std::size_t size, const std::atomic<bool>* cancel) {
+ChildProcess::Io ChildProcess::writeInput(const void* data, std::size_t size,
+                                          const std::atomic<bool>* cancel) {
     const auto* bytes = static_cast<const char*>(data);
     SigpipeGuard guard;
     while (size > 0) {
@@ -205,7 +210,8 @@ void ChildProcess::kill() {
 }
 
 std::string ChildProcess::describeExit() const {
-    if (WIFEXITED(status_)) return WEXITSTATUS(status_) == 0 ? "" : "exit status " + std::to_string(WEXITSTATUS(status_));
+    if (WIFEXITED(status_))
+        return WEXITSTATUS(status_) == 0 ? "" : "exit status " + std::to_string(WEXITSTATUS(status_));
     if (WIFSIGNALED(status_)) return "killed by signal " + std::to_string(WTERMSIG(status_));
     return "status " + std::to_string(status_);
 }

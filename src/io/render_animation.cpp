@@ -61,7 +61,8 @@ AnimationResult renderAnimation(const SceneDesc& scene, const AnimationRange& ra
             continue;
         }
         const double t = range.timeOf(f);
-        const FrameTimings timings = renderer.render(scene, t, view.at(scene, t), image, options.render, cancel);
+        const FrameTimings timings =
+            renderer.render(scene, t, view.at(scene, t), image, options.render, cancel);
         if (!timings.complete || cancelled()) return stop("");  // the image is partial: dropped
         result.renderMs += timings.totalMs();
         if (!sink.write(image, f, error, cancel)) return stop(error);

@@ -19,8 +19,9 @@ struct AnimationRange {
     std::int64_t first = 0, last = 0;   ///< output frame numbers, inclusive
     int sceneFps = 24, outputFps = 24;  ///< see sceneTimeOfOutputFrame
     double timeOffset = 0;              ///< added to every frame's time (a still at a fractional time)
-    int shardIndex = 0, shardCount = 1; ///< only frames ≡ shardIndex (mod shardCount): a render farm's worker
-    std::int64_t step = 1;              ///< every step-th frame from first (a quick preview)
+    int shardIndex = 0,
+        shardCount = 1;     ///< only frames ≡ shardIndex (mod shardCount): a render farm's worker
+    std::int64_t step = 1;  ///< every step-th frame from first (a quick preview)
 
     /// One image at scene time `t` (frames, may be fractional).
     static AnimationRange still(double t, int sceneFps);
@@ -50,7 +51,7 @@ struct AnimationOptions {
 struct AnimationResult {
     enum class Outcome { Finished, Cancelled, Failed };
     Outcome outcome = Outcome::Finished;
-    std::string error;  ///< why it failed (empty when cancelled)
+    std::string error;                              ///< why it failed (empty when cancelled)
     std::int64_t done = 0, skipped = 0, total = 0;  ///< as in AnimationProgress, at the end
     int threads = 0;                                ///< render threads used
     double renderMs = 0;                            ///< time spent rendering, summed over frames
@@ -58,9 +59,9 @@ struct AnimationResult {
 };
 
 /// Renders the frames of `range` (in order) of `scene` seen through `view`
-/// (the scene's moving camera, or a fixed one) into `sink`. Stops inside the current frame when `cancel` is raised (that frame
-/// is dropped) and abandons the sink, as on any error; `progress` (optional)
-/// is called, on this thread, after every frame.
+/// (the scene's moving camera, or a fixed one) into `sink`. Stops inside the current frame when `cancel` is
+/// raised (that frame is dropped) and abandons the sink, as on any error; `progress` (optional) is called, on
+/// this thread, after every frame.
 AnimationResult renderAnimation(const SceneDesc& scene, const AnimationRange& range, const FrameView& view,
                                 FrameSink& sink, const std::atomic<bool>* cancel,
                                 const std::function<void(const AnimationProgress&)>& progress = {},

@@ -11,13 +11,16 @@ namespace {
 constexpr std::size_t kWritesInFlight = 2;
 }
 
-PngSequenceSink::PngSequenceSink(FramePattern pattern, bool resume) : pattern_(std::move(pattern)), resume_(resume) {}
+PngSequenceSink::PngSequenceSink(FramePattern pattern, bool resume)
+    : pattern_(std::move(pattern)), resume_(resume) {}
 
 PngSequenceSink::~PngSequenceSink() { abandon(); }
 
 std::string PngSequenceSink::fileName(std::int64_t frame) const { return pattern_.format(frame); }
 
-bool PngSequenceSink::begin(const FrameFormat&, std::string&) { return true; }  // directories come with their frames
+bool PngSequenceSink::begin(const FrameFormat&, std::string&) {
+    return true;
+}  // directories come with their frames
 
 bool PngSequenceSink::makeDirectoryOf(const std::string& path, std::string& error) {
     const std::filesystem::path dir = std::filesystem::path(path).parent_path();

@@ -47,7 +47,7 @@ class PngSequenceSink : public FrameSink {
     bool resume_;
     std::deque<std::future<std::string>> writes_;  // each write's error, empty on success
     std::string error_, lastDirectory_;
-    std::string scannedDirectory_;             // the directory whose temporaries are listed below
+    std::string scannedDirectory_;            // the directory whose temporaries are listed below
     std::vector<std::string> leftoverNames_;  // file names there that look like temporaries
     std::int64_t completed_ = 0;
 };

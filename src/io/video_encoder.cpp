@@ -202,12 +202,12 @@ bool VideoEncoder::write(const Image& frame, std::string& error, const std::atom
     }
     // ffmpeg closed its input: it has failed. Let it finish saying why.
     ffmpeg_.closeInput();
-    if (ffmpeg_.wait(cancel) == ChildProcess::Io::Cancelled) return fail(VideoFailure::Cancelled, "interrupted", error);
+    if (ffmpeg_.wait(cancel) == ChildProcess::Io::Cancelled)
+        return fail(VideoFailure::Cancelled, "interrupted", error);
     std::string exit = ffmpeg_.describeExit();
     return fail(VideoFailure::Failed,
                 "cannot write '" + target_.path + "': ffmpeg stopped accepting frames" +
-                    (exit.empty() ? "" : " (" + exit + ")") +
-                    messageFrom("ffmpeg", ffmpeg_.standardError()),
+                    (exit.empty() ? "" : " (" + exit + ")") + messageFrom("ffmpeg", ffmpeg_.standardError()),
                 error);
 }
 
@@ -217,7 +217,8 @@ bool VideoEncoder::finish(std::string& error, const std::atomic<bool>* cancel) {
         return false;
     }
     ffmpeg_.closeInput();  // end of stream: ffmpeg flushes and writes the trailer
-    if (ffmpeg_.wait(cancel) == ChildProcess::Io::Cancelled) return fail(VideoFailure::Cancelled, "interrupted", error);
+    if (ffmpeg_.wait(cancel) == ChildProcess::Io::Cancelled)
+        return fail(VideoFailure::Cancelled, "interrupted", error);
     std::string exit = ffmpeg_.describeExit();
     if (!exit.empty())
         return fail(VideoFailure::Failed,
@@ -240,7 +241,8 @@ bool VideoEncoder::finish(std::string& error, const std::atomic<bool>* cancel) {
 bool VideoEncoder::checkResult(std::string& error, const std::atomic<bool>* cancel) {
     struct stat info {};
     if (::stat(tempPath_.c_str(), &info) != 0 || info.st_size == 0)
-        return fail(VideoFailure::Failed, "cannot write '" + target_.path + "': ffmpeg wrote an empty file", error);
+        return fail(VideoFailure::Failed, "cannot write '" + target_.path + "': ffmpeg wrote an empty file",
+                    error);
     // The frame count, where ffprobe is installed: a truncated file has fewer
     // or none. Packets are counted, not decoded: one packet per frame here.
     std::string ffprobe = findProgram("ffprobe");
@@ -262,8 +264,8 @@ bool VideoEncoder::checkResult(std::string& error, const std::atomic<bool>* canc
     if (frames != framesWritten_)
         return fail(VideoFailure::Failed,
                     "cannot write '" + target_.path + "': ffmpeg's video is broken: ffprobe " +
-                        (frames < 0 ? std::string("cannot read it") : "finds " + std::to_string(frames)) + " of " +
-                        std::to_string(framesWritten_) + " frames" + messageFrom("ffprobe", errors),
+                        (frames < 0 ? std::string("cannot read it") : "finds " + std::to_string(frames)) +
+                        " of " + std::to_string(framesWritten_) + " frames" + messageFrom("ffprobe", errors),
                     error);
     return true;
 }

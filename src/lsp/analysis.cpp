@@ -107,9 +107,13 @@ SymbolAt symbolAt(const Analysis& a, Position p) {
         if (!a.inDocument(span.loc) || !contains(span, lineIndex, byte, bom)) {
             // The part after `name.` belongs to the same object.
             if (a.inDocument(span.loc) && span.loc.line == p.line + 1) {
-                if (const auto suffix = partAfter(a, span); suffix && byte >= suffix->begin && byte <= suffix->end) {
+                if (const auto suffix = partAfter(a, span);
+                    suffix && byte >= suffix->begin && byte <= suffix->end) {
                     const std::string_view line = a.document.line(p.line);
-                    at = {SymbolAt::Kind::Part, object, suffix->part, {},
+                    at = {SymbolAt::Kind::Part,
+                          object,
+                          suffix->part,
+                          {},
                           {{p.line, utf16Length(line.substr(0, suffix->begin))},
                            {p.line, utf16Length(line.substr(0, suffix->end))}},
                           {}};
@@ -124,7 +128,8 @@ SymbolAt symbolAt(const Analysis& a, Position p) {
     // A variable (also inside the braces of a name such as s{i}), or the path of an /include.
     const std::string_view lineText = a.document.line(p.line);
     auto rangeInLine = [&](std::size_t begin, std::size_t end) {
-        return Range{{p.line, utf16Length(lineText.substr(0, begin))}, {p.line, utf16Length(lineText.substr(0, end))}};
+        return Range{{p.line, utf16Length(lineText.substr(0, begin))},
+                     {p.line, utf16Length(lineText.substr(0, end))}};
     };
     for (const VariableOccurrence& v : a.variables) {
         if (v.line == p.line && byte >= v.begin && byte <= v.end) {
@@ -134,7 +139,8 @@ SymbolAt symbolAt(const Analysis& a, Position p) {
             return at;
         }
     }
-    if (const auto include = includeOn(a.document, p.line); include && byte >= include->begin && byte <= include->end) {
+    if (const auto include = includeOn(a.document, p.line);
+        include && byte >= include->begin && byte <= include->end) {
         at.kind = SymbolAt::Kind::Include;
         at.range = rangeInLine(include->begin, include->end);
         at.text = include->path;
@@ -196,7 +202,8 @@ std::string_view objectKindName(ObjectKind kind) {
 }
 
 bool isValidName(std::string_view name) {
-    return !name.empty() && isNameStart(name.front()) && std::all_of(name.begin() + 1, name.end(), isNameChar);
+    return !name.empty() && isNameStart(name.front()) &&
+           std::all_of(name.begin() + 1, name.end(), isNameChar);
 }
 
 bool LanguageFeatures::knows(std::string_view command) const {

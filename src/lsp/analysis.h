@@ -42,11 +42,11 @@ Analysis analyze(std::string uri, TextDocument document);
 /// What is under a position.
 struct SymbolAt {
     enum class Kind { None, Command, Object, Part, Variable, Include } kind = Kind::None;
-    std::size_t object = 0;     ///< Object and Part: index into index.objects
-    int part = -1;              ///< Part: PartId index
-    std::string_view command;   ///< Command: its name
-    Range range;                ///< the token (or the name or part within it)
-    std::string text;           ///< Variable: its name; Include: the path as written
+    std::size_t object = 0;    ///< Object and Part: index into index.objects
+    int part = -1;             ///< Part: PartId index
+    std::string_view command;  ///< Command: its name
+    Range range;               ///< the token (or the name or part within it)
+    std::string text;          ///< Variable: its name; Include: the path as written
 };
 
 SymbolAt symbolAt(const Analysis& a, Position p);

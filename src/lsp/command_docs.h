@@ -9,22 +9,22 @@ namespace f2::lsp {
 
 /// What an argument of a command holds, for completion and hover.
 enum class ArgKind {
-    Number,      ///< any number (or an expression)
-    NewName,     ///< a name the command creates
-    Target,      ///< `name` or `name.part` (or `camera` where the language allows)
-    Object,      ///< an existing object's name
-    Part,        ///< body, head, lhand or rhand
-    Mode,        ///< an interpolation mode
-    Variable,    ///< a variable's name
-    Path,        ///< a file path
+    Number,         ///< any number (or an expression)
+    NewName,        ///< a name the command creates
+    Target,         ///< `name` or `name.part` (or `camera` where the language allows)
+    Object,         ///< an existing object's name
+    Part,           ///< body, head, lhand or rhand
+    Mode,           ///< an interpolation mode
+    Variable,       ///< a variable's name
+    Path,           ///< a file path
     PointOrTarget,  ///< /look_at: x y z, or a target
 };
 
 struct CommandDoc {
-    std::string_view name;     ///< "/robot"
-    std::string_view syntax;   ///< "/robot <name> <px> <py> <pz> [<rx> <ry> <rz>]"
-    std::string_view snippet;  ///< LSP snippet of the whole command
-    std::string_view meaning;  ///< a short explanation (Markdown)
+    std::string_view name;          ///< "/robot"
+    std::string_view syntax;        ///< "/robot <name> <px> <py> <pz> [<rx> <ry> <rz>]"
+    std::string_view snippet;       ///< LSP snippet of the whole command
+    std::string_view meaning;       ///< a short explanation (Markdown)
     std::span<const ArgKind> args;  ///< argument kinds; the last repeats for further arguments
 };
 

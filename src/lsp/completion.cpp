@@ -18,10 +18,10 @@ constexpr std::size_t kMaxNameItems = 1000;
 
 /// The token being typed: its index on the line and its text up to the cursor.
 struct Typing {
-    int index = 0;               ///< 0 = the command word
-    std::string_view partial;    ///< the token's bytes before the cursor
-    std::size_t begin = 0;       ///< byte where the token starts
-    std::string_view command;    ///< token 0 of the line
+    int index = 0;             ///< 0 = the command word
+    std::string_view partial;  ///< the token's bytes before the cursor
+    std::size_t begin = 0;     ///< byte where the token starts
+    std::string_view command;  ///< token 0 of the line
 };
 
 std::optional<Typing> typingAt(std::string_view line, std::size_t byte) {
@@ -76,10 +76,10 @@ void addParts(Json& items, const Analysis& a, std::string_view objectName, const
         if (o->object.name != objectName || !isModel(o->object.kind)) continue;
         for (const char* part : kPartNames) {
             const std::string text = std::string(prefix) + part;
-            items.push_back(item(text, kCompletionField,
-                                 std::string("part of ") + std::string(objectKindName(o->object.kind)) + " " +
-                                     o->object.name,
-                                 replace, text));
+            items.push_back(item(
+                text, kCompletionField,
+                std::string("part of ") + std::string(objectKindName(o->object.kind)) + " " + o->object.name,
+                replace, text));
         }
         return;
     }
@@ -88,21 +88,24 @@ void addParts(Json& items, const Analysis& a, std::string_view objectName, const
 /// Inside `( … )` or `{ … }`: the variables defined above, pi and the functions.
 Json expressionItems(const Analysis& a, Position p, std::string_view line, std::size_t byte) {
     std::size_t begin = byte;
-    while (begin > 0 && (std::isalnum(static_cast<unsigned char>(line[begin - 1])) || line[begin - 1] == '_')) --begin;
+    while (begin > 0 && (std::isalnum(static_cast<unsigned char>(line[begin - 1])) || line[begin - 1] == '_'))
+        --begin;
     const Range replace{{p.line, utf16Length(line.substr(0, begin))}, p};
     Json items = Json::array();
     std::vector<std::string> seen;
     for (const VariableOccurrence& v : a.variables) {
-        if (!v.definition || v.line > p.line || std::find(seen.begin(), seen.end(), v.name) != seen.end()) continue;
+        if (!v.definition || v.line > p.line || std::find(seen.begin(), seen.end(), v.name) != seen.end())
+            continue;
         seen.push_back(v.name);
-        items.push_back(item(v.name, kCompletionVariable,
-                             (v.loop ? "loop variable, line " : "variable, line ") + std::to_string(v.line + 1),
-                             replace, v.name));
+        items.push_back(
+            item(v.name, kCompletionVariable,
+                 (v.loop ? "loop variable, line " : "variable, line ") + std::to_string(v.line + 1), replace,
+                 v.name));
     }
     items.push_back(item("pi", kCompletionVariable, "3.14159…", replace, "pi"));
     for (std::string_view f : expressionFunctions()) {
-        items.push_back(item(f, kCompletionFunction, f == "atan2" ? "atan2(y, x), degrees" : "function", replace,
-                             std::string(f) + "($1)", true));
+        items.push_back(item(f, kCompletionFunction, f == "atan2" ? "atan2(y, x), degrees" : "function",
+                             replace, std::string(f) + "($1)", true));
     }
     return items;
 }
@@ -123,7 +126,8 @@ Json includeItems(const Analysis& a, Position p, std::string_view partial, std::
     const fs::path where = resolveInclude(a.path, directory.empty() ? "." : directory);
     constexpr int kMaxEntries = 200;
     int count = 0;
-    for (fs::directory_iterator it(where, ec), end; !ec && it != end && count < kMaxEntries; it.increment(ec)) {
+    for (fs::directory_iterator it(where, ec), end; !ec && it != end && count < kMaxEntries;
+         it.increment(ec)) {
         const std::string name = it->path().filename().string();
         if (name.starts_with('.')) continue;
         std::error_code typeError;
@@ -171,8 +175,7 @@ Json completion(const Analysis& a, Position p) {
 
     // After `name.`: the parts of that model.
     const std::size_t dot = typing->partial.find('.');
-    if (dot != std::string_view::npos &&
-        (kind == ArgKind::Target || kind == ArgKind::PointOrTarget)) {
+    if (dot != std::string_view::npos && (kind == ArgKind::Target || kind == ArgKind::PointOrTarget)) {
         const std::string_view name = typing->partial.substr(0, dot);
         addParts(items, a, name, replace, typing->partial.substr(0, dot + 1), lineNumber);
         return items;
@@ -188,8 +191,8 @@ Json completion(const Analysis& a, Position p) {
                 if (items.size() == kMaxNameItems) {
                     return {{"isIncomplete", true}, {"items", std::move(items)}};
                 }
-                items.push_back(item(o->object.name, kCompletionVariable, objectKindName(o->object.kind), replace,
-                                     o->object.name));
+                items.push_back(item(o->object.name, kCompletionVariable, objectKindName(o->object.kind),
+                                     replace, o->object.name));
             }
             if (language.cameraTarget && std::string_view("camera").starts_with(typing->partial) &&
                 doc->name != "/paint" && doc->name != "/material" && doc->name != "/look_at") {

@@ -85,13 +85,12 @@ std::string partHover(const Analysis& a, std::size_t index, int part) {
     if (!isModel(o.kind)) return text;
     const ModelDef& model = modelOf(o.kind);
     const ModelPart& mp = model.parts[static_cast<std::size_t>(part)];
-    const std::string parent =
-        mp.parent < 0 ? "the root" : kPartNames[static_cast<std::size_t>(mp.parent)];
+    const std::string parent = mp.parent < 0 ? "the root" : kPartNames[static_cast<std::size_t>(mp.parent)];
     text += "- pivot " + vec(mp.pivot) + " in " + parent + "'s frame\n";
     for (const ModelShape& s : model.shapes) {
         if (static_cast<int>(s.part) != part) continue;
-        text += "- " + shapeText(s.kind, s.size) + " centred at " + vec(s.centre) + (s.ownColor ? " (keeps its colour)" : "") +
-                "\n";
+        text += "- " + shapeText(s.kind, s.size) + " centred at " + vec(s.centre) +
+                (s.ownColor ? " (keeps its colour)" : "") + "\n";
     }
     const auto keys = keyCounts(a, index);
     text += "- keys: " + std::to_string(keys[static_cast<std::size_t>(part + 1)]) + "\n";
@@ -100,9 +99,11 @@ std::string partHover(const Analysis& a, std::size_t index, int part) {
 
 std::string variableHover(const Analysis& a, const std::string& name, int line) {
     const auto def = definitionOf(a.variables, name, line);
-    if (!def) return "**variable** `" + name + "`: not defined in this file (in an included file, or unknown)";
-    return "**" + std::string(def->loop ? "loop variable" : "variable") + "** `" + name + "`, defined at line " +
-           std::to_string(def->line + 1) + ":\n```f2\n" + std::string(a.document.line(def->line)) + "\n```";
+    if (!def)
+        return "**variable** `" + name + "`: not defined in this file (in an included file, or unknown)";
+    return "**" + std::string(def->loop ? "loop variable" : "variable") + "** `" + name +
+           "`, defined at line " + std::to_string(def->line + 1) + ":\n```f2\n" +
+           std::string(a.document.line(def->line)) + "\n```";
 }
 
 std::string includeHover(const Analysis& a, const std::string& path) {
@@ -122,7 +123,8 @@ Json hover(const Analysis& a, Position p) {
         case SymbolAt::Kind::Command: {
             const CommandDoc* doc = findCommandDoc(at.command);
             if (!doc) return nullptr;
-            return markdown("```f2\n" + std::string(doc->syntax) + "\n```\n" + std::string(doc->meaning), at.range);
+            return markdown("```f2\n" + std::string(doc->syntax) + "\n```\n" + std::string(doc->meaning),
+                            at.range);
         }
         case SymbolAt::Kind::Object:
             return markdown(objectHover(a, at.object), at.range);

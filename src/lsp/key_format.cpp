@@ -30,7 +30,8 @@ std::optional<KeyLine> keyLine(const TextDocument& doc, int index) {
     }
     KeyLine k;
     k.index = index;
-    for (int i = 0; i < tokens.count; ++i) k.tokens.push_back(tokens.tokens[static_cast<std::size_t>(i)].text);
+    for (int i = 0; i < tokens.count; ++i)
+        k.tokens.push_back(tokens.tokens[static_cast<std::size_t>(i)].text);
     const Token& last = tokens.tokens[static_cast<std::size_t>(tokens.count - 1)];
     const std::size_t after = static_cast<std::size_t>(last.column - 1) + last.text.size();
     if (const std::size_t hash = line.find('#', after); hash != std::string_view::npos) {

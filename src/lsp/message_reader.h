@@ -32,10 +32,10 @@ class MessageReader {
     bool readHeader(Item& item);
 
     std::string buffer_;
-    std::size_t start_ = 0;          ///< consumed prefix of buffer_
-    std::size_t bodyBytes_ = 0;      ///< length of the body being read
+    std::size_t start_ = 0;      ///< consumed prefix of buffer_
+    std::size_t bodyBytes_ = 0;  ///< length of the body being read
     bool inBody_ = false;
-    std::size_t skipBytes_ = 0;      ///< bytes of an oversized body still to drop
+    std::size_t skipBytes_ = 0;  ///< bytes of an oversized body still to drop
 };
 
 /// A body with its header, ready to write.

@@ -55,7 +55,8 @@ Range rangeOf(const Analysis& a, const VariableOccurrence& v) {
 Json variableReferences(const Analysis& a, const std::string& name, bool includeDeclaration) {
     Json out = Json::array();
     for (const VariableOccurrence& v : a.variables) {
-        if (v.name == name && (includeDeclaration || !v.definition)) out.push_back(location(a.uri, rangeOf(a, v)));
+        if (v.name == name && (includeDeclaration || !v.definition))
+            out.push_back(location(a.uri, rangeOf(a, v)));
     }
     return out;
 }

@@ -177,11 +177,13 @@ void Server::dispatchNotification(const std::string& method, const Json& params,
     if (!initialized_) return;  // the protocol says: drop notifications before initialize
     if (method == "textDocument/didOpen") {
         const Json& doc = params.at("textDocument");
-        open(doc.at("uri").get<std::string>(), doc.at("text").get<std::string>(), intMember(doc, "version"), out);
+        open(doc.at("uri").get<std::string>(), doc.at("text").get<std::string>(), intMember(doc, "version"),
+             out);
     } else if (method == "textDocument/didChange") {
         const std::string uri = uriOf(params);
         const auto it = documents_.find(uri);
-        if (it == documents_.end()) throw RequestError(kInvalidParams, "a change of a document that is not open");
+        if (it == documents_.end())
+            throw RequestError(kInvalidParams, "a change of a document that is not open");
         std::string text = it->second.document.text();
         for (const Json& change : params.at("contentChanges")) text = applyChange(text, change);
         open(uri, std::move(text), intMember(params.at("textDocument"), "version"), out);
@@ -235,7 +237,8 @@ void Server::unpublishOthers(const std::string& uri, const std::set<std::string>
     // An include fixed or removed: its old errors must not stay on screen.
     for (const std::string& other : it->second) {
         if (keep.contains(other)) continue;
-        out.push_back(notification("textDocument/publishDiagnostics", {{"uri", other}, {"diagnostics", Json::array()}}));
+        out.push_back(notification("textDocument/publishDiagnostics",
+                                   {{"uri", other}, {"diagnostics", Json::array()}}));
     }
 }
 

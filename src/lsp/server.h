@@ -39,7 +39,8 @@ class Server {
     const Analysis& document(const Json& params) const;
     void publish(const Analysis& a, std::vector<std::string>& out);
     /// Clears the diagnostics a document published on other files (its includes).
-    void unpublishOthers(const std::string& uri, const std::set<std::string>& keep, std::vector<std::string>& out);
+    void unpublishOthers(const std::string& uri, const std::set<std::string>& keep,
+                         std::vector<std::string>& out);
     void open(std::string uri, std::string text, int version, std::vector<std::string>& out);
 
     std::function<void(std::string_view)> log_;

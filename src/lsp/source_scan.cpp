@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <filesystem>
 
-
 namespace f2::lsp {
 
 namespace {
@@ -33,9 +32,9 @@ std::string_view firstWord(std::string_view line, std::size_t& end) {
 }  // namespace
 
 const std::vector<std::string_view>& expressionFunctions() {
-    static const std::vector<std::string_view> kFunctions = {"sin",  "cos",   "tan", "asin",  "acos", "atan",
-                                                             "atan2", "sqrt", "abs", "floor", "ceil", "exp",
-                                                             "log",  "round", "min", "max"};
+    static const std::vector<std::string_view> kFunctions = {"sin",   "cos",   "tan", "asin",  "acos", "atan",
+                                                             "atan2", "sqrt",  "abs", "floor", "ceil", "exp",
+                                                             "log",   "round", "min", "max"};
     return kFunctions;
 }
 

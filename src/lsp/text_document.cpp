@@ -13,9 +13,12 @@ constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
 std::size_t sequenceLength(std::string_view s, std::size_t i) {
     const auto b = static_cast<std::uint8_t>(s[i]);
     std::size_t len = 1;
-    if ((b & 0xE0) == 0xC0) len = 2;
-    else if ((b & 0xF0) == 0xE0) len = 3;
-    else if ((b & 0xF8) == 0xF0) len = 4;
+    if ((b & 0xE0) == 0xC0)
+        len = 2;
+    else if ((b & 0xF0) == 0xE0)
+        len = 3;
+    else if ((b & 0xF8) == 0xF0)
+        len = 4;
     if (len == 1 || i + len > s.size()) return 1;
     for (std::size_t k = 1; k < len; ++k) {
         if ((static_cast<std::uint8_t>(s[i + k]) & 0xC0) != 0x80) return 1;
@@ -101,9 +104,7 @@ Range TextDocument::range(int line, int byteColumn, int length) const {
     return {start, {start.line, start.character + utf16Length(text.substr(first, last - first))}};
 }
 
-Range TextDocument::lineRange(int index) const {
-    return {{index, 0}, {index, utf16Length(line(index))}};
-}
+Range TextDocument::lineRange(int index) const { return {{index, 0}, {index, utf16Length(line(index))}}; }
 
 long TextDocument::byteInLine(const Position& p) const {
     if (p.line < 0 || p.line >= lineCount() || p.character < 0) return -1;

@@ -66,7 +66,9 @@ int main(int argc, char** argv) {
     const std::string output = outputPath(argc, argv);
     if (mode == "enospc") {
         readAllInput();
-        writeFile(output, std::string("\0\0\0\x20" "ftyp", 8));  // the start of an MP4, no more
+        writeFile(output, std::string("\0\0\0\x20"
+                                      "ftyp",
+                                      8));  // the start of an MP4, no more
         std::fprintf(stderr, "[out#0/mp4 @ 0x5563] Error writing trailer: No space left on device\n");
         return 0;
     }
@@ -78,7 +80,8 @@ int main(int argc, char** argv) {
     if (mode == "stall") {
         writeFile(env("F2_FAKE_FFMPEG_PIDFILE"), std::to_string(::getpid()) + "\n");
         const int capacity = ::fcntl(STDIN_FILENO, F_GETPIPE_SZ);
-        for (int queued = 0; ::ioctl(STDIN_FILENO, FIONREAD, &queued) == 0 && queued < capacity;) pauseBriefly();
+        for (int queued = 0; ::ioctl(STDIN_FILENO, FIONREAD, &queued) == 0 && queued < capacity;)
+            pauseBriefly();
         writeFile(env("F2_FAKE_FFMPEG_READY"), "full\n");
         if (!env("F2_FAKE_FFMPEG_STOP").empty()) ::raise(SIGSTOP);
         for (;;) ::pause();

@@ -12,8 +12,8 @@
 //       (a rendered scene, not a blank or flat image)
 #include <algorithm>
 #include <cstdio>
-#include <set>
 #include <cstdlib>
+#include <set>
 #include <string>
 
 #include "io/png_writer.h"
@@ -90,13 +90,14 @@ int match(const Image& a, const Image& b, Rgb8 bg, int tolerance, long maxOff) {
         bool fa = !(a.pixels[i] == bg), fb = !(b.pixels[i] == bg);
         foreground += fa;
         if (fa != fb && coverage++ < 5)
-            std::printf("  coverage differs at (%zu, %zu)\n", i % std::size_t(a.width), i / std::size_t(a.width));
+            std::printf("  coverage differs at (%zu, %zu)\n", i % std::size_t(a.width),
+                        i / std::size_t(a.width));
         int d = channelDiff(a.pixels[i], b.pixels[i]);
         off += d > tolerance;
         maximum = std::max(maximum, d);
     }
-    std::printf("%ld foreground pixels; coverage differs in %ld; %ld differ by more than %d (max %d)\n", foreground,
-                coverage, off, tolerance, maximum);
+    std::printf("%ld foreground pixels; coverage differs in %ld; %ld differ by more than %d (max %d)\n",
+                foreground, coverage, off, tolerance, maximum);
     if (foreground == 0) return std::puts("FAIL: no foreground at all"), 1;
     if (coverage > 0) return std::puts("FAIL: the images cover different pixels"), 1;
     if (off > maxOff) return std::printf("FAIL: more than %ld pixels beyond the tolerance\n", maxOff), 1;
@@ -143,11 +144,13 @@ int colours(const Image& a, long minimum) {
 int main(int argc, char** argv) {
     std::string mode = argc > 1 ? argv[1] : "";
     bool known = (mode == "iou" && argc == 8) || (mode == "match" && argc == 9) ||
-                 ((mode == "aa" || mode == "diff" || mode == "same") && argc == 4) || (mode == "colours" && argc == 4);
+                 ((mode == "aa" || mode == "diff" || mode == "same") && argc == 4) ||
+                 (mode == "colours" && argc == 4);
     if (!known) {
-        std::fprintf(stderr,
-                     "usage: image_compare iou A B R G B MIN | match A B R G B TOL MAXOFF | aa PLAIN AA | diff A B | "
-                     "same A B | colours A MIN\n");
+        std::fprintf(
+            stderr,
+            "usage: image_compare iou A B R G B MIN | match A B R G B TOL MAXOFF | aa PLAIN AA | diff A B | "
+            "same A B | colours A MIN\n");
         return 2;
     }
     if (mode == "colours") {
@@ -163,7 +166,8 @@ int main(int argc, char** argv) {
     if (mode == "iou" || mode == "match") {
         Rgb8 bg{std::uint8_t(std::atoi(argv[4])), std::uint8_t(std::atoi(argv[5])),
                 std::uint8_t(std::atoi(argv[6]))};
-        return mode == "iou" ? iou(a, b, bg, std::atof(argv[7])) : match(a, b, bg, std::atoi(argv[7]), std::atol(argv[8]));
+        return mode == "iou" ? iou(a, b, bg, std::atof(argv[7]))
+                             : match(a, b, bg, std::atoi(argv[7]), std::atol(argv[8]));
     }
     if (mode == "same") return same(a, b);
     return mode == "aa" ? antialias(a, b) : diff(a, b);

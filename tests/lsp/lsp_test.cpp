@@ -2,7 +2,6 @@
 // changes, and the features whose replies the protocol test does not cover
 // (symbols, folding, key alignment, command completion, robustness).
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
 #include <filesystem>
@@ -92,7 +91,9 @@ TEST(Positions, CountUtf16Units) {
     EXPECT_EQ(utf16Length("\xE2\x82\xAC"), 1);      // €: 3 bytes, 1 unit
     EXPECT_EQ(utf16Length("\xF0\x9F\x98\x80"), 2);  // 😀: 4 bytes, a surrogate pair
     EXPECT_EQ(utf16Length("\xFF\x80"), 2);          // invalid bytes: one unit each
-    const std::string line = "a\xF0\x9F\x98\x80" "b";
+    const std::string line =
+        "a\xF0\x9F\x98\x80"
+        "b";
     EXPECT_EQ(byteOffsetOfUtf16(line, 1), 1u);
     EXPECT_EQ(byteOffsetOfUtf16(line, 2), 1u);  // inside the pair: its start
     EXPECT_EQ(byteOffsetOfUtf16(line, 3), 5u);
@@ -127,7 +128,8 @@ TEST(Server, HandlesALargeDocument) {
     // 100,000 objects and keys: every request answers (no size-dependent failure).
     std::string text = "/amb_light 1\n";
     for (int i = 0; i < 50'000; ++i) {
-        text += "/sphere s" + std::to_string(i) + " 1 " + std::to_string(i) + " 0 0\n/key 1 s" + std::to_string(i) + "\n";
+        text += "/sphere s" + std::to_string(i) + " 1 " + std::to_string(i) + " 0 0\n/key 1 s" +
+                std::to_string(i) + "\n";
     }
     const Analysis a = analysed(text);
     EXPECT_TRUE(a.result.ok());
@@ -147,13 +149,15 @@ TEST(Server, HandlesALargeDocument) {
 
 TEST(Changes, ApplyRangesInUtf16Units) {
     const std::string text = "/paint \xF0\x9F\x98\x80 1\n/fps 24\n";
-    const Json change = {{"range", {{"start", {{"line", 0}, {"character", 7}}}, {"end", {{"line", 0}, {"character", 9}}}}},
-                         {"text", "s"}};
+    const Json change = {
+        {"range", {{"start", {{"line", 0}, {"character", 7}}}, {"end", {{"line", 0}, {"character", 9}}}}},
+        {"text", "s"}};
     EXPECT_EQ(applyChange(text, change), "/paint s 1\n/fps 24\n");
     const Json whole = {{"text", "/fps 1"}};
     EXPECT_EQ(applyChange(text, whole), "/fps 1");
-    const Json reversed = {{"range", {{"start", {{"line", 1}, {"character", 0}}}, {"end", {{"line", 0}, {"character", 0}}}}},
-                           {"text", ""}};
+    const Json reversed = {
+        {"range", {{"start", {{"line", 1}, {"character", 0}}}, {"end", {{"line", 0}, {"character", 0}}}}},
+        {"text", ""}};
     EXPECT_THROW(applyChange(text, reversed), RequestError);
 }
 
@@ -190,7 +194,8 @@ TEST(Outline, SymbolsListObjectsPartsCameraAndLights) {
 }
 
 TEST(Outline, FoldsRepeatBlocksKeepingEndVisible) {
-    const Analysis a = analysed("/repeat i 1 3\n  /sphere s{i} 1 (i) 0 0\n  /repeat j 1 2\n    /fps 1\n  /end\n/end\n");
+    const Analysis a =
+        analysed("/repeat i 1 3\n  /sphere s{i} 1 (i) 0 0\n  /repeat j 1 2\n    /fps 1\n  /end\n/end\n");
     EXPECT_EQ(foldingRanges(a), Json::parse(R"([{"startLine":2,"endLine":3,"kind":"region"},
                                                 {"startLine":0,"endLine":4,"kind":"region"}])"));
 }
@@ -216,7 +221,8 @@ TEST(KeyFormat, AlignsRunsOfKeysIntoColumns) {
 }
 
 TEST(Hover, PrimitiveSizeCommandSyntaxAndBrokenScenes) {
-    const Analysis a = analysed("/amb_light 1\n/box crate 10 20 30 1 2 3\n/key 4 crate 0 0 0 0 90 0\n/fps x\n");
+    const Analysis a =
+        analysed("/amb_light 1\n/box crate 10 20 30 1 2 3\n/key 4 crate 0 0 0 0 90 0\n/fps x\n");
     const Json onName = hover(a, {2, 9});
     ASSERT_TRUE(onName.is_object());
     const std::string text = onName["contents"]["value"];
@@ -233,7 +239,7 @@ TEST(Hover, PrimitiveSizeCommandSyntaxAndBrokenScenes) {
 // Second edition (SPEC 9.4, 9.5): variables and includes are found in the text.
 constexpr const char* kLoops =
     "/let n 3\n"                                 // 0
-    "/repeat i 1 (n)  # (ignored) \n"           // 1
+    "/repeat i 1 (n)  # (ignored) \n"            // 1
     "  /sphere s{i} 10 (i * 30 + sin(n)) 0 0\n"  // 2
     "/end\n"                                     // 3
     "/let n (n + 1)\n"                           // 4
@@ -246,7 +252,8 @@ TEST(Variables, FoundInTheText) {
     for (const VariableOccurrence& v : all) {
         seen.push_back(std::to_string(v.line) + ":" + v.name + (v.definition ? "=" : ""));
     }
-    EXPECT_EQ(seen, (std::vector<std::string>{"0:n=", "1:i=", "1:n", "2:i", "2:i", "2:n", "4:n=", "4:n", "5:n"}));
+    EXPECT_EQ(seen,
+              (std::vector<std::string>{"0:n=", "1:i=", "1:n", "2:i", "2:i", "2:n", "4:n=", "4:n", "5:n"}));
     EXPECT_EQ(definitionOf(all, "n", 5)->line, 4);
     EXPECT_EQ(definitionOf(all, "n", 2)->line, 0);
     EXPECT_TRUE(definitionOf(all, "i", 2)->loop);
@@ -290,9 +297,11 @@ TEST(Includes, DefinitionHoverAndPathCompletion) {
     std::ofstream(dir / "parts" / "floor.f2") << "/box floor 10 10 10 0 0 0\n";
     std::ofstream(dir / "parts" / "notes.txt") << "x";
     const std::string main = (dir / "main.f2").string();
-    const Analysis a = analyze(uriFromPath(main), TextDocument("/include \"parts/floor.f2\"\n/include parts/\n", 1));
+    const Analysis a =
+        analyze(uriFromPath(main), TextDocument("/include \"parts/floor.f2\"\n/include parts/\n", 1));
     EXPECT_EQ(definition(a, {0, 12}), location(uriFromPath((dir / "parts" / "floor.f2").string()), Range{}));
-    EXPECT_EQ(hover(a, {0, 12})["contents"]["value"], "**include** `" + (dir / "parts" / "floor.f2").string() + "`");
+    EXPECT_EQ(hover(a, {0, 12})["contents"]["value"],
+              "**include** `" + (dir / "parts" / "floor.f2").string() + "`");
     const Json items = completion(a, {1, 15});
     ASSERT_EQ(items.size(), 1u);  // floor.f2; not the .txt
     EXPECT_EQ(items[0]["label"], "floor.f2");
@@ -314,7 +323,8 @@ TEST(Includes, DiagnosticsInAnIncludedFileAreItsOwn) {
     ASSERT_EQ(published[1]["diagnostics"].size(), 1u);
     EXPECT_EQ(published[1]["diagnostics"][0]["range"], toJson(Range{{2, 7}, {2, 10}}));
     // The object created in the included file: definition goes there.
-    EXPECT_EQ(definition(a, {2, 8}), location(uriFromPath((dir / "part.f2").string()), Range{{1, 8}, {1, 12}}));
+    EXPECT_EQ(definition(a, {2, 8}),
+              location(uriFromPath((dir / "part.f2").string()), Range{{1, 8}, {1, 12}}));
     fs::remove_all(dir);
 }
 
@@ -335,15 +345,16 @@ TEST(Includes, FixedIncludeErrorsAreClearedOnSave) {
         }
         return found;
     };
-    const auto opened = server.handle(Json({{"method", "textDocument/didOpen"},
-                                            {"params",
-                                             {{"textDocument",
-                                               {{"uri", mainUri}, {"version", 1}, {"text", "/include part.f2\n"}}}}}})
-                                          .dump());
+    const auto opened = server.handle(
+        Json({{"method", "textDocument/didOpen"},
+              {"params",
+               {{"textDocument", {{"uri", mainUri}, {"version", 1}, {"text", "/include part.f2\n"}}}}}})
+            .dump());
     EXPECT_EQ(diagnosticsOf(opened, partUri).size(), 1u);
     std::ofstream(dir / "part.f2") << "/fps 24\n";
     const auto saved = server.handle(
-        Json({{"method", "textDocument/didSave"}, {"params", {{"textDocument", {{"uri", partUri}}}}}}).dump());
+        Json({{"method", "textDocument/didSave"}, {"params", {{"textDocument", {{"uri", partUri}}}}}})
+            .dump());
     EXPECT_EQ(diagnosticsOf(saved, partUri), Json::array());
     fs::remove_all(dir);
 }
@@ -388,9 +399,11 @@ TEST(Server, AnswersGarbageWithErrorsAndNeverThrows) {
     Server server([&](std::string_view line) { logged.emplace_back(line); });
     EXPECT_EQ(Json::parse(server.handle("[]")[0])["error"]["code"], kInvalidRequest);
     EXPECT_EQ(Json::parse(server.handle("{\"id\":1,\"method\":\"initialize\"}")[0])["id"], 1);
-    EXPECT_EQ(Json::parse(server.handle("{\"id\":{},\"method\":\"x\"}")[0])["error"]["code"], kInvalidRequest);
-    const auto noDoc = server.handle(
-        body({{"id", 2}, {"method", "textDocument/hover"}, {"params", {{"textDocument", {{"uri", "file:///x"}}}}}}));
+    EXPECT_EQ(Json::parse(server.handle("{\"id\":{},\"method\":\"x\"}")[0])["error"]["code"],
+              kInvalidRequest);
+    const auto noDoc = server.handle(body({{"id", 2},
+                                           {"method", "textDocument/hover"},
+                                           {"params", {{"textDocument", {{"uri", "file:///x"}}}}}}));
     EXPECT_EQ(Json::parse(noDoc[0])["error"]["code"], kInvalidParams);
     EXPECT_TRUE(server.handle(body({{"method", "textDocument/didChange"}, {"params", 5}})).empty());
     EXPECT_FALSE(logged.empty());
@@ -400,29 +413,29 @@ TEST(Server, AnswersGarbageWithErrorsAndNeverThrows) {
         "{\"uri\":\"u\",\"version\":1,\"text\":\"/fps \xFF\xFE\"}}}");
     ASSERT_EQ(open.size(), 1u);
     EXPECT_EQ(Json::parse(open[0])["error"]["code"], kParseError);
-    const auto control = server.handle(body(
-        {{"method", "textDocument/didOpen"},
-         {"params", {{"textDocument", {{"uri", "u"}, {"version", 1}, {"text", "/fps \x01"}}}}}}));
+    const auto control = server.handle(
+        body({{"method", "textDocument/didOpen"},
+              {"params", {{"textDocument", {{"uri", "u"}, {"version", 1}, {"text", "/fps \x01"}}}}}}));
     ASSERT_EQ(control.size(), 1u);
     EXPECT_NE(control[0].find("expected a number, got '\\\\x01'"), std::string::npos) << control[0];
-    const auto huge = server.handle(body({{"id", 3},
-                                          {"method", "textDocument/completion"},
-                                          {"params",
-                                           {{"textDocument", {{"uri", "u"}}},
-                                            {"position", {{"line", 1e300}, {"character", -1}}}}}}));
+    const auto huge = server.handle(
+        body({{"id", 3},
+              {"method", "textDocument/completion"},
+              {"params",
+               {{"textDocument", {{"uri", "u"}}}, {"position", {{"line", 1e300}, {"character", -1}}}}}}));
     EXPECT_EQ(Json::parse(huge[0])["error"]["code"], kInvalidParams);
-    const auto negative = server.handle(body({{"id", 4},
-                                              {"method", "textDocument/hover"},
-                                              {"params",
-                                               {{"textDocument", {{"uri", "u"}}},
-                                                {"position", {{"line", -5}, {"character", -1}}}}}}));
+    const auto negative = server.handle(body(
+        {{"id", 4},
+         {"method", "textDocument/hover"},
+         {"params", {{"textDocument", {{"uri", "u"}}}, {"position", {{"line", -5}, {"character", -1}}}}}}));
     EXPECT_TRUE(Json::parse(negative[0])["result"].is_null());
     // Random bytes: every reply is valid JSON.
     std::mt19937 rng(7);
     for (int n = 0; n < 2000; ++n) {
         std::string junk(static_cast<std::size_t>(rng() % 64), '\0');
         for (char& c : junk) c = "{}[]\":,0123 abcnull-\\u"[rng() % 22];
-        for (const std::string& reply : server.handle(junk)) EXPECT_FALSE(Json::parse(reply, nullptr, false).is_discarded());
+        for (const std::string& reply : server.handle(junk))
+            EXPECT_FALSE(Json::parse(reply, nullptr, false).is_discarded());
     }
 }
 
@@ -434,7 +447,8 @@ TEST(Server, ExitCodeFollowsShutdown) {
     Server b;
     b.handle(body({{"id", 1}, {"method", "initialize"}}));
     EXPECT_EQ(Json::parse(b.handle(body({{"id", 2}, {"method", "shutdown"}}))[0])["result"], nullptr);
-    EXPECT_EQ(Json::parse(b.handle(body({{"id", 3}, {"method", "shutdown"}}))[0])["error"]["code"], kInvalidRequest);
+    EXPECT_EQ(Json::parse(b.handle(body({{"id", 3}, {"method", "shutdown"}}))[0])["error"]["code"],
+              kInvalidRequest);
     b.handle(body({{"method", "exit"}}));
     EXPECT_EQ(b.exitCode(), 0);
 }

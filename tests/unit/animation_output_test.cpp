@@ -54,7 +54,8 @@ TEST(FrameTime, OutputFramesRoundTripThroughSceneTime) {
     for (int sceneFps : {1, 12, 24, 25, 30, 60})
         for (int outputFps : {1, 7, 10, 12, 24, 29, 30, 60, 1000})
             for (std::int64_t i : {0LL, 1LL, 2LL, 3LL, 239LL, 1000LL, 123456LL, 9'999'999LL})
-                ASSERT_EQ(outputFrameAt(sceneTimeOfOutputFrame(i, sceneFps, outputFps), sceneFps, outputFps), i)
+                ASSERT_EQ(outputFrameAt(sceneTimeOfOutputFrame(i, sceneFps, outputFps), sceneFps, outputFps),
+                          i)
                     << i << " at " << sceneFps << " -> " << outputFps;
     EXPECT_EQ(outputFrameAt(240, 24, 60), 600);  // the demo's last frame at 60 fps
     EXPECT_EQ(outputFrameAt(11, 12, 24), 22);
@@ -80,7 +81,8 @@ class RecordingSink : public FrameSink {
         return true;
     }
     bool alreadyDone(std::int64_t frame) override { return done.count(frame) != 0; }
-    bool write(const Image& image, std::int64_t frame, std::string& error, const std::atomic<bool>*) override {
+    bool write(const Image& image, std::int64_t frame, std::string& error,
+               const std::atomic<bool>*) override {
         calls.push_back("write " + std::to_string(frame));
         if (frame == cancelAt) cancelFlag->store(true);
         if (frame == failAt) {
@@ -113,8 +115,9 @@ TEST(RenderAnimation, RendersEachFrameInOrderAtItsTime) {
     AnimationRange range{1, 5, 24, 60};  // 60 fps output of a 24 fps scene: frame i at t = 0.4 i
     RecordingSink sink;
     std::vector<std::int64_t> progress;
-    const AnimationResult result = renderAnimation(scene, range, FrameView::fixedCamera(camera), sink, nullptr,
-                                                   [&](const AnimationProgress& p) { progress.push_back(p.done); });
+    const AnimationResult result =
+        renderAnimation(scene, range, FrameView::fixedCamera(camera), sink, nullptr,
+                        [&](const AnimationProgress& p) { progress.push_back(p.done); });
     EXPECT_EQ(result.outcome, AnimationResult::Outcome::Finished) << result.error;
     EXPECT_EQ(result.done, 5);
     EXPECT_EQ(result.total, 5);
@@ -122,7 +125,7 @@ TEST(RenderAnimation, RendersEachFrameInOrderAtItsTime) {
     EXPECT_EQ(sink.format.fps, 60);
     EXPECT_EQ(sink.format.width, 32);
     EXPECT_EQ(sink.calls, (std::vector<std::string>{"begin", "write 1", "write 2", "write 3", "write 4",
-                                                     "write 5", "finish"}));
+                                                    "write 5", "finish"}));
     EXPECT_EQ(progress, (std::vector<std::int64_t>{1, 2, 3, 4, 5, 5}));
     Renderer renderer(1);
     for (auto& [frame, image] : sink.written) {
@@ -139,7 +142,8 @@ TEST(RenderAnimation, AShardRendersEveryNthFrameAndSkipsFinishedOnes) {
     EXPECT_EQ(range.count(), 4);
     RecordingSink sink;
     sink.done = {7};
-    const AnimationResult result = renderAnimation(scene, range, FrameView::fixedCamera(Camera::fromDesc(scene.camera)), sink, nullptr);
+    const AnimationResult result =
+        renderAnimation(scene, range, FrameView::fixedCamera(Camera::fromDesc(scene.camera)), sink, nullptr);
     EXPECT_EQ(result.outcome, AnimationResult::Outcome::Finished);
     EXPECT_EQ(sink.calls, (std::vector<std::string>{"begin", "write 4", "write 10", "write 13", "finish"}));
     EXPECT_EQ(result.skipped, 1);
@@ -165,7 +169,8 @@ TEST(RenderAnimation, AStepRendersEveryStepthFrameAlsoInAShard) {
                     const AnimationRange r{first, last, 24, 24, 0, n - 1, n, step};
                     std::int64_t expected = 0;
                     for (std::int64_t f = first; f <= last; f += step) expected += r.inShard(f);
-                    EXPECT_EQ(r.count(), expected) << first << "-" << last << ":" << step << " shard " << n - 1 << "/" << n;
+                    EXPECT_EQ(r.count(), expected)
+                        << first << "-" << last << ":" << step << " shard " << n - 1 << "/" << n;
                 }
     EXPECT_EQ((AnimationRange{0, 10, 24, 24, 0, 0, 1, 4}.lastRendered()), 8);
 }
@@ -177,7 +182,8 @@ TEST(RenderAnimation, CancelAndErrorsAbandonTheSink) {
     RecordingSink cancelled;
     cancelled.cancelFlag = &cancel;
     cancelled.cancelAt = 1;
-    AnimationResult result = renderAnimation(scene, {0, 9, 24, 24}, FrameView::fixedCamera(camera), cancelled, &cancel);
+    AnimationResult result =
+        renderAnimation(scene, {0, 9, 24, 24}, FrameView::fixedCamera(camera), cancelled, &cancel);
     EXPECT_EQ(result.outcome, AnimationResult::Outcome::Cancelled);
     EXPECT_TRUE(result.error.empty());
     EXPECT_EQ(cancelled.calls, (std::vector<std::string>{"begin", "write 0", "write 1", "abandon"}));
@@ -195,7 +201,8 @@ TEST(RenderAnimation, AStillIsOneFrameAtAFractionalTime) {
     const SceneDesc scene = test::sceneFromText(kMovingBall);
     const Camera camera = Camera::fromDesc(scene.camera);
     RecordingSink sink;
-    const AnimationResult result = renderAnimation(scene, AnimationRange::still(2.75, 24), FrameView::fixedCamera(camera), sink, nullptr);
+    const AnimationResult result = renderAnimation(scene, AnimationRange::still(2.75, 24),
+                                                   FrameView::fixedCamera(camera), sink, nullptr);
     ASSERT_EQ(result.outcome, AnimationResult::Outcome::Finished);
     ASSERT_EQ(sink.written.size(), 1u);
     Image expected;
@@ -231,7 +238,8 @@ TEST_F(OutputDir, SequenceMakesTheDirectoryOfEveryFrame) {
     auto pattern = parseFramePattern((dir_ / "out_%d/f.png").string(), error);
     ASSERT_TRUE(pattern) << error;
     PngSequenceSink sink(*pattern);
-    const AnimationResult result = renderAnimation(scene, {0, 3, 24, 24}, FrameView::fixedCamera(Camera::fromDesc(scene.camera)), sink, nullptr);
+    const AnimationResult result = renderAnimation(
+        scene, {0, 3, 24, 24}, FrameView::fixedCamera(Camera::fromDesc(scene.camera)), sink, nullptr);
     ASSERT_EQ(result.outcome, AnimationResult::Outcome::Finished) << result.error;
     EXPECT_EQ(result.done, 4);
     for (int f = 0; f <= 3; ++f) {
@@ -323,7 +331,7 @@ TEST_F(OutputDir, ALinkIsFollowedAndTheFileItNamesReplaced) {
     fs::create_directory(dir_ / "real");
     std::ofstream(dir_ / "real" / "f.txt") << "old";
     fs::create_symlink("real/f.txt", dir_ / "link.txt");
-    fs::create_symlink("link.txt", dir_ / "link2.txt");        // a chain
+    fs::create_symlink("link.txt", dir_ / "link2.txt");         // a chain
     fs::create_symlink("real/new.txt", dir_ / "dangling.txt");  // names a file not there yet
     for (const char* name : {"link2.txt", "dangling.txt"}) {
         AtomicFile f((dir_ / name).string());

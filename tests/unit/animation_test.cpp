@@ -192,7 +192,8 @@ TEST(Animation, DemoSceneStoryKeepsEveryoneInFrameAndLastsTenSeconds) {
             ASSERT_GT(local.z, 0) << "frame " << t << " primitive " << i;
             float x = local.x / local.z * camera.distance, y = local.y / local.z * camera.distance;
             EXPECT_LT(std::fabs(x), 0.5f) << "frame " << t << " primitive " << i;
-            EXPECT_LT(std::fabs(y), 0.5f * camera.height / camera.width) << "frame " << t << " primitive " << i;
+            EXPECT_LT(std::fabs(y), 0.5f * camera.height / camera.width)
+                << "frame " << t << " primitive " << i;
         }
     }
 }

@@ -2,6 +2,8 @@
 // primitive returns (nearest hit and any-hit), for random scenes and for the
 // degenerate layouts a per-frame rebuild can meet (empty, one primitive,
 // coincident primitives, an exponentially stretched line).
+#include "core/geometry/bvh.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,7 +15,6 @@
 #include <utility>
 #include <vector>
 
-#include "core/geometry/bvh.h"
 #include "core/geometry/bvh_packet.h"
 #include "core/render/camera.h"
 #include "test_scenes.h"
@@ -81,15 +82,16 @@ std::pair<int, std::uint64_t> inspectTree(const Bvh& bvh) {
 }
 
 /// Compares one ray's Bvh::intersect with brute force; true when they agree.
-::testing::AssertionResult agrees(const std::vector<Primitive>& prims, const Bvh& bvh, const Ray& ray, float tMin,
-                                  float tMax) {
+::testing::AssertionResult agrees(const std::vector<Primitive>& prims, const Bvh& bvh, const Ray& ray,
+                                  float tMin, float tMax) {
     Brute b = bruteNearest(prims, ray, tMin, tMax);
     HitRecord hit;
     bool found = bvh.intersect(ray, tMin, tMax, hit);
     auto describe = [&] {
         return ::testing::Message() << " ray " << ray.origin << " dir " << ray.direction << " tMin " << tMin
-                                    << " tMax " << tMax << "; brute " << b.found << " prim " << b.primitive << " t "
-                                    << b.t << "; bvh " << found << " prim " << hit.primitive << " t " << hit.t;
+                                    << " tMax " << tMax << "; brute " << b.found << " prim " << b.primitive
+                                    << " t " << b.t << "; bvh " << found << " prim " << hit.primitive << " t "
+                                    << hit.t;
     };
     if (found != b.found) return ::testing::AssertionFailure() << "hit/miss differs" << describe();
     if (!found) return ::testing::AssertionSuccess();
@@ -103,7 +105,8 @@ std::pair<int, std::uint64_t> inspectTree(const Bvh& bvh) {
             !intersectPrimitive(prims[hit.primitive], ray, tMin, tMax, t, face) || t != b.t)
             return ::testing::AssertionFailure() << "primitive differs" << describe();
     }
-    if (!(hit.t > tMin && hit.t < tMax)) return ::testing::AssertionFailure() << "t out of range" << describe();
+    if (!(hit.t > tMin && hit.t < tMax))
+        return ::testing::AssertionFailure() << "t out of range" << describe();
     return ::testing::AssertionSuccess();
 }
 
@@ -118,7 +121,8 @@ std::vector<Primitive> randomScene(std::mt19937& rng, int count, float spread) {
                                                   : Vec3{2 * dim(), 2 * dim(), 2 * dim()};
         // A fifth of them unrotated, so axis-aligned faces meet axis-aligned rays.
         Vec3 rot = u01(rng) < 0.2f ? Vec3{} : Vec3{angle(rng), angle(rng), angle(rng)};
-        prims.push_back(makePrimitive(kind, size, Transform::fromPose({coord(rng), coord(rng), coord(rng)}, rot)));
+        prims.push_back(
+            makePrimitive(kind, size, Transform::fromPose({coord(rng), coord(rng), coord(rng)}, rot)));
     }
     return prims;
 }
@@ -162,7 +166,8 @@ TEST(Bvh, EmptyScene) {
     EXPECT_FALSE(bvh.occluded(ray, 0, kInfinity));
     EXPECT_TRUE(bvh.nodes().empty());
     // Rebuilding over nothing after a real scene forgets the old one.
-    std::vector<Primitive> one{makePrimitive(ShapeKind::Sphere, {1, 0, 0}, Transform::fromPose({0, 0, 5}, {}))};
+    std::vector<Primitive> one{
+        makePrimitive(ShapeKind::Sphere, {1, 0, 0}, Transform::fromPose({0, 0, 5}, {}))};
     bvh.build(one);
     EXPECT_TRUE(bvh.intersect(ray, 0, kInfinity, hit));
     bvh.build({});
@@ -172,7 +177,8 @@ TEST(Bvh, EmptyScene) {
 
 TEST(Bvh, SinglePrimitive) {
     // Box 2x2x2 at (0,0,10): the ray along +z from the origin enters z=9 at t=9.
-    std::vector<Primitive> prims{makePrimitive(ShapeKind::Box, {2, 2, 2}, Transform::fromPose({0, 0, 10}, {}))};
+    std::vector<Primitive> prims{
+        makePrimitive(ShapeKind::Box, {2, 2, 2}, Transform::fromPose({0, 0, 10}, {}))};
     Bvh bvh;
     bvh.build(prims);
     Ray ray{{0, 0, 0}, {0, 0, 1}};
@@ -195,8 +201,9 @@ TEST(Bvh, SinglePrimitive) {
 TEST(Bvh, NearestOfTwoInALine) {
     // Spheres r=1 at z=10 and z=20 on the ray's line: the nearer (index 1) at t=9,
     // whatever the order of the input.
-    std::vector<Primitive> prims{makePrimitive(ShapeKind::Sphere, {1, 0, 0}, Transform::fromPose({0, 0, 20}, {})),
-                                 makePrimitive(ShapeKind::Sphere, {1, 0, 0}, Transform::fromPose({0, 0, 10}, {}))};
+    std::vector<Primitive> prims{
+        makePrimitive(ShapeKind::Sphere, {1, 0, 0}, Transform::fromPose({0, 0, 20}, {})),
+        makePrimitive(ShapeKind::Sphere, {1, 0, 0}, Transform::fromPose({0, 0, 10}, {}))};
     Bvh bvh;
     bvh.build(prims);
     HitRecord hit;
@@ -229,8 +236,8 @@ TEST(BvhProperty, MatchesBruteForceOnRandomScenes) {
             float tMax = u01(rng) < 0.5f ? kInfinity : 1 + 300 * u01(rng);
             ASSERT_TRUE(agrees(prims, bvh, ray, tMin, tMax)) << "scene of " << count << ", ray " << n;
             ASSERT_EQ(bvh.occluded(ray, tMin, tMax), bruteAny(prims, ray, tMin, tMax))
-                << "scene of " << count << ", ray " << n << " origin " << ray.origin << " dir " << ray.direction
-                << " tMax " << tMax;
+                << "scene of " << count << ", ray " << n << " origin " << ray.origin << " dir "
+                << ray.direction << " tMax " << tMax;
             hits += bruteNearest(prims, ray, tMin, tMax).found;
         }
     }
@@ -308,7 +315,8 @@ TEST(BvhProperty, ParallelBuildMakesTheSameTree) {
     for (Primitive& p : prims) p.centre = p.centre + Vec3{1, -2, 0.5f};
     EXPECT_FALSE(parallel.update(prims, &pool));
     for (int n = 0; n < 1000; ++n)
-        ASSERT_TRUE(agrees(prims, parallel, randomRay(rng, prims, spread), 0, kInfinity)) << "after refit, ray " << n;
+        ASSERT_TRUE(agrees(prims, parallel, randomRay(rng, prims, spread), 0, kInfinity))
+            << "after refit, ray " << n;
 }
 
 TEST(BvhProperty, EntryNodesOfATileLoseNoHit) {
@@ -336,16 +344,19 @@ TEST(BvhProperty, EntryNodesOfATileLoseNoHit) {
         camera.worldFromCamera = rotationFromEulerDegrees(angle(rng) * 0.25f, angle(rng), angle(rng) * 0.1f);
         for (int tile = 0; tile < 12; ++tile) {
             int size = 4 << (tile % 3);  // 4, 8, 16 pixels
-            int x0 = int(u01(rng) * float(camera.width - size)), y0 = int(u01(rng) * float(camera.height - size));
+            int x0 = int(u01(rng) * float(camera.width - size)),
+                y0 = int(u01(rng) * float(camera.height - size));
             std::uint32_t store[8];
-            std::size_t count = bvh.entryNodes(camera.pixelFrustum(x0, y0, x0 + size, y0 + size), camera.eye, store);
+            std::size_t count =
+                bvh.entryNodes(camera.pixelFrustum(x0, y0, x0 + size, y0 + size), camera.eye, store);
             trimmed += count != 1 || store[0] != 0;
             std::span<const std::uint32_t> entry(store, count);
             for (int packet = 0; packet < 4; ++packet) {
                 alignas(64) float dx[simd::kWidth], dy[simd::kWidth], dz[simd::kWidth];
                 std::vector<Ray> lanes;
                 for (int i = 0; i < simd::kWidth; ++i) {
-                    Ray ray = camera.rayThrough(float(x0) + u01(rng) * float(size), float(y0) + u01(rng) * float(size));
+                    Ray ray = camera.rayThrough(float(x0) + u01(rng) * float(size),
+                                                float(y0) + u01(rng) * float(size));
                     dx[i] = ray.direction.x, dy[i] = ray.direction.y, dz[i] = ray.direction.z;
                     lanes.push_back(ray);
                 }
@@ -359,7 +370,8 @@ TEST(BvhProperty, EntryNodesOfATileLoseNoHit) {
                 for (int i = 0; i < simd::kWidth; ++i, ++rays) {
                     HitRecord expected;
                     bool found = bvh.intersect(lanes[std::size_t(i)], 0, kInfinity, expected);
-                    ASSERT_EQ(t[i] < kInfinity, found) << "view " << view << " tile " << tile << " lane " << i;
+                    ASSERT_EQ(t[i] < kInfinity, found)
+                        << "view " << view << " tile " << tile << " lane " << i;
                     if (!found) continue;
                     ++hits;
                     EXPECT_EQ(t[i], expected.t) << "view " << view << " tile " << tile << " lane " << i;
@@ -385,12 +397,13 @@ void expectShadowPacketMatchesBruteForce(const Bvh& bvh, const std::vector<Primi
         ox[i] = o.x, oy[i] = o.y, oz[i] = o.z;
     }
     ParallelRays packet(Vec3P(simd::load(ox), simd::load(oy), simd::load(oz)), direction);
-    std::uint32_t blocked = simd::bits(occludedPacket(bvh, packet, simd::allLanes(), Float(0.0f), Float(kInfinity), Int(-1)));
+    std::uint32_t blocked =
+        simd::bits(occludedPacket(bvh, packet, simd::allLanes(), Float(0.0f), Float(kInfinity), Int(-1)));
     for (int i = 0; i < simd::kWidth; ++i) {
         Ray ray{origins[std::size_t(i) % origins.size()], direction};
         ASSERT_EQ(((blocked >> i) & 1u) != 0, bruteAny(prims, ray, 0, kInfinity))
-            << what << ": lane " << i << " origin " << ray.origin.x << ' ' << ray.origin.y << ' ' << ray.origin.z
-            << " direction " << direction.x << ' ' << direction.y << ' ' << direction.z;
+            << what << ": lane " << i << " origin " << ray.origin.x << ' ' << ray.origin.y << ' '
+            << ray.origin.z << " direction " << direction.x << ' ' << direction.y << ' ' << direction.z;
     }
 }
 
@@ -410,7 +423,8 @@ TEST(BvhProperty, ShadowPacketsMatchBruteForce) {
     for (int packet = 0; packet < 400; ++packet) {
         Vec3 direction = packet % 4 == 0 ? axial[(packet / 4) % 4] : randomUnit(rng);
         std::vector<Vec3> origins;
-        for (int i = 0; i < simd::kWidth; ++i) origins.push_back({coordinate(rng), coordinate(rng), coordinate(rng)});
+        for (int i = 0; i < simd::kWidth; ++i)
+            origins.push_back({coordinate(rng), coordinate(rng), coordinate(rng)});
         expectShadowPacketMatchesBruteForce(bvh, prims, origins, direction, "random");
         if (HasFatalFailure()) return;
         for (const Vec3& o : origins) blockedLanes += bruteAny(prims, {o, direction}, 0, kInfinity);
@@ -449,8 +463,8 @@ TEST(BvhProperty, BeamEntryNodesLoseNoOccluder) {
             ox[i] = corner.x + f.x * size.x, oy[i] = corner.y + f.y * size.y, oz[i] = corner.z + f.z * size.z;
         }
         ParallelRays rays(Vec3P(simd::load(ox), simd::load(oy), simd::load(oz)), direction);
-        std::uint32_t blocked =
-            simd::bits(occludedPacket(bvh, rays, simd::allLanes(), Float(0.0f), Float(kInfinity), Int(-1), entry));
+        std::uint32_t blocked = simd::bits(
+            occludedPacket(bvh, rays, simd::allLanes(), Float(0.0f), Float(kInfinity), Int(-1), entry));
         for (int i = 0; i < simd::kWidth; ++i) {
             bool expected = bruteAny(prims, {{ox[i], oy[i], oz[i]}, direction}, 0, kInfinity);
             ASSERT_EQ(((blocked >> i) & 1u) != 0, expected) << "beam " << beam << " lane " << i;

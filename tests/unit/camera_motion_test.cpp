@@ -1,10 +1,11 @@
 // The camera as a target (SPEC 9.1): keyed poses at fractional frames,
 // /look_at in every direction and its degenerate cases, attached cameras.
+#include "core/anim/camera_motion.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "core/anim/camera_motion.h"
 #include "core/render/camera.h"
 #include "test_scenes.h"
 
@@ -117,8 +118,8 @@ TEST(CameraMotion, LookAtAMovingObjectAndAPartCentre) {
     // The head turned by a key moves the box centre with it: ry 90 swings the
     // centre (0, 25, 0) about the pivot's y axis, which leaves it in place,
     // so tilt it instead: rx 90 takes (0, 25, 0) to (0, 0, 25) (+y toward +z).
-    const SceneDesc tilted = sceneFromText(
-        "/robot f2 0 0 100\n/key 0 f2.head 0 0 0 90 0 0\n/look_at f2.head\n");
+    const SceneDesc tilted =
+        sceneFromText("/robot f2 0 0 100\n/key 0 f2.head 0 0 0 90 0 0\n/look_at f2.head\n");
     EXPECT_VEC_NEAR(lookAtPoint(tilted, *tilted.camera.lookAt, 0), (Vec3{0, 45, 125}), kTol);
 }
 

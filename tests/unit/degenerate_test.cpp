@@ -94,12 +94,9 @@ constexpr Rgb8 kAmbientOnly{50, 50, 50};
 // The inside of each shape is flat-lit (no specular), so no pixel may stand
 // out from all four neighbours.
 constexpr const char* kInsideShapes[] = {
-    "/sphere o 10 0 0 0",
-    "/box o 20 20 20 0 0 0",
-    "/box o 20 20 20 0 0 0 30 40 50",
-    "/cylinder o 10 20 0 0 0",
-    "/cylinder o 10 20 0 0 0 90 0 0",
-    "/sphere o 10 0 0 9.99",  // the eye very near the surface
+    "/sphere o 10 0 0 0",          "/box o 20 20 20 0 0 0",          "/box o 20 20 20 0 0 0 30 40 50",
+    "/cylinder o 10 20 0 0 0",     "/cylinder o 10 20 0 0 0 90 0 0",
+    "/sphere o 10 0 0 9.99",        // the eye very near the surface
     "/cylinder o 1e6 1e6 5e5 0 0",  // huge, the eye far from its axis
 };
 
@@ -133,7 +130,8 @@ TEST(Degenerate, CameraInsideAClosedObjectSeesOnlyAmbientLight) {
         SCOPED_TRACE(shape);
         const Rendered r = render(insideScene(shape));
         EXPECT_EQ(notEqual(r.image, 0, 0, kW, kH, kAmbientOnly), 0)
-            << "centre pixel " << describe(r.image.at(kW / 2, kH / 2)) << ", expected " << describe(kAmbientOnly);
+            << "centre pixel " << describe(r.image.at(kW / 2, kH / 2)) << ", expected "
+            << describe(kAmbientOnly);
     }
 }
 
@@ -191,9 +189,10 @@ TEST(Degenerate, ObjectsNearOrCuttingTheEye) {
     for (const char* shape : scenes) {
         for (int threads : {1, 2}) {
             SCOPED_TRACE(std::string(shape) + " threads " + std::to_string(threads));
-            const Rendered r = render(std::string("/camera 64 48 0.5\n") + shape +
-                                          "\n/material o 1 1 0 1\n/amb_light 0.3\n/dir_light 0.7 0.1 -0.2 1\n",
-                                      threads);
+            const Rendered r =
+                render(std::string("/camera 64 48 0.5\n") + shape +
+                           "\n/material o 1 1 0 1\n/amb_light 0.3\n/dir_light 0.7 0.1 -0.2 1\n",
+                       threads);
             EXPECT_EQ(r.nonFinite, 0);
             EXPECT_EQ(speckles(r.image, 0, 0, kW, kH), 0);
         }
@@ -257,7 +256,8 @@ TEST(Degenerate, FlatLitFacesAreUniformAndCurvedOnesSmooth) {
 
     const Rendered sphere = render(
         "/camera 64 48 0.5\n/sphere s 30 0 0 60\n/material s 1 1 0 1\n/amb_light 0.2\n"
-        "/dir_light 0.6 0.3 -0.4 1\n", 2);
+        "/dir_light 0.6 0.3 -0.4 1\n",
+        2);
     EXPECT_EQ(sphere.nonFinite, 0);
     EXPECT_EQ(speckles(sphere.image, 0, 0, kW, kH), 0);
 }
@@ -268,7 +268,8 @@ TEST(Degenerate, TinyAndHugeObjects) {
     {
         // A 1e-3 sphere filling most of the view from 3e-3 away.
         const Rendered r = render(
-            "/camera 64 48 0.5\n/sphere s 1e-3 0 0 3e-3\n/paint s 100 100 100\n/material s 1 1 0 1\n/amb_light 0.3\n"
+            "/camera 64 48 0.5\n/sphere s 1e-3 0 0 3e-3\n/paint s 100 100 100\n/material s 1 1 0 "
+            "1\n/amb_light 0.3\n"
             "/dir_light 0.7 0 0 1\n");
         EXPECT_EQ(r.nonFinite, 0);
         EXPECT_EQ(speckles(r.image, 0, 0, kW, kH), 0);
@@ -309,12 +310,14 @@ TEST(Degenerate, TinyAndHugeObjects) {
 TEST(Degenerate, HugeMaterialsSaturateInsteadOfTurningBlack) {
     const std::string view = "/camera 64 48 0.5 0 0 -100\n/background 10 20 30\n/sphere s 60 0 0 0\n";
     // Black paint, ka * ambient = inf: only the highlight (n tiny: everywhere lit, pow = 1) remains.
-    Rendered black = render(view + "/paint s 0 0 0\n/material s 3e38 1 1 1e-30\n/amb_light 10\n/dir_light 1 0 0 1\n");
+    Rendered black =
+        render(view + "/paint s 0 0 0\n/material s 3e38 1 1 1e-30\n/amb_light 10\n/dir_light 1 0 0 1\n");
     EXPECT_EQ(black.nonFinite, 0);
     EXPECT_EQ(describe(black.image.at(kW / 2, kH / 2)), "255 255 255");
     // ks * intensity = inf, n huge: pow() underflows off the highlight's centre.
-    Rendered white = render(view + "/paint s 255 255 255\n/material s 1 1 3e38 3e38\n/amb_light 0.5\n"
-                                   "/dir_light 3e38 0 0 1\n");
+    Rendered white = render(view +
+                            "/paint s 255 255 255\n/material s 1 1 3e38 3e38\n/amb_light 0.5\n"
+                            "/dir_light 3e38 0 0 1\n");
     EXPECT_EQ(white.nonFinite, 0);
     EXPECT_EQ(notEqual(white.image, kW / 2 - 8, kH / 2 - 8, kW / 2 + 8, kH / 2 + 8, Rgb8{255, 255, 255}), 0);
 }

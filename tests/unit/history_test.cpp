@@ -34,18 +34,23 @@ std::string tieScene() {
          "/sphere s2 50 -150 20 -40\n/paint s2 0 250 250\n"
          "/box m1 40 40 40 150 0 -60\n/paint m1 250 0 250\n"
          "/box m2 40 40 40 150 0 -60\n/paint m2 120 60 0\n"
-         "/key 0 m1 150 0 -60 0 0 0\n/key " << kFrames << " m1 150 80 -60 0 90 0\n"
-         "/key 0 m2 150 0 -60 0 0 0\n/key " << kFrames << " m2 150 80 -60 0 90 0\n"
+         "/key 0 m1 150 0 -60 0 0 0\n/key "
+      << kFrames
+      << " m1 150 80 -60 0 90 0\n"
+         "/key 0 m2 150 0 -60 0 0 0\n/key "
+      << kFrames
+      << " m2 150 80 -60 0 90 0\n"
          "/amb_light 0.2\n/dir_light 0.6 1 -1 1\n/dir_light 0.3 -1 -0.5 0.5\n";
     std::mt19937 rng(7);
     std::uniform_real_distribution<float> u(-1, 1);
     for (int i = 0; i < 300; ++i) {
-        s << "/sphere f" << i << ' ' << 2 + 3 * (u(rng) + 1) << ' ' << 300 * u(rng) << ' ' << 100 * u(rng) << ' '
-          << 200 * u(rng) << '\n';
+        s << "/sphere f" << i << ' ' << 2 + 3 * (u(rng) + 1) << ' ' << 300 * u(rng) << ' ' << 100 * u(rng)
+          << ' ' << 200 * u(rng) << '\n';
         s << "/paint f" << i << ' ' << int(128 + 127 * u(rng)) << " 128 " << int(128 + 127 * u(rng)) << '\n';
-        s << "/key 0 f" << i << ' ' << 300 * u(rng) << ' ' << 100 * u(rng) << ' ' << 200 * u(rng) << " 0 0 0\n";
-        s << "/key " << kFrames << " f" << i << ' ' << 300 * u(rng) << ' ' << 100 * u(rng) << ' ' << 200 * u(rng)
+        s << "/key 0 f" << i << ' ' << 300 * u(rng) << ' ' << 100 * u(rng) << ' ' << 200 * u(rng)
           << " 0 0 0\n";
+        s << "/key " << kFrames << " f" << i << ' ' << 300 * u(rng) << ' ' << 100 * u(rng) << ' '
+          << 200 * u(rng) << " 0 0 0\n";
     }
     return s.str();
 }
@@ -75,7 +80,7 @@ std::size_t differingPixels(const Image& a, const Image& b) {
 }
 
 class History : public ::testing::Test {
-protected:
+   protected:
     static void SetUpTestSuite() {
         scene_ = new SceneDesc(test::sceneFromText(tieScene()));
         fresh_ = new std::vector<Renders>;
@@ -93,7 +98,8 @@ protected:
     /// of both paths must equal the fresh renderer's, byte for byte.
     void expectSameAsFresh(const std::vector<double>& order, const std::string& what) {
         Renderer renderer(2);
-        const SceneDesc other = test::sceneFromText("/camera 32 24 0.5\n/sphere s 10 0 0 50\n/dir_light 1 0 0 1\n");
+        const SceneDesc other =
+            test::sceneFromText("/camera 32 24 0.5\n/sphere s 10 0 0 50\n/dir_light 1 0 0 1\n");
         int compared = 0;
         for (double t : order) {
             Image ignored;
@@ -137,8 +143,9 @@ TEST_F(History, TheSceneHasTiesToBreak) {
     // pixels do depend on how a tie is broken.
     const Image& image = (*fresh_)[0].packet;
     auto dominant = [](int a, int b, int c) { return a > b + 60 && a > c + 60; };
-    auto boxPixels = std::count_if(image.pixels.begin(), image.pixels.end(),
-                                   [&](Rgb8 p) { return dominant(p.r, p.g, p.b) || dominant(p.g, p.r, p.b); });
+    auto boxPixels = std::count_if(image.pixels.begin(), image.pixels.end(), [&](Rgb8 p) {
+        return dominant(p.r, p.g, p.b) || dominant(p.g, p.r, p.b);
+    });
     EXPECT_GT(boxPixels, 300);
 }
 
@@ -176,7 +183,8 @@ TEST_F(History, BothPathsGiveTheSameImage) {
     // only by the rounding of pow() in the specular term (design.md).
     for (std::size_t i = 0; i < kSampled.size(); ++i) {
         const Renders& r = (*fresh_)[i];
-        EXPECT_LE(differingPixels(r.packet, r.reference), r.packet.pixels.size() / 1000) << "t = " << kSampled[i];
+        EXPECT_LE(differingPixels(r.packet, r.reference), r.packet.pixels.size() / 1000)
+            << "t = " << kSampled[i];
     }
 }
 

@@ -11,7 +11,8 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path scratchDir() {
-    fs::path dir = fs::temp_directory_path() / ("f2_image_io_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+    fs::path dir = fs::temp_directory_path() /
+                   ("f2_image_io_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
     fs::create_directories(dir);
     return dir;
 }
@@ -20,7 +21,8 @@ TEST(ImageIo, PngRoundTripKeepsEveryPixel) {
     Image image;
     image.resize(7, 5);
     for (int y = 0; y < 5; ++y)
-        for (int x = 0; x < 7; ++x) image.at(x, y) = {std::uint8_t(x * 30), std::uint8_t(y * 50), std::uint8_t(x ^ y)};
+        for (int x = 0; x < 7; ++x)
+            image.at(x, y) = {std::uint8_t(x * 30), std::uint8_t(y * 50), std::uint8_t(x ^ y)};
     fs::path path = scratchDir() / "round.png";
     std::string error;
     ASSERT_TRUE(writePng(image, path.string(), error)) << error;

@@ -22,8 +22,10 @@ struct ModeCase {
 // linear u; ease 3u²−2u³: 3/16 − 2/64 = 0.15625, 27/16 − 54/64 = 0.84375;
 // ease_in u³: 1/64, 27/64; ease_out 1 − (1−u)³: 1 − 27/64, 1 − 1/64; step 0.
 constexpr ModeCase kModes[] = {
-    {Interpolation::Linear, 0.25, 0.75},           {Interpolation::Ease, 0.15625, 0.84375},
-    {Interpolation::EaseIn, 0.015625, 0.421875},   {Interpolation::EaseOut, 0.578125, 0.984375},
+    {Interpolation::Linear, 0.25, 0.75},
+    {Interpolation::Ease, 0.15625, 0.84375},
+    {Interpolation::EaseIn, 0.015625, 0.421875},
+    {Interpolation::EaseOut, 0.578125, 0.984375},
     {Interpolation::Step, 0.0, 0.0},
 };
 
@@ -44,8 +46,8 @@ TEST(Interpolation, ModeWordOnTheKeyMovesTheTargetToTheNextKey) {
         const std::string name(interpolationName(c.mode));
         SCOPED_TRACE(name);
         // Keys 0 and 8 from x = 0 to x = 64: u = 0.25 at frame 2, 0.75 at frame 6.
-        const SceneDesc s = sceneFromText("/sphere s 1 0 0 0\n/key 0 s 0 0 0 0 0 0 " + name +
-                                          "\n/key 8 s 64 0 0 0 0 0\n");
+        const SceneDesc s =
+            sceneFromText("/sphere s 1 0 0 0\n/key 0 s 0 0 0 0 0 0 " + name + "\n/key 8 s 64 0 0 0 0 0\n");
         EXPECT_FLOAT_EQ(xAt(s, 2), float(64 * c.at25));
         EXPECT_FLOAT_EQ(xAt(s, 6), float(64 * c.at75));
         EXPECT_FLOAT_EQ(xAt(s, 8), 64);  // step holds P1 until P2's frame, then P2
@@ -58,7 +60,8 @@ TEST(Interpolation, ModeWordOnTheKeyMovesTheTargetToTheNextKey) {
 }
 
 TEST(Interpolation, StepHoldsUntilTheNextKeysFrame) {
-    const SceneDesc s = sceneFromText("/sphere s 1 0 0 0\n/key 0 s 0 0 0 0 0 0 step\n/key 10 s 50 0 0 0 0 0\n");
+    const SceneDesc s =
+        sceneFromText("/sphere s 1 0 0 0\n/key 0 s 0 0 0 0 0 0 step\n/key 10 s 50 0 0 0 0 0\n");
     EXPECT_EQ(xAt(s, 9.999), 0);
     EXPECT_EQ(xAt(s, 10), 50);
 }

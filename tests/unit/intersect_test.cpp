@@ -3,6 +3,8 @@
 // comment beside it, then seeded property tests in the style of pbrt's shape
 // tests. Sizes follow SceneObject: sphere (r,0,0), cylinder (r,h,0) with the
 // axis on local y and caps at y = +-h/2, box (sx,sy,sz) full sides.
+#include "core/geometry/intersect.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,7 +14,6 @@
 #include <iostream>
 #include <random>
 
-#include "core/geometry/intersect.h"
 #include "test_scenes.h"
 
 namespace f2 {
@@ -50,13 +51,13 @@ Hit trace(const Primitive& prim, Vec3 origin, Vec3 direction, float tMin = 0, fl
     return h;
 }
 
-#define EXPECT_HIT(h, tExpected, pointExpected, normalExpected)         \
-    do {                                                                \
-        const Hit h_ = (h);                                             \
-        ASSERT_TRUE(h_.ok) << "expected a hit";                         \
-        EXPECT_NEAR(h_.t, (tExpected), 1e-4f);                          \
-        EXPECT_VEC_NEAR(h_.point, (pointExpected), 1e-4f);              \
-        EXPECT_VEC_NEAR(h_.normal, (normalExpected), 1e-5f);            \
+#define EXPECT_HIT(h, tExpected, pointExpected, normalExpected) \
+    do {                                                        \
+        const Hit h_ = (h);                                     \
+        ASSERT_TRUE(h_.ok) << "expected a hit";                 \
+        EXPECT_NEAR(h_.t, (tExpected), 1e-4f);                  \
+        EXPECT_VEC_NEAR(h_.point, (pointExpected), 1e-4f);      \
+        EXPECT_VEC_NEAR(h_.normal, (normalExpected), 1e-5f);    \
     } while (0)
 
 bool near(Vec3 a, Vec3 b, float tol) { return length(a - b) <= tol; }
@@ -178,7 +179,8 @@ TEST(CylinderIntersect, RimHasNoGap) {
     EXPECT_HIT(trace(cylinder(5, 10), {-5, 20, 0}, {0, -1, 0}), 15.0f, Vec3(-5, 5, 0), Vec3(0, 1, 0));
     EXPECT_FALSE(trace(cylinder(5, 10), {-5.001f, 20, 0}, {0, -1, 0}).ok);
     // Just inside both: a real hit on the cap near the rim.
-    EXPECT_HIT(trace(cylinder(5, 10), {-4.999f, 20, 0}, {0, -1, 0}), 15.0f, Vec3(-4.999f, 5, 0), Vec3(0, 1, 0));
+    EXPECT_HIT(trace(cylinder(5, 10), {-4.999f, 20, 0}, {0, -1, 0}), 15.0f, Vec3(-4.999f, 5, 0),
+               Vec3(0, 1, 0));
 }
 
 TEST(CylinderIntersect, OriginInsideReturnsExit) {
@@ -267,7 +269,8 @@ TEST(BoxIntersect, EachFaceWithItsNormal) {
     EXPECT_FALSE(trace(box({4, 6, 10}), {0, 11, 0}, {0.6f, -0.8f, 0}).ok);
     // Oblique from (-1.5,7,0) along (0.6,-0.8,0): already inside the x and z slabs; y=3
     // after 4/0.8 = 5, where x = -1.5 + 0.6*5 = 1.5 <= 2: a +y hit.
-    EXPECT_HIT(trace(box({4, 6, 10}), {-1.5f, 7, 0}, {0.6f, -0.8f, 0}), 5.0f, Vec3(1.5f, 3, 0), Vec3(0, 1, 0));
+    EXPECT_HIT(trace(box({4, 6, 10}), {-1.5f, 7, 0}, {0.6f, -0.8f, 0}), 5.0f, Vec3(1.5f, 3, 0),
+               Vec3(0, 1, 0));
 }
 
 TEST(BoxIntersect, RayAlongAnEdge) {
@@ -409,7 +412,8 @@ Sample sampleSurface(ShapeKind kind, Vec3 size, std::mt19937& rng) {
 /// Signed distance-like residual of the implicit surface in local coordinates: 0 on it.
 float surfaceResidual(ShapeKind kind, Vec3 size, Vec3 q) {
     switch (kind) {
-        case ShapeKind::Sphere: return length(q) - size.x;
+        case ShapeKind::Sphere:
+            return length(q) - size.x;
         case ShapeKind::Cylinder:
             return std::max(std::sqrt(q.x * q.x + q.z * q.z) - size.x, std::fabs(q.y) - size.y / 2);
         case ShapeKind::Box: {
@@ -440,12 +444,18 @@ RandomShape randomShape(std::mt19937& rng) {
     RandomShape s;
     s.kind = ShapeKind(int(u01(rng) * 3) % 3);
     switch (s.kind) {
-        case ShapeKind::Sphere: s.size = {dim(), 0, 0}; break;
-        case ShapeKind::Cylinder: s.size = {dim(), 2 * dim(), 0}; break;
-        case ShapeKind::Box: s.size = {2 * dim(), 2 * dim(), 2 * dim()}; break;
+        case ShapeKind::Sphere:
+            s.size = {dim(), 0, 0};
+            break;
+        case ShapeKind::Cylinder:
+            s.size = {dim(), 2 * dim(), 0};
+            break;
+        case ShapeKind::Box:
+            s.size = {2 * dim(), 2 * dim(), 2 * dim()};
+            break;
     }
-    s.worldFromLocal = Transform::fromPose({coord(rng), coord(rng), coord(rng)},
-                                           {angle(rng), angle(rng), angle(rng)});
+    s.worldFromLocal =
+        Transform::fromPose({coord(rng), coord(rng), coord(rng)}, {angle(rng), angle(rng), angle(rng)});
     s.prim = makePrimitive(s.kind, s.size, s.worldFromLocal);
     s.extent = std::max({s.size.x, s.size.y, s.size.z});
     return s;
@@ -477,8 +487,8 @@ TEST(IntersectProperty, RaysTowardSurfacePointsHitThem) {
         float scale = 1 + length(ray.origin - s.prim.centre) + s.extent;
         float tol = 2e-5f * scale;
         SCOPED_TRACE(::testing::Message() << "case " << n << ' ' << kindName(s.kind) << " size " << s.size
-                                          << " centre " << s.prim.centre << " origin " << ray.origin << " dir "
-                                          << ray.direction << " target " << p);
+                                          << " centre " << s.prim.centre << " origin " << ray.origin
+                                          << " dir " << ray.direction << " target " << p);
         float t;
         Face face;
         ASSERT_TRUE(intersectPrimitive(s.prim, ray, 0, kInfinity, t, face));
@@ -515,7 +525,8 @@ TEST(IntersectProperty, RaysTowardSurfacePointsHitThem) {
             Vec3 q2 = s.worldFromLocal.inverseRigid().applyToPoint(ray.origin + ray.direction * t2);
             EXPECT_NEAR(surfaceResidual(s.kind, s.size, q2), 0.0f, tol);
             // The exit normal points along the ray (outward at an exit).
-            EXPECT_GT(dot(primitiveNormal(s.prim, ray.origin + ray.direction * t2, face2), ray.direction), 0.0f);
+            EXPECT_GT(dot(primitiveNormal(s.prim, ray.origin + ray.direction * t2, face2), ray.direction),
+                      0.0f);
         }
         if (HasFailure()) return;
     }
@@ -597,10 +608,10 @@ TEST(IntersectProperty, IntervalContainsOnlyInsidePoints) {
             float t = iv.enter + f * (iv.exit - iv.enter);
             EXPECT_LE(surfaceResidual(s.kind, s.size, inv.applyToPoint(ray.origin + ray.direction * t)), tol);
         }
-        EXPECT_NEAR(surfaceResidual(s.kind, s.size, inv.applyToPoint(ray.origin + ray.direction * iv.enter)), 0,
-                    tol);
-        EXPECT_NEAR(surfaceResidual(s.kind, s.size, inv.applyToPoint(ray.origin + ray.direction * iv.exit)), 0,
-                    tol);
+        EXPECT_NEAR(surfaceResidual(s.kind, s.size, inv.applyToPoint(ray.origin + ray.direction * iv.enter)),
+                    0, tol);
+        EXPECT_NEAR(surfaceResidual(s.kind, s.size, inv.applyToPoint(ray.origin + ray.direction * iv.exit)),
+                    0, tol);
         if (HasFailure()) return;
     }
     EXPECT_GT(hits, 1000);

@@ -37,14 +37,16 @@ TEST(CreatingCommandErrors, AWrongArgumentCountStillRegistersTheNameWithItsKind)
                        "/interp Q.head ease\n"),
               (Lines{"1:1: error: '/robot' takes 4 or 7 arguments, got 6"}));
     // A sphere registered after a count error has no parts.
-    EXPECT_EQ(messages("/sphere s 1 0 0\n/key 0 s.head\n"),
-              (Lines{"1:1: error: '/sphere' takes 5 or 8 arguments, got 4",
-                     "2:10: error: '/key' on a part of a primitive: 's' is a sphere; only robots and humans have "
-                     "parts"}));
-    EXPECT_EQ(messages("/box b 1 2\n/cylinder c 1\n/human h\n/paint b 1 1 1\n/paint c 1 1 1\n/key 1 h.rhand\n"),
-              (Lines{"1:1: error: '/box' takes 7 or 10 arguments, got 3",
-                     "2:1: error: '/cylinder' takes 6 or 9 arguments, got 2",
-                     "3:1: error: '/human' takes 4 or 7 arguments, got 1"}));
+    EXPECT_EQ(
+        messages("/sphere s 1 0 0\n/key 0 s.head\n"),
+        (Lines{"1:1: error: '/sphere' takes 5 or 8 arguments, got 4",
+               "2:10: error: '/key' on a part of a primitive: 's' is a sphere; only robots and humans have "
+               "parts"}));
+    EXPECT_EQ(
+        messages("/box b 1 2\n/cylinder c 1\n/human h\n/paint b 1 1 1\n/paint c 1 1 1\n/key 1 h.rhand\n"),
+        (Lines{"1:1: error: '/box' takes 7 or 10 arguments, got 3",
+               "2:1: error: '/cylinder' takes 6 or 9 arguments, got 2",
+               "3:1: error: '/human' takes 4 or 7 arguments, got 1"}));
 }
 
 TEST(CreatingCommandErrors, EveryKindOfErrorStillRegistersTheName) {
@@ -72,74 +74,93 @@ TEST(CreatingCommandErrors, TheSceneStillFailsAndNamesAreNotTakenTwice) {
 // Invisible and unusual characters
 
 TEST(UnusualCharacters, ANoBreakSpaceInACommandIsNamed) {
-    EXPECT_EQ(messages("/sphere\u00A0t 10 0 0 0\n"),
-              (Lines{"1:1: error: unknown command '/sphere\u00A0t' (it contains U+00A0 NO-BREAK SPACE at column 8, "
-                     "which does not separate tokens: only spaces and tabs do)"}));
+    EXPECT_EQ(
+        messages("/sphere\u00A0t 10 0 0 0\n"),
+        (Lines{"1:1: error: unknown command '/sphere\u00A0t' (it contains U+00A0 NO-BREAK SPACE at column 8, "
+               "which does not separate tokens: only spaces and tabs do)"}));
 }
 
 TEST(UnusualCharacters, ANoBreakSpaceBetweenArgumentsIsNamedInTheCountError) {
-    EXPECT_EQ(messages("/sphere t\u00A010 0 0 0   # comment \u00A0 ignored\n"),
-              (Lines{"1:1: error: '/sphere' takes 5 or 8 arguments, got 4 (it contains U+00A0 NO-BREAK SPACE at "
-                     "column 10, which does not separate tokens: only spaces and tabs do)"}));
-    EXPECT_EQ(messages("/sphere s 1 0 0 0\n/key 0\u202Fs\n"),
-              (Lines{"2:1: error: '/key' takes 2 or 8 arguments (a frame, a target and 0 or 6 numbers), got 1 (it "
-                     "contains U+202F NARROW NO-BREAK SPACE at column 7, which does not separate tokens: only spaces "
-                     "and tabs do)"}));
+    EXPECT_EQ(
+        messages("/sphere t\u00A010 0 0 0   # comment \u00A0 ignored\n"),
+        (Lines{"1:1: error: '/sphere' takes 5 or 8 arguments, got 4 (it contains U+00A0 NO-BREAK SPACE at "
+               "column 10, which does not separate tokens: only spaces and tabs do)"}));
+    EXPECT_EQ(
+        messages("/sphere s 1 0 0 0\n/key 0\u202Fs\n"),
+        (Lines{
+            "2:1: error: '/key' takes 2 or 8 arguments (a frame, a target and 0 or 6 numbers), got 1 (it "
+            "contains U+202F NARROW NO-BREAK SPACE at column 7, which does not separate tokens: only spaces "
+            "and tabs do)"}));
 }
 
 TEST(UnusualCharacters, DashesAndMinusSignsInNumbers) {
-    EXPECT_EQ(messages("/sphere s 10 \u22125 0 0\n"),
-              (Lines{"1:14: error: expected a number, got '\u22125' (it contains U+2212 MINUS SIGN at column 14, "
-                     "which is not a minus: write '-')"}));
-    EXPECT_EQ(messages("/amb_light \u20130.5\n"),
-              (Lines{"1:12: error: expected a number, got '\u20130.5' (it contains U+2013 EN DASH at column 12, "
-                     "which is not a minus: write '-')"}));
+    EXPECT_EQ(
+        messages("/sphere s 10 \u22125 0 0\n"),
+        (Lines{"1:14: error: expected a number, got '\u22125' (it contains U+2212 MINUS SIGN at column 14, "
+               "which is not a minus: write '-')"}));
+    EXPECT_EQ(
+        messages("/amb_light \u20130.5\n"),
+        (Lines{"1:12: error: expected a number, got '\u20130.5' (it contains U+2013 EN DASH at column 12, "
+               "which is not a minus: write '-')"}));
 }
 
 TEST(UnusualCharacters, InvisibleCharactersInNamesAndTargets) {
-    EXPECT_EQ(messages("/sphere s\u200B 1 0 0 0\n"),
-              (Lines{"1:9: error: invalid name 's\u200B' (expected a letter or '_', then letters, digits or '_'; it "
-                     "contains U+200B ZERO WIDTH SPACE at column 10, an invisible character: delete it)"}));
-    EXPECT_EQ(messages("/robot r 0 0 0\n/key 0 r.\u00ADhead\n"),
-              (Lines{"2:10: error: unknown part '\u00ADhead' (did you mean 'head'? it contains U+00AD SOFT HYPHEN "
-                     "at column 10, an invisible character: delete it)"}));
-    EXPECT_EQ(messages("/robot r 0 0 0\n/interp r ease\u200D\n"),
-              (Lines{"2:11: error: unknown interpolation 'ease\u200D' (expected linear, ease, ease_in, ease_out, step "
-                    "or spline; it contains "
-                     "U+200D ZERO WIDTH JOINER at column 15, an invisible character: delete it)"}));
+    EXPECT_EQ(
+        messages("/sphere s\u200B 1 0 0 0\n"),
+        (Lines{
+            "1:9: error: invalid name 's\u200B' (expected a letter or '_', then letters, digits or '_'; it "
+            "contains U+200B ZERO WIDTH SPACE at column 10, an invisible character: delete it)"}));
+    EXPECT_EQ(
+        messages("/robot r 0 0 0\n/key 0 r.\u00ADhead\n"),
+        (Lines{"2:10: error: unknown part '\u00ADhead' (did you mean 'head'? it contains U+00AD SOFT HYPHEN "
+               "at column 10, an invisible character: delete it)"}));
+    EXPECT_EQ(
+        messages("/robot r 0 0 0\n/interp r ease\u200D\n"),
+        (Lines{
+            "2:11: error: unknown interpolation 'ease\u200D' (expected linear, ease, ease_in, ease_out, step "
+            "or spline; it contains "
+            "U+200D ZERO WIDTH JOINER at column 15, an invisible character: delete it)"}));
 }
 
 TEST(UnusualCharacters, AByteOrderMarkInTheMiddle) {
     // Two files joined with cat: the second one's BOM lands in the middle.
-    EXPECT_EQ(messages("/fps 24\n\xEF\xBB\xBF/amb_light 1\n"),
-              (Lines{"2:1: error: expected a command starting with '/', got '\xEF\xBB\xBF/amb_light' (it contains "
-                     "U+FEFF ZERO WIDTH NO-BREAK SPACE at column 1, a byte order mark, allowed only at the very "
-                     "start of the file)"}));
+    EXPECT_EQ(
+        messages("/fps 24\n\xEF\xBB\xBF/amb_light 1\n"),
+        (Lines{"2:1: error: expected a command starting with '/', got '\xEF\xBB\xBF/amb_light' (it contains "
+               "U+FEFF ZERO WIDTH NO-BREAK SPACE at column 1, a byte order mark, allowed only at the very "
+               "start of the file)"}));
 }
 
 TEST(UnusualCharacters, OtherCharactersGetTheirCode) {
-    EXPECT_EQ(messages("/sphere caf\u00E9 1 0 0 0\n"),
-              (Lines{"1:9: error: invalid name 'caf\u00E9' (expected a letter or '_', then letters, digits or '_'; "
-                     "it contains U+00E9 at column 12, but commands, names and numbers are plain ASCII)"}));
+    EXPECT_EQ(
+        messages("/sphere caf\u00E9 1 0 0 0\n"),
+        (Lines{"1:9: error: invalid name 'caf\u00E9' (expected a letter or '_', then letters, digits or '_'; "
+               "it contains U+00E9 at column 12, but commands, names and numbers are plain ASCII)"}));
     // Latin-1, not UTF-8.
-    EXPECT_EQ(messages("/sphere caf\xE9 1 0 0 0\n"),
-              (Lines{"1:9: error: invalid name 'caf\\xe9' (expected a letter or '_', then letters, digits or '_'; "
-                     "it contains the byte 0xE9 at column 12, which is not UTF-8 text)"}));
+    EXPECT_EQ(
+        messages("/sphere caf\xE9 1 0 0 0\n"),
+        (Lines{"1:9: error: invalid name 'caf\\xe9' (expected a letter or '_', then letters, digits or '_'; "
+               "it contains the byte 0xE9 at column 12, which is not UTF-8 text)"}));
 }
 
 TEST(UnusualCharacters, NoteNamesOnlyTheFirstAndIgnoresTabs) {
     EXPECT_EQ(unusualCharacterNote("a\tb", 1), "");
-    EXPECT_EQ(unusualCharacterNote("ab\x0B\u00A0", 5),
-              "it contains U+000B LINE TABULATION (vertical tab) at column 7, which does not separate tokens: "
-              "only spaces and tabs do");
-    EXPECT_EQ(unusualCharacterNote("1\r2", 1),
-              "it contains U+000D CARRIAGE RETURN at column 2, which ends a line only just before a line feed");
+    EXPECT_EQ(
+        unusualCharacterNote("ab\x0B\u00A0", 5),
+        "it contains U+000B LINE TABULATION (vertical tab) at column 7, which does not separate tokens: "
+        "only spaces and tabs do");
+    EXPECT_EQ(
+        unusualCharacterNote("1\r2", 1),
+        "it contains U+000D CARRIAGE RETURN at column 2, which ends a line only just before a line feed");
     EXPECT_EQ(unusualCharacterNote(std::string_view("x\0", 2), 1),
               "it contains U+0000 NULL at column 2, an invisible character: delete it");
-    EXPECT_EQ(unusualCharacterNote("\u2014", 3), "it contains U+2014 EM DASH at column 3, which is not a minus: write '-'");
-    EXPECT_EQ(unusualCharacterNote("\u201Cr1\u201D", 1), "it contains U+201C LEFT DOUBLE QUOTATION MARK at column 1");
-    EXPECT_EQ(unusualCharacterNote("\xFE\xFF\x00/", 1),
-              "it contains the bytes 0xFE 0xFF at column 1, a UTF-16 byte order mark: save the file as UTF-8");
+    EXPECT_EQ(unusualCharacterNote("\u2014", 3),
+              "it contains U+2014 EM DASH at column 3, which is not a minus: write '-'");
+    EXPECT_EQ(unusualCharacterNote("\u201Cr1\u201D", 1),
+              "it contains U+201C LEFT DOUBLE QUOTATION MARK at column 1");
+    EXPECT_EQ(
+        unusualCharacterNote("\xFE\xFF\x00/", 1),
+        "it contains the bytes 0xFE 0xFF at column 1, a UTF-16 byte order mark: save the file as UTF-8");
     EXPECT_EQ(unusualCharacterNote("a\x1B", 1), "it contains U+001B at column 2, a control character");
 }
 
@@ -169,14 +190,19 @@ TEST(DidYouMean, NamesDifferingInCaseOrByATypo) {
     EXPECT_EQ(messages("/sphere ab 1 0 0 0\n/sphere ac 1 0 0 0\n/paint ad 1 1 1\n"),
               (Lines{"3:8: error: unknown name 'ad' (did you mean 'ab'?)"}));
     // Nothing close: no hint.
-    EXPECT_EQ(messages("/sphere ball 1 0 0 0\n/sphere s 1 0 0 0\n/paint xyz 1 1 1\n/paint r1 1 1 1\n/paint q 1 1 1\n"),
-              (Lines{"3:8: error: unknown name 'xyz'", "4:8: error: unknown name 'r1'", "5:8: error: unknown name 'q'"}));
+    EXPECT_EQ(
+        messages(
+            "/sphere ball 1 0 0 0\n/sphere s 1 0 0 0\n/paint xyz 1 1 1\n/paint r1 1 1 1\n/paint q 1 1 1\n"),
+        (Lines{"3:8: error: unknown name 'xyz'", "4:8: error: unknown name 'r1'",
+               "5:8: error: unknown name 'q'"}));
 }
 
 TEST(DidYouMean, Parts) {
     const std::string robot = "/robot r1 0 0 0\n";
-    EXPECT_EQ(messages(robot + "/key 0 r1.Head\n"), (Lines{"2:11: error: unknown part 'Head' (did you mean 'head'?)"}));
-    EXPECT_EQ(messages(robot + "/anim r1 lhnd\n"), (Lines{"2:10: error: unknown part 'lhnd' (did you mean 'lhand'?)"}));
+    EXPECT_EQ(messages(robot + "/key 0 r1.Head\n"),
+              (Lines{"2:11: error: unknown part 'Head' (did you mean 'head'?)"}));
+    EXPECT_EQ(messages(robot + "/anim r1 lhnd\n"),
+              (Lines{"2:10: error: unknown part 'lhnd' (did you mean 'lhand'?)"}));
     EXPECT_EQ(messages(robot + "/key 0 r1.left_arm\n"),
               (Lines{"2:11: error: unknown part 'left_arm' (did you mean 'lhand'?)"}));
     EXPECT_EQ(messages(robot + "/paint r1.torso 1 1 1\n"),
@@ -200,7 +226,8 @@ TEST(SceneWarnings, NoLightMeansEveryObjectIsBlack) {
 }
 
 TEST(SceneWarnings, AnEmptyScene) {
-    EXPECT_EQ(messages(""), (Lines{"1:1: warning: the scene has no objects: every frame shows only the background"}));
+    EXPECT_EQ(messages(""),
+              (Lines{"1:1: warning: the scene has no objects: every frame shows only the background"}));
     EXPECT_EQ(messages("# nothing\n/camera 10 10 1\n/amb_light 1\n"),
               (Lines{"1:1: warning: the scene has no objects: every frame shows only the background"}));
     EXPECT_TRUE(parseScene("", kFile).ok());
@@ -225,7 +252,8 @@ TEST(SceneWarnings, ASecondInterpForTheSameTarget) {
               Interpolation::Spline);
     // A broken /interp does not count as the first.
     EXPECT_EQ(messages("/robot r1 0 0 0\n/amb_light 1\n/interp r1 cubic\n/interp r1 ease\n"),
-              (Lines{"3:12: error: unknown interpolation 'cubic' (expected linear, ease, ease_in, ease_out, step or spline)"}));
+              (Lines{"3:12: error: unknown interpolation 'cubic' (expected linear, ease, ease_in, ease_out, "
+                     "step or spline)"}));
 }
 
 }  // namespace

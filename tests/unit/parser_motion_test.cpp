@@ -39,7 +39,9 @@ TEST(ParserCamera, RestKeyWithoutCameraCommandIsTheDefaultPose) {
 }
 
 TEST(ParserCamera, RepeatedCameraKeyWarnsAtItsPlace) {
-    const ParseResult r = parseScene("/key 2 camera 1 1 1 0 0 0\n/camera 80 60 1\n/key 2 camera\n/sphere s 1 0 0 0\n/amb_light 1\n", kFile);
+    const ParseResult r = parseScene(
+        "/key 2 camera 1 1 1 0 0 0\n/camera 80 60 1\n/key 2 camera\n/sphere s 1 0 0 0\n/amb_light 1\n",
+        kFile);
     ASSERT_TRUE(r.ok());
     ASSERT_EQ(r.diagnostics.size(), 1u);
     EXPECT_EQ(r.diagnostics[0].format(),
@@ -100,16 +102,17 @@ TEST(ParserAttach, Errors) {
     expectOnlyError(two + "/attach a r.leg\n", 3, 13, "unknown part 'leg'");
     expectOnlyError(two + "/attach r.head a\n", 3, 9, "only a whole object or the camera can be attached");
     expectOnlyError(two + "/attach a r\n/attach a r.head\n", 4, 9, "'a' is already attached (at 3:1)");
-    expectOnlyError(two + "/attach camera a\n/attach camera r\n", 4, 9, "'camera' is already attached (at 3:1)");
+    expectOnlyError(two + "/attach camera a\n/attach camera r\n", 4, 9,
+                    "'camera' is already attached (at 3:1)");
     expectOnlyError(two + "/attach a a\n", 3, 1, "'a' cannot be attached to itself");
     expectOnlyError(two + "/attach r r.head\n", 3, 1, "'r' cannot be attached to its own part");
     expectOnlyError(two + "/attach a r\n/attach r a\n", 4, 1,
-                "attaching 'r' to 'a' makes a cycle: 'a' already rides on 'r'");
+                    "attaching 'r' to 'a' makes a cycle: 'a' already rides on 'r'");
     // A longer cycle is found at the /attach that closes it.
     expectOnlyError(two + "/sphere c 1 0 0 0\n/attach a r\n/attach r c\n/attach c a\n", 6, 1,
-                "attaching 'c' to 'a' makes a cycle: 'a' already rides on 'c'");
+                    "attaching 'c' to 'a' makes a cycle: 'a' already rides on 'c'");
     expectOnlyError(two + "/sphere c 1 0 0 0\n/attach c a\n/attach r a\n/attach a r.rhand\n", 6, 1,
-                "attaching 'a' to 'r.rhand' makes a cycle: 'r' already rides on 'a'");
+                    "attaching 'a' to 'r.rhand' makes a cycle: 'r' already rides on 'a'");
 }
 
 TEST(ParserAttach, TreesWithoutCyclesAreFine) {
@@ -138,13 +141,15 @@ TEST(ParserModes, EveryModeWordOnKeysAndInterp) {
 
 TEST(ParserModes, Errors) {
     const std::string a = "/sphere a 1 0 0 0\n";
-    expectOnlyError(a + "/key 0 a 1 2 3 4 5 6 wobble\n", 2, 22,
-                "unknown interpolation 'wobble' (expected linear, ease, ease_in, ease_out, step or spline)");
+    expectOnlyError(
+        a + "/key 0 a 1 2 3 4 5 6 wobble\n", 2, 22,
+        "unknown interpolation 'wobble' (expected linear, ease, ease_in, ease_out, step or spline)");
     expectOnlyError(a + "/key 0 a Ease\n", 2, 10, "unknown interpolation 'Ease'");  // lower case only
     expectOnlyError(a + "/interp a easein\n", 2, 11, "unknown interpolation 'easein'");
     expectOnlyError("/interp camera wobble\n", 1, 16, "unknown interpolation 'wobble'");
     expectOnlyError(a + "/key 0 a 1 2 3 ease\n", 2, 1, "'/key' takes 0 or 6 numbers after the target, got 3");
-    expectOnlyError(a + "/key 0 a 1 2 3 4 5 6 7\n", 2, 1, "'/key' takes 0 or 6 numbers after the target, got 7");
+    expectOnlyError(a + "/key 0 a 1 2 3 4 5 6 7\n", 2, 1,
+                    "'/key' takes 0 or 6 numbers after the target, got 7");
     expectOnlyError(a + "/key 0 a ease ease\n", 2, 1, "'/key' takes 0 or 6 numbers after the target, got 1");
 }
 

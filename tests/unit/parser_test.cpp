@@ -860,19 +860,23 @@ TEST(ParserError, BinaryGarbageGivesEscapedErrors) {
     ParseResult r = parseScene(text, kFile);
     EXPECT_FALSE(r.ok());
     ASSERT_EQ(r.diagnostics.size(), 4u) << dump(r);
-    EXPECT_EQ(r.diagnostics[0].format(),
-              "t.f2:1:9: error: invalid name '\\xff\\xfe\\x00\\x01' (expected a letter "
-              "or '_', then letters, digits or '_'; it contains the bytes 0xFF 0xFE at column 9, a UTF-16 byte "
-              "order mark: save the file as UTF-8)");
-    EXPECT_EQ(r.diagnostics[1].format(),
-              "t.f2:2:1: error: expected a command starting with '/', got '\\x00\\x00\\x00' (it contains U+0000 "
-              "NULL at column 1, an invisible character: delete it)");
-    EXPECT_EQ(r.diagnostics[2].format(),
-              "t.f2:3:1: error: expected a command starting with '/', got '\\x89PNG' (it contains the byte 0x89 "
-              "at column 1, which is not UTF-8 text)");
-    EXPECT_EQ(r.diagnostics[3].format(),
-              "t.f2:4:1: error: expected a command starting with '/', got '\\x1a' (it contains U+001A at column "
-              "1, a control character)");
+    EXPECT_EQ(
+        r.diagnostics[0].format(),
+        "t.f2:1:9: error: invalid name '\\xff\\xfe\\x00\\x01' (expected a letter "
+        "or '_', then letters, digits or '_'; it contains the bytes 0xFF 0xFE at column 9, a UTF-16 byte "
+        "order mark: save the file as UTF-8)");
+    EXPECT_EQ(
+        r.diagnostics[1].format(),
+        "t.f2:2:1: error: expected a command starting with '/', got '\\x00\\x00\\x00' (it contains U+0000 "
+        "NULL at column 1, an invisible character: delete it)");
+    EXPECT_EQ(
+        r.diagnostics[2].format(),
+        "t.f2:3:1: error: expected a command starting with '/', got '\\x89PNG' (it contains the byte 0x89 "
+        "at column 1, which is not UTF-8 text)");
+    EXPECT_EQ(
+        r.diagnostics[3].format(),
+        "t.f2:4:1: error: expected a command starting with '/', got '\\x1a' (it contains U+001A at column "
+        "1, a control character)");
     // Messages are printable ASCII or valid UTF-8 only.
     for (const Diagnostic& d : r.diagnostics) {
         for (char c : d.message) EXPECT_TRUE(static_cast<unsigned char>(c) >= 0x20) << d.message;

@@ -1,6 +1,8 @@
 // pickPixel names what the renderer drew: every pixel of a flat-lit scene
 // (ambient only, so each object and part shows its own paint) is picked as
 // the object or part whose paint the packet renderer put there.
+#include "core/render/pick.h"
+
 #include <gtest/gtest.h>
 
 #include <array>
@@ -8,7 +10,6 @@
 #include <set>
 
 #include "core/anim/frame_builder.h"
-#include "core/render/pick.h"
 #include "core/render/renderer.h"
 #include "test_scenes.h"
 
@@ -67,7 +68,8 @@ TEST(Pick, EveryPixelNamesWhatTheRendererDrew) {
                     ++eyes;
                     continue;
                 }
-                EXPECT_EQ(drawn, (Rgb8{paint.r, paint.g, paint.b})) << "pixel " << x << "," << y << " t=" << t;
+                EXPECT_EQ(drawn, (Rgb8{paint.r, paint.g, paint.b}))
+                    << "pixel " << x << "," << y << " t=" << t;
             }
         }
         // The ball, the crate and all four parts of the robot were picked somewhere.

@@ -1,10 +1,11 @@
 // tracePixel(): the story of one pixel must be the reference path's own
 // computation, told completely.
+#include "core/render/pixel_report.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "core/render/pixel_report.h"
 #include "core/render/renderer.h"
 #include "test_scenes.h"
 
@@ -24,7 +25,8 @@ struct Rendered {
     Renderer renderer{1};
     Camera camera;
     Image reference;
-    explicit Rendered(const char* text) : scene(test::sceneFromText(text)), camera(Camera::fromDesc(scene.camera)) {
+    explicit Rendered(const char* text)
+        : scene(test::sceneFromText(text)), camera(Camera::fromDesc(scene.camera)) {
         Image packet;
         renderer.render(scene, 0, camera, packet);
         traceReference(renderer.frame(), camera, reference);
@@ -60,8 +62,9 @@ TEST(PixelReport, EveryPixelIsTheReferencePathsPixel) {
                     EXPECT_EQ(l.term.diffuse, 0.0f);
                 }
             }
-            EXPECT_NEAR(report.color.x, report.surfaceColor.x * diffuse + report.lights[0].term.specular +
-                                            report.lights[1].term.specular,
+            EXPECT_NEAR(report.color.x,
+                        report.surfaceColor.x * diffuse + report.lights[0].term.specular +
+                            report.lights[1].term.specular,
                         1e-5f);
         }
     EXPECT_GT(hits, 100);
@@ -103,8 +106,9 @@ TEST(PixelReport, NamesModelParts) {
 }
 
 TEST(PixelReport, CoincidentSurfacesAreAllListedAndTheFirstWins) {
-    Rendered r("/camera 40 30 0.5\n/box a 50 50 50 0 0 200\n/paint a 255 0 0\n"
-               "/box b 50 50 50 0 0 200\n/paint b 0 255 0\n/amb_light 1\n");
+    Rendered r(
+        "/camera 40 30 0.5\n/box a 50 50 50 0 0 200\n/paint a 255 0 0\n"
+        "/box b 50 50 50 0 0 200\n/paint b 0 255 0\n/amb_light 1\n");
     PixelReport report = tracePixel(r.renderer.frame(), r.camera, 20, 15);
     ASSERT_EQ(report.crossings.size(), 2u);
     EXPECT_EQ(report.crossings[0].t, report.crossings[1].t);

@@ -78,12 +78,12 @@ TEST(Render, LitSpherePixelsMatchThePhongFormula) {
                 D3 R = n * (2 * nl) - L;
                 specular += intensity[l] * 0.3 * std::pow(std::max(0.0, dot(R, v)), 32);
             }
-            expectPixelNear(image, i, j, byte(colour.x * diffuse + specular), byte(colour.y * diffuse + specular),
-                            byte(colour.z * diffuse + specular));
+            expectPixelNear(image, i, j, byte(colour.x * diffuse + specular),
+                            byte(colour.y * diffuse + specular), byte(colour.z * diffuse + specular));
             ++checked;
         }
     }
-    EXPECT_GT(checked, 20);  // the loop really sampled the sphere
+    EXPECT_GT(checked, 20);                    // the loop really sampled the sphere
     expectPixelNear(image, 0, 0, 10, 20, 30);  // background corner
 }
 
@@ -157,7 +157,8 @@ TEST(Render, DefaultSceneShowsTheRobotAndBothPeople) {
     for (std::size_t prim : {1u, 7u, 11u}) {
         Vec3 local = camera.worldFromCamera.transposed() * (frame.primitives[prim].centre - camera.eye);
         int i = int((local.x / local.z * camera.distance + 0.5f) * camera.width);
-        int j = int((0.5f - local.y / local.z * camera.distance * camera.width / camera.height) * camera.height);
+        int j =
+            int((0.5f - local.y / local.z * camera.distance * camera.width / camera.height) * camera.height);
         Rgb8 p = image.at(i, j);
         Vec3 c = frame.surfaces[prim].color;
         // Brightest channel of the pixel is the brightest channel of the paint.
@@ -277,7 +278,8 @@ TEST(PacketPath, MatchesReferenceOnAGridOfRobots) {
     spec.shape = BenchShape::Robots;
     spec.count = 400;
     SceneDesc scene = test::sceneFromText(benchSceneText(spec, 200, 150));
-    for (double t : {0.0, 13.0}) expectPacketPathMatchesReference(scene, t, "400 robots at " + std::to_string(t));
+    for (double t : {0.0, 13.0})
+        expectPacketPathMatchesReference(scene, t, "400 robots at " + std::to_string(t));
 }
 
 TEST(PacketPath, MatchesReferenceWithTheCameraInsideASphere) {

@@ -117,7 +117,8 @@ TEST(Robustness, HugeNumbersAreOutOfRange) {
     expectOneError("/camera 1" + std::string(99, '0') + " 10 1\n",
                    "t.f2:1:9: error: number '1" + std::string(47, '0') +
                        "...' is out of range (the largest magnitude is 3.4e38)");
-    expectOneError("/fps 4294967297\n", "t.f2:1:6: error: fps must be a whole number from 1 to 1000, got 4294967297");
+    expectOneError("/fps 4294967297\n",
+                   "t.f2:1:6: error: fps must be a whole number from 1 to 1000, got 4294967297");
     expectOneError("/sphere s 1 0 0 0\n/key 2147483648 s\n",
                    "t.f2:2:6: error: key frame must be a whole number from 0 to 10000000, got 2147483648");
 }
@@ -134,11 +135,13 @@ TEST(Robustness, LongButSmallNumbersAreAccepted) {
 }
 
 TEST(Robustness, NegativeZeroIsZero) {
-    const SceneDesc s = test::sceneFromText("/sphere s 1 -0 -0.0 -0e5 -0 -0 -0\n/key -0 s\n/background -0 -0 -0\n");
+    const SceneDesc s =
+        test::sceneFromText("/sphere s 1 -0 -0.0 -0e5 -0 -0 -0\n/key -0 s\n/background -0 -0 -0\n");
     EXPECT_FALSE(std::signbit(s.objects[0].rest.position.x));
     EXPECT_FALSE(std::signbit(s.objects[0].rest.rotation.z));
     EXPECT_EQ(s.objects[0].track.keys.at(0).frame, 0);
-    expectOneError("/camera -0 10 1\n", "t.f2:1:9: error: image width must be a whole number from 1 to 16384, got -0");
+    expectOneError("/camera -0 10 1\n",
+                   "t.f2:1:9: error: image width must be a whole number from 1 to 16384, got -0");
     expectOneError("/dir_light 1 -0 0 -0\n", "t.f2:1:14: error: light direction must not be 0 0 0");
 }
 
@@ -155,7 +158,8 @@ TEST(Robustness, NanAndInfinityInEveryCase) {
 
 TEST(Robustness, SumsThatOverflowAreErrors) {
     // Each number fits a float, their sum does not: the ambient total must stay finite.
-    expectOneError("/amb_light 3e38\n/amb_light 3e38\n", "t.f2:2:12: error: total ambient intensity is out of range");
+    expectOneError("/amb_light 3e38\n/amb_light 3e38\n",
+                   "t.f2:2:12: error: total ambient intensity is out of range");
     // A direction whose squared length overflows a float cannot be normalised.
     expectOneError("/dir_light 1 3e38 3e38 0\n",
                    "t.f2:1:14: error: light direction cannot be normalised (its length is too close to 0 or "
@@ -216,9 +220,10 @@ TEST(Robustness, BomAndCrLfSimplyWork) {
     expectOneError("/fps 1\r\r\n",
                    "t.f2:1:6: error: expected a number, got '1\\x0d' (it contains U+000D CARRIAGE RETURN at "
                    "column 7, which ends a line only just before a line feed)");
-    expectOneError("/fps 1\r/fps 2\n",
-                   "t.f2:1:1: error: '/fps' takes 1 argument, got 2 (it contains U+000D CARRIAGE RETURN at column "
-                   "7, which ends a line only just before a line feed)");
+    expectOneError(
+        "/fps 1\r/fps 2\n",
+        "t.f2:1:1: error: '/fps' takes 1 argument, got 2 (it contains U+000D CARRIAGE RETURN at column "
+        "7, which ends a line only just before a line feed)");
     // Only a BOM, or only line ends: an empty scene.
     EXPECT_TRUE(parseScene("\xEF\xBB\xBF", "t.f2").ok());
     EXPECT_TRUE(parseScene("\r\n\r\n\n", "t.f2").ok());
@@ -229,9 +234,10 @@ TEST(Robustness, NulBytesAndUtf16AreErrorsNotTruncation) {
     const std::string withNul("/fps 1\n\0/fps 2\n", 15);
     const ParseResult r = parseScene(withNul, "t.f2");
     ASSERT_EQ(r.diagnostics.size(), 1u) << dump(r);
-    EXPECT_EQ(r.diagnostics[0].format(),
-              "t.f2:2:1: error: expected a command starting with '/', got '\\x00/fps' (it contains U+0000 NULL at "
-              "column 1, an invisible character: delete it)");
+    EXPECT_EQ(
+        r.diagnostics[0].format(),
+        "t.f2:2:1: error: expected a command starting with '/', got '\\x00/fps' (it contains U+0000 NULL at "
+        "column 1, an invisible character: delete it)");
     static constexpr char kUtf16[] = "\xFF\xFE/\0f\0p\0s\0 \0001\0\n\0";
     const std::string utf16(kUtf16, sizeof kUtf16 - 1);
     const ParseResult u = parseScene(utf16, "t.f2");
@@ -248,7 +254,8 @@ TEST(Robustness, LargestCameraDoesNotAllocateTheImage) {
     {
         AllocationMeter meter;
         r = parseScene("/camera 16384 4096 0.5\n", "t.f2");
-        EXPECT_LT(meter.largest(), 4096u) << "the parser allocated a block of " << meter.largest() << " bytes";
+        EXPECT_LT(meter.largest(), 4096u)
+            << "the parser allocated a block of " << meter.largest() << " bytes";
         EXPECT_LT(meter.total(), 16u << 10);
     }
     ASSERT_TRUE(r.ok()) << dump(r);
@@ -284,9 +291,10 @@ TEST(Robustness, MillionObjectsAreAllowedAndMemoryIsProportional) {
     ASSERT_TRUE(r.ok()) << dump(r);
     EXPECT_EQ(r.scene->objects.size(), std::size_t(n));
     const double perByte = double(total) / double(text.size());
-    std::printf("1,000,000 objects: %zu bytes of text, %zu bytes allocated in all (%.1f per byte of text), "
-                "largest block %zu, %.2f s\n",
-                text.size(), total, perByte, largest, seconds);
+    std::printf(
+        "1,000,000 objects: %zu bytes of text, %zu bytes allocated in all (%.1f per byte of text), "
+        "largest block %zu, %.2f s\n",
+        text.size(), total, perByte, largest, seconds);
     // Proportional to the text: sizeof(SceneObject) and its bookkeeping per ~20-byte line,
     // vectors doubling. Measured ~ 40 per byte; the bound catches quadratic or wasteful growth.
     EXPECT_LT(perByte, 100.0);
@@ -295,8 +303,9 @@ TEST(Robustness, MillionObjectsAreAllowedAndMemoryIsProportional) {
     text += "/sphere one_too_many 1 0 0 0\n";
     r = parseScene(text, "t.f2");
     ASSERT_EQ(r.diagnostics.size(), 1u);
-    EXPECT_EQ(r.diagnostics[0].format(),
-              "t.f2:1000001:1: error: too many objects: at most 1000000 allowed (a robot or human counts as one)");
+    EXPECT_EQ(
+        r.diagnostics[0].format(),
+        "t.f2:1000001:1: error: too many objects: at most 1000000 allowed (a robot or human counts as one)");
 }
 
 TEST(Robustness, KeyMemoryIsProportionalToText) {
@@ -343,9 +352,8 @@ TEST(Robustness, ThousandLightsAtMost) {
 class RobustnessFile : public ::testing::Test {
    protected:
     void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("f2_robustness_" + std::to_string(::getpid()) + "_" +
-                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        dir_ = fs::temp_directory_path() / ("f2_robustness_" + std::to_string(::getpid()) + "_" +
+                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
         fs::create_directories(dir_);
     }
     void TearDown() override {
@@ -368,9 +376,9 @@ class RobustnessFile : public ::testing::Test {
 // Regression: the path in "cannot read '...'" was cut after 48 bytes like a token.
 TEST_F(RobustnessFile, LongPathsAreQuotedWhole) {
     const std::string path = (dir_ / (std::string(120, 'p') + "\x01.f2")).string();
-    EXPECT_EQ(one(parseSceneFile(path)),
-              path + ":1:1: error: cannot read '" + path.substr(0, path.size() - 4) +
-                  "\\x01.f2': No such file or directory");
+    EXPECT_EQ(one(parseSceneFile(path)), path + ":1:1: error: cannot read '" +
+                                             path.substr(0, path.size() - 4) +
+                                             "\\x01.f2': No such file or directory");
 }
 
 TEST_F(RobustnessFile, EmptyFileIsTheEmptyScene) {
@@ -402,7 +410,8 @@ TEST_F(RobustnessFile, AFifoIsRefusedWithoutBlocking) {
 
 TEST_F(RobustnessFile, FileInAnUnreadableOrMissingDirectory) {
     const std::string path = (dir_ / "no" / "such" / "dir" / "s.f2").string();
-    EXPECT_EQ(one(parseSceneFile(path)), path + ":1:1: error: cannot read '" + path + "': No such file or directory");
+    EXPECT_EQ(one(parseSceneFile(path)),
+              path + ":1:1: error: cannot read '" + path + "': No such file or directory");
     // A path through a regular file: ENOTDIR.
     const std::string file = write("plain.f2", "/fps 1\n");
     const ParseResult r = parseSceneFile(file + "/x.f2");

@@ -5,6 +5,8 @@
 //   Ry(a): z' = z cos a - x sin a,  x' = z sin a + x cos a
 //   Rz(a): x' = x cos a - y sin a,  y' = x sin a + y cos a
 // with R = Rz * Ry * Rx and world = R * local + position.
+#include "core/math/transform.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,14 +17,13 @@
 #include <random>
 #include <string>
 
-#include "core/math/transform.h"
 #include "test_scenes.h"
 
 namespace f2 {
 namespace {
 
 constexpr float kTol = 1e-5f;
-const float kSqrtHalf = std::sqrt(0.5f);  // sin 45 = cos 45
+const float kSqrtHalf = std::sqrt(0.5f);          // sin 45 = cos 45
 const float kSqrt3Half = std::sqrt(3.0f) / 2.0f;  // cos 30 = sin 60
 
 Mat3 identity() { return Mat3{}; }
@@ -66,7 +67,8 @@ TEST(Rotation, NonRightAngles) {
     // Ry(60) (0,0,1): x' = sin 60 = sqrt(3)/2, z' = cos 60 = 1/2.
     EXPECT_VEC_NEAR(rotationFromEulerDegrees(0, 60, 0) * Vec3(0, 0, 1), Vec3(kSqrt3Half, 0, 0.5f), kTol);
     // Rx(-45) (0,1,0): y' = cos(-45) = sqrt(1/2), z' = sin(-45) = -sqrt(1/2).
-    EXPECT_VEC_NEAR(rotationFromEulerDegrees(-45, 0, 0) * Vec3(0, 1, 0), Vec3(0, kSqrtHalf, -kSqrtHalf), kTol);
+    EXPECT_VEC_NEAR(rotationFromEulerDegrees(-45, 0, 0) * Vec3(0, 1, 0), Vec3(0, kSqrtHalf, -kSqrtHalf),
+                    kTol);
 }
 
 TEST(Rotation, RxThenRyOnAPoint) {
@@ -117,8 +119,8 @@ struct PointCase {
 };
 
 void PrintTo(const PointCase& c, std::ostream* os) {
-    *os << c.name << ": pose " << c.position << " rot " << c.rotation << ", local " << c.local << " <-> global "
-        << c.global;
+    *os << c.name << ": pose " << c.position << " rot " << c.rotation << ", local " << c.local
+        << " <-> global " << c.global;
 }
 
 class LocalGlobal : public ::testing::TestWithParam<PointCase> {};
@@ -220,8 +222,8 @@ TEST(TransformProperty, InverseRigidRoundTrips) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<float> angle(-180.0f, 180.0f), coord(-100.0f, 100.0f);
     for (int n = 0; n < 2000; ++n) {
-        Transform t = Transform::fromPose({coord(rng), coord(rng), coord(rng)},
-                                          {angle(rng), angle(rng), angle(rng)});
+        Transform t =
+            Transform::fromPose({coord(rng), coord(rng), coord(rng)}, {angle(rng), angle(rng), angle(rng)});
         Transform inv = t.inverseRigid();
         Vec3 p{coord(rng), coord(rng), coord(rng)};
         // Coordinates up to ~300 in float: a few ulps of 300 is ~1e-4.

@@ -185,7 +185,8 @@ void EditorTest::errorKeepsImageAndUnderlinesColumn() {
     bool underlined = false;
     for (const QTextEdit::ExtraSelection& s : editor->extraSelections())
         underlined |= s.format.underlineStyle() == QTextCharFormat::SpellCheckUnderline &&
-                      s.cursor.selectionStart() == lineStart + 11 && s.cursor.selectionEnd() == lineStart + 14;
+                      s.cursor.selectionStart() == lineStart + 11 &&
+                      s.cursor.selectionEnd() == lineStart + 14;
     QVERIFY(underlined);
 
     // A new frame of the same time still shows the last good scene.
@@ -440,9 +441,10 @@ void EditorTest::largeSceneTypesSmoothly() {
                              kWaitMs);
     QVERIFY(!w.document()->hasErrors());
     QVERIFY(w.editor()->document()->findBlockByNumber(4999).text().startsWith(typed));
-    qInfo("10,000-line scene: parse %.1f ms (worker thread), open %.1f ms, typing %.2f ms per key "
-          "(slowest %.2f ms) with the parse off the GUI thread",
-          parseMs, openMs, perKeyMs, slowestMs);
+    qInfo(
+        "10,000-line scene: parse %.1f ms (worker thread), open %.1f ms, typing %.2f ms per key "
+        "(slowest %.2f ms) with the parse off the GUI thread",
+        parseMs, openMs, perKeyMs, slowestMs);
 }
 
 void EditorTest::captureWritesLinesInOneUndoStep() {
@@ -461,14 +463,14 @@ void EditorTest::captureWritesLinesInOneUndoStep() {
     QVERIFY(w->viewport()->isOrbiting());
     const Pose view = w->viewport()->orbit()->pose();
     w->setCameraFromView();
-    const QString expected = QStringLiteral("/camera 96 72 0.6 %1 %2 %3 %4 %5 0")
-                                 .arg(formatNumber(view.position.x), formatNumber(view.position.y),
-                                      formatNumber(view.position.z), formatNumber(view.rotation.x),
-                                      formatNumber(view.rotation.y));
+    const QString expected =
+        QStringLiteral("/camera 96 72 0.6 %1 %2 %3 %4 %5 0")
+            .arg(formatNumber(view.position.x), formatNumber(view.position.y), formatNumber(view.position.z),
+                 formatNumber(view.rotation.x), formatNumber(view.rotation.y));
     QCOMPARE(doc->firstBlock().text(), expected);
     QCOMPARE(editor->textCursor().selectedText(), expected);
-    QTRY_VERIFY_WITH_TIMEOUT(std::fabs(w->document()->scene()->camera.pose.rotation.y - view.rotation.y) < 0.01f,
-                             kWaitMs);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        std::fabs(w->document()->scene()->camera.pose.rotation.y - view.rotation.y) < 0.01f, kWaitMs);
     editor->undo();
     QCOMPARE(editor->toPlainText(), original);
 

@@ -83,5 +83,4 @@ void expectViewportMatchesCore(MainWindow& w, double t) {
              "viewer image differs from Renderer::render at the same camera/size");
 }
 
-
 }  // namespace f2::viewer::test

@@ -10,10 +10,10 @@
 #include <QProcess>
 #include <QProgressDialog>
 #include <QPushButton>
-#include <QStandardPaths>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QSpinBox>
+#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
@@ -23,12 +23,10 @@
 
 #include "animation_exporter.h"
 #include "autosave.h"
-#include "editor_dock.h"
-#include "scene_editor.h"
-#include "scene_highlighter.h"
 #include "core/parse/parser.h"
-#include "help_windows.h"
 #include "core/render/renderer.h"
+#include "editor_dock.h"
+#include "help_windows.h"
 #include "image_convert.h"
 #include "io/png_writer.h"
 #include "io/sequence_sink.h"
@@ -38,6 +36,8 @@
 #include "playback.h"
 #include "render_controller.h"
 #include "scene_document.h"
+#include "scene_editor.h"
+#include "scene_highlighter.h"
 #include "test_support.h"
 #include "timeline_widget.h"
 #include "viewport_widget.h"
@@ -107,7 +107,9 @@ class GatedSink : public FrameSink {
    public:
     GatedSink(const QString& path, std::shared_ptr<std::atomic<bool>> release)
         : video_(mp4Sink(path)), release_(std::move(release)) {}
-    bool begin(const FrameFormat& format, std::string& error) override { return video_->begin(format, error); }
+    bool begin(const FrameFormat& format, std::string& error) override {
+        return video_->begin(format, error);
+    }
     bool write(const Image& image, std::int64_t frame, std::string& error,
                const std::atomic<bool>* cancel) override {
         while (frame == 1 && !release_->load()) std::this_thread::sleep_for(5ms);
@@ -292,8 +294,9 @@ void ViewerTest::dialogsStartInTheScenesFolder() {
 void ViewerTest::helpMenuListsShortcutsAndReference() {
     MainWindow w;
     const QString shortcuts = shortcutList(w.menuBar());
-    for (const char* line : {"File › Save Scene\t", "File › Save Frame as PNG…\tF12", "Playback › Play / Pause\tSpace",
-                             "Edit › Find…\t", "Edit › Comment / Uncomment Lines\t"})
+    for (const char* line :
+         {"File › Save Scene\t", "File › Save Frame as PNG…\tF12", "Playback › Play / Pause\tSpace",
+          "Edit › Find…\t", "Edit › Comment / Uncomment Lines\t"})
         QVERIFY2(shortcuts.contains(QString::fromUtf8(line)), qPrintable(shortcuts));
     QVERIFY(shortcuts.contains(QKeySequence(QKeySequence::Save).toString(QKeySequence::NativeText)));
     const QString reference = languageReference();
@@ -322,7 +325,8 @@ void ViewerTest::clickSelectsWhatIsDrawn() {
     QVERIFY(camera.project({0, 0, 8}, px, py));
     const QRectF onScreen = w.viewport()->imageRect();
     auto widgetPoint = [&](float x, float y) {
-        return QPoint(int(onScreen.left() + x * onScreen.width() / 96), int(onScreen.top() + y * onScreen.height() / 72));
+        return QPoint(int(onScreen.left() + x * onScreen.width() / 96),
+                      int(onScreen.top() + y * onScreen.height() / 72));
     };
     QTest::mouseClick(w.viewport(), Qt::LeftButton, {}, widgetPoint(px, py));
     QVERIFY(w.selection().has_value());
@@ -424,7 +428,7 @@ void ViewerTest::stepGoesFromTheFrameShown() {
 
 void ViewerTest::renderScaleFollowsWindow() {
     MainWindow w;
-    w.editorDock()->hide();  // the offscreen screen is 800 pixels wide: all of it for the picture
+    w.editorDock()->hide();           // the offscreen screen is 800 pixels wide: all of it for the picture
     w.resizeForViewport({480, 300});  // wider than the transport bar needs
     w.show();
     QVERIFY(QTest::qWaitForWindowExposed(&w));
@@ -467,9 +471,8 @@ void ViewerTest::dragOrbitsWheelZoomsAndSceneCameraResets() {
     const Camera orbited = view->viewCamera();
     QVERIFY(length(orbited.eye - scene.eye) > 10.0f);
     QVERIFY(waitForShownFrame(w, 120));
-    QVERIFY(fromQImage(view->image()) !=
-            coreRender(*w.document()->scene(), 120, view->image().width(), view->image().height(),
-                       w.shownFrame().antialias));
+    QVERIFY(fromQImage(view->image()) != coreRender(*w.document()->scene(), 120, view->image().width(),
+                                                    view->image().height(), w.shownFrame().antialias));
     if (qEnvironmentVariableIsSet("F2_VIEWER_DUMP_DIR"))
         view->image().save(qEnvironmentVariable("F2_VIEWER_DUMP_DIR") + "/orbited.png");
 
@@ -673,7 +676,8 @@ void ViewerTest::exportWritesPngSequence() {
     slow.scene = scene;
     slow.view = FrameView::sceneCamera(1600, 1200);
     slow.lastFrame = 10;
-    slow.sink = std::make_unique<PngSequenceSink>(exportSequencePattern(dir.filePath("cancelled"), "small", 11));
+    slow.sink =
+        std::make_unique<PngSequenceSink>(exportSequencePattern(dir.filePath("cancelled"), "small", 11));
     QSignalSpy finished2(&exporter, &AnimationExporter::finished);
     exporter.start(std::move(slow));
     exporter.cancel();
@@ -724,9 +728,8 @@ void ViewerTest::cancelledVideoExportLeavesNoFile() {
     ExportJob job = seedExportJob(160, 120, 15, std::make_unique<GatedSink>(path, release));
     QVERIFY(job.scene);
     bool called = false, ok = true, cancelled = false;
-    exportWithProgress(nullptr, std::move(job), [&](bool o, bool c, const QString&) {
-        called = true, ok = o, cancelled = c;
-    });
+    exportWithProgress(nullptr, std::move(job),
+                       [&](bool o, bool c, const QString&) { called = true, ok = o, cancelled = c; });
     QProgressDialog* dialog = nullptr;
     for (QWidget* w : QApplication::topLevelWidgets())
         if (auto* d = qobject_cast<QProgressDialog*>(w)) dialog = d;

@@ -1,9 +1,9 @@
 #include "core/anim/frame_builder.h"
 
+#include <algorithm>
+
 #include "core/anim/track.h"
 #include "core/scene/models.h"
-
-#include <algorithm>
 
 namespace f2 {
 
@@ -30,7 +30,8 @@ std::array<Transform, kPartCount> modelPartFrames(const SceneObject& object, con
         if (motion.rotation == Vec3{}) {  // most parts of most frames: no matrix product
             worldFromPart[index] = worldFromParent.translated(origin);
         } else {
-            worldFromPart[index] = worldFromParent * Transform{rotationFromEulerDegrees(motion.rotation), origin};
+            worldFromPart[index] =
+                worldFromParent * Transform{rotationFromEulerDegrees(motion.rotation), origin};
         }
     }
     return worldFromPart;
@@ -133,7 +134,8 @@ void evaluateFrame(const SceneDesc& scene, double t, EvaluatedFrame& frame, Thre
         for (std::size_t i = chunk * kObjectsPerChunk; i < end; ++i) {
             if (i + kPrefetchAhead < end) prefetchKeys(scene.objects[i + kPrefetchAhead]);
             evaluateObject(scene.objects[i], worldFromRoot(scene, i, t, frame.attachedRoots), t,
-                           &frame.primitives[frame.firstPrimitive[i]], &frame.surfaces[frame.firstPrimitive[i]]);
+                           &frame.primitives[frame.firstPrimitive[i]],
+                           &frame.surfaces[frame.firstPrimitive[i]]);
         }
     };
     std::uint32_t chunks = std::uint32_t((objectCount + kObjectsPerChunk - 1) / kObjectsPerChunk);

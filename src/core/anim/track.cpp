@@ -8,15 +8,19 @@ double easeFraction(double u) { return u * u * (3.0 - 2.0 * u); }
 
 double interpolationWeight(Interpolation mode, double u) {
     switch (mode) {
-        case Interpolation::Ease: return easeFraction(u);
-        case Interpolation::EaseIn: return u * u * u;
+        case Interpolation::Ease:
+            return easeFraction(u);
+        case Interpolation::EaseIn:
+            return u * u * u;
         case Interpolation::EaseOut: {
             const double v = 1.0 - u;
             return 1.0 - v * v * v;
         }
-        case Interpolation::Step: return 0.0;
+        case Interpolation::Step:
+            return 0.0;
         case Interpolation::Linear:
-        case Interpolation::Spline: break;
+        case Interpolation::Spline:
+            break;
     }
     return u;
 }

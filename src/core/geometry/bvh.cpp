@@ -8,7 +8,7 @@ namespace {
 constexpr int kBinCount = 16;
 constexpr std::uint32_t kMaxLeafSize = 4;    // below this, no split is searched
 constexpr std::uint32_t kMaxLeafCount = 16;  // Node::count is 16 bits; packets test leaves whole
-constexpr float kTraversalCost = 1.0f;  // relative to one primitive test
+constexpr float kTraversalCost = 1.0f;       // relative to one primitive test
 // Past this depth SAH gives way to median splits, which halve the count, so a
 // hostile layout cannot make the tree deeper than the traversal stack.
 constexpr std::uint32_t kMaxSahDepth = 64;
@@ -47,8 +47,10 @@ inline float boxEntry(const Bounds& b, Vec3 origin, Vec3 invDir, float tMin, flo
     float ty0 = (b.lo.y - origin.y) * invDir.y, ty1 = (b.hi.y - origin.y) * invDir.y;
     float tz0 = (b.lo.z - origin.z) * invDir.z, tz1 = (b.hi.z - origin.z) * invDir.z;
     // std::min/max with the NaN of 0*inf on the first argument ignore it.
-    float enter = std::max(std::max(std::min(tx0, tx1), std::min(ty0, ty1)), std::max(std::min(tz0, tz1), tMin));
-    float exit = std::min(std::min(std::max(tx0, tx1), std::max(ty0, ty1)), std::min(std::max(tz0, tz1), tMax));
+    float enter =
+        std::max(std::max(std::min(tx0, tx1), std::min(ty0, ty1)), std::max(std::min(tz0, tz1), tMin));
+    float exit =
+        std::min(std::min(std::max(tx0, tx1), std::max(ty0, ty1)), std::min(std::max(tz0, tz1), tMax));
     return enter <= exit ? enter : kInfinity;
 }
 
@@ -119,7 +121,8 @@ void Bvh::buildNodes(std::span<const Primitive> primitives, std::vector<Node>& o
         }
         float leafCost = bounds.halfArea() * count;
         // A leaf when no split was searched or SAH prefers it; never more than kMaxLeafCount.
-        bool makeLeaf = count <= kMaxLeafCount && (bestAxis < 0 || kTraversalCost * bounds.halfArea() + bestCost >= leafCost);
+        bool makeLeaf = count <= kMaxLeafCount &&
+                        (bestAxis < 0 || kTraversalCost * bounds.halfArea() + bestCost >= leafCost);
         if (makeLeaf) {
             node.first = task.begin;
             node.count = std::uint16_t(count);
@@ -219,7 +222,8 @@ void Bvh::build(std::span<const Primitive> primitives, ThreadPool* pool) {
 float Bvh::sahCost() const {
     if (nodes_.empty()) return 0;
     float sum = 0;
-    for (const Node& node : nodes_) sum += node.bounds.halfArea() * (node.count > 0 ? float(node.count) : kTraversalCost);
+    for (const Node& node : nodes_)
+        sum += node.bounds.halfArea() * (node.count > 0 ? float(node.count) : kTraversalCost);
     float root = nodes_[0].bounds.halfArea();
     return root > 0 ? sum / root : 0;
 }
@@ -267,7 +271,8 @@ float Bvh::refitNode(std::uint32_t index) {
     Node& node = nodes_[index];
     if (node.count > 0) {
         Bounds b;
-        for (std::uint32_t i = node.first; i < node.first + node.count; ++i) b.grow(primitiveBounds(ordered_[i]));
+        for (std::uint32_t i = node.first; i < node.first + node.count; ++i)
+            b.grow(primitiveBounds(ordered_[i]));
         node.bounds = b;
         return b.halfArea() * float(node.count);
     }
@@ -368,7 +373,8 @@ bool Bvh::occluded(const Ray& ray, float tMin, float tMax, std::uint32_t skip) c
             for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
                 float t;
                 Face face;
-                if (original_[i] != skip && intersectPrimitive(ordered_[i], ray, tMin, tMax, t, face)) return true;
+                if (original_[i] != skip && intersectPrimitive(ordered_[i], ray, tMin, tMax, t, face))
+                    return true;
             }
         } else {
             stack[top++] = node.first + 1;

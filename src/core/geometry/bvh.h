@@ -20,7 +20,7 @@ struct HitRecord {
 };
 
 class Bvh {
-public:
+   public:
     /// Node of the flattened tree; children of an inner node are adjacent.
     struct Node {
         Bounds bounds;
@@ -67,7 +67,7 @@ public:
     std::span<const Primitive> orderedPrimitives() const { return ordered_; }
     std::span<const std::uint32_t> originalIndices() const { return original_; }
 
-private:
+   private:
     /// The splitting of entryNodes(): nodes that `excludes` rejects are
     /// dropped, the rest are sorted by `distance`.
     template <class Excludes, class Distance>
@@ -75,9 +75,9 @@ private:
                                 std::span<std::uint32_t> out) const;
 
     std::vector<Node> nodes_;
-    std::vector<Primitive> ordered_;        ///< primitives in leaf order
-    std::vector<std::uint32_t> original_;   ///< ordered index -> frame index
-    std::vector<std::uint32_t> position_;   ///< frame index -> ordered index
+    std::vector<Primitive> ordered_;       ///< primitives in leaf order
+    std::vector<std::uint32_t> original_;  ///< ordered index -> frame index
+    std::vector<std::uint32_t> position_;  ///< frame index -> ordered index
     // Build scratch, kept to avoid per-frame allocation.
     std::vector<Bounds> primBounds_;
     std::vector<Vec3> centroids_;
@@ -92,7 +92,7 @@ private:
     /// than `deferBelow` primitives (other than the root) go to deferred_ instead.
     void buildNodes(std::span<const Primitive> primitives, std::vector<Node>& out, BuildTask root,
                     std::uint32_t deferBelow);
-    std::vector<BuildTask> deferred_;               ///< subtrees set aside for the pool
+    std::vector<BuildTask> deferred_;              ///< subtrees set aside for the pool
     std::vector<std::vector<Node>> subtreeNodes_;  ///< their nodes, before they are appended
 
     /// Refit work, planned after each build: the subtrees below kRefitDepth

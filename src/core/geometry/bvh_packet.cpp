@@ -22,8 +22,10 @@ inline Mask crossesBox(const Bounds& b, const Rays<Origin, Direction>& r, Float 
     Float ty1 = (b.hi.y - r.origin.y) * r.inverseDirection.y;
     Float tz0 = (b.lo.z - r.origin.z) * r.inverseDirection.z;
     Float tz1 = (b.hi.z - r.origin.z) * r.inverseDirection.z;
-    Float enter = simd::max(simd::max(simd::min(tx0, tx1), simd::min(ty0, ty1)), simd::max(simd::min(tz0, tz1), tMin));
-    Float exit = simd::min(simd::min(simd::max(tx0, tx1), simd::max(ty0, ty1)), simd::min(simd::max(tz0, tz1), tMax));
+    Float enter =
+        simd::max(simd::max(simd::min(tx0, tx1), simd::min(ty0, ty1)), simd::max(simd::min(tz0, tz1), tMin));
+    Float exit =
+        simd::min(simd::min(simd::max(tx0, tx1), simd::max(ty0, ty1)), simd::min(simd::max(tz0, tz1), tMax));
     return enter <= exit;
 }
 
@@ -220,7 +222,8 @@ std::size_t Bvh::beamEntryNodes(const Bounds& origins, Vec3 direction, std::span
         return enter > exit;
     };
     // Nearest first along the rays, where an occluder ends them soonest.
-    return entryNodesWhere(excludes, [&](const Bounds& b) { return dot(b.centroid(), direction); }, out);
+    return entryNodesWhere(
+        excludes, [&](const Bounds& b) { return dot(b.centroid(), direction); }, out);
 }
 
 }  // namespace f2

@@ -65,8 +65,14 @@ inline bool clipSlab(float o, float d, float h, Face face, Interval& iv) {
     float inv = 1.0f / d;
     float tNear = (-h - o) * inv, tFar = (h - o) * inv;
     if (tNear > tFar) std::swap(tNear, tFar);
-    if (tNear > iv.enter) { iv.enter = tNear; iv.enterFace = face; }
-    if (tFar < iv.exit) { iv.exit = tFar; iv.exitFace = face; }
+    if (tNear > iv.enter) {
+        iv.enter = tNear;
+        iv.enterFace = face;
+    }
+    if (tFar < iv.exit) {
+        iv.exit = tFar;
+        iv.exitFace = face;
+    }
     return iv.enter <= iv.exit;
 }
 
@@ -137,7 +143,8 @@ inline Vec3 primitiveNormal(const Primitive& prim, Vec3 p, Face face) {
         case Face::Curved:
             if (prim.kind == ShapeKind::Sphere) return normalize(local);
             return normalize(local - prim.axes[1] * dot(local, prim.axes[1]));
-        case Face::Cap: return dot(local, prim.axes[1]) >= 0 ? prim.axes[1] : -prim.axes[1];
+        case Face::Cap:
+            return dot(local, prim.axes[1]) >= 0 ? prim.axes[1] : -prim.axes[1];
         default: {
             Vec3 axis = prim.axes[int(face) - int(Face::SlabX)];
             return dot(local, axis) >= 0 ? axis : -axis;

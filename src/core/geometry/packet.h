@@ -73,7 +73,7 @@ using ParallelRays = Rays<Vec3P, Vec3>;  ///< shadow rays toward a directional l
 /// Nearest hits of a packet; `t` starts as tMax.
 struct PacketHit {
     Float t{kInfinity};
-    Int primitive{0};  ///< in leaf order: an index into Bvh::orderedPrimitives(), not the frame's
+    Int primitive{0};   ///< in leaf order: an index into Bvh::orderedPrimitives(), not the frame's
     Int frameIndex{0};  ///< the frame's index of the same primitive: the lower one wins a tie
     Int face{0};
 };
@@ -137,8 +137,9 @@ inline Mask clipSlabP(O o, D d, D inv, float h, Face face, Float& enter, Float& 
 /// Forced inline: as a call it made the traversal loops spill and reload their
 /// packet registers around every primitive test (robots:10000 +1 to 1.6 %).
 template <class Origin, class Direction>
-[[gnu::always_inline]] inline Mask primitiveIntervalP(const Primitive& prim, const Rays<Origin, Direction>& ray,
-                                                     Float& enter, Float& exit, Int& enterFace, Int& exitFace) {
+[[gnu::always_inline]] inline Mask primitiveIntervalP(const Primitive& prim,
+                                                      const Rays<Origin, Direction>& ray, Float& enter,
+                                                      Float& exit, Int& enterFace, Int& exitFace) {
     auto oc = ray.origin - prim.centre;
     switch (prim.kind) {
         case ShapeKind::Sphere:
@@ -148,11 +149,11 @@ template <class Origin, class Direction>
             Vec3 axis = prim.axes[1];
             auto oa = dot(oc, axis);
             auto da = dot(ray.direction, axis);
-            Mask valid =
-                detail::quadraticIntervalP(oc - axis * oa, ray.direction - axis * da, prim.half.x, enter, exit);
+            Mask valid = detail::quadraticIntervalP(oc - axis * oa, ray.direction - axis * da, prim.half.x,
+                                                    enter, exit);
             enterFace = exitFace = Int(int(Face::Curved));
-            return valid & detail::clipSlabP(oa, da, decltype(da)(1.0f) / da, prim.half.y, Face::Cap, enter, exit,
-                                             enterFace, exitFace);
+            return valid & detail::clipSlabP(oa, da, decltype(da)(1.0f) / da, prim.half.y, Face::Cap, enter,
+                                             exit, enterFace, exitFace);
         }
         case ShapeKind::Box: {
             enter = Float(-kInfinity);
@@ -164,14 +165,16 @@ template <class Origin, class Direction>
                 for (int i = 0; i < 3; ++i)
                     valid = valid & detail::clipSlabP(component(oc, i), component(ray.direction, i),
                                                       component(ray.inverseDirection, i), prim.half[i],
-                                                      Face(int(Face::SlabX) + i), enter, exit, enterFace, exitFace);
+                                                      Face(int(Face::SlabX) + i), enter, exit, enterFace,
+                                                      exitFace);
                 return valid;
             }
             for (int i = 0; i < 3; ++i) {
                 Vec3 axis = prim.axes[i];
                 auto d = dot(ray.direction, axis);
-                valid = valid & detail::clipSlabP(dot(oc, axis), d, decltype(d)(1.0f) / d, prim.half[i],
-                                                  Face(int(Face::SlabX) + i), enter, exit, enterFace, exitFace);
+                valid =
+                    valid & detail::clipSlabP(dot(oc, axis), d, decltype(d)(1.0f) / d, prim.half[i],
+                                              Face(int(Face::SlabX) + i), enter, exit, enterFace, exitFace);
             }
             return valid;
         }
@@ -183,8 +186,9 @@ template <class Origin, class Direction>
 /// writes that distance and face into those lanes of tHit and face. Forced
 /// inline as well: the any-hit loop had kept it as a call (robots:10000 +4 %).
 template <class Origin, class Direction>
-[[gnu::always_inline]] inline Mask intersectPrimitiveP(const Primitive& prim, const Rays<Origin, Direction>& ray,
-                                                      Mask active, Float tMin, Float tMax, Float& tHit, Int& face) {
+[[gnu::always_inline]] inline Mask intersectPrimitiveP(const Primitive& prim,
+                                                       const Rays<Origin, Direction>& ray, Mask active,
+                                                       Float tMin, Float tMax, Float& tHit, Int& face) {
     Float enter(0.0f), exit(0.0f);  // initialised: GCC cannot see every kind sets them
     Int enterFace(0), exitFace(0);
     Mask valid = primitiveIntervalP(prim, ray, enter, exit, enterFace, exitFace) & active;
@@ -206,7 +210,8 @@ inline Vec3P primitiveNormalP(const Primitive& prim, const Vec3P& p, Int face) {
         return select(dot(local, a) >= Float(0.0f), a, -a);
     };
     switch (prim.kind) {
-        case ShapeKind::Sphere: return normalized(local);
+        case ShapeKind::Sphere:
+            return normalized(local);
         case ShapeKind::Cylinder: {
             Vec3P axis(prim.axes[1]);
             Vec3P side = normalized(local - axis * dot(local, axis));

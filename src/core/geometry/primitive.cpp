@@ -8,7 +8,9 @@ namespace f2 {
 Bounds primitiveBounds(const Primitive& prim) {
     Vec3 extent;
     switch (prim.kind) {
-        case ShapeKind::Sphere: extent = prim.half; break;
+        case ShapeKind::Sphere:
+            extent = prim.half;
+            break;
         case ShapeKind::Cylinder: {
             // A disc of radius r perpendicular to axis a spans r*sqrt(1 - a_i^2) along world axis i.
             Vec3 a = prim.axes[1];
@@ -19,7 +21,8 @@ Bounds primitiveBounds(const Primitive& prim) {
         }
         case ShapeKind::Box:
             for (int i = 0; i < 3; ++i)
-                extent[i] = std::fabs(prim.axes[0][i]) * prim.half.x + std::fabs(prim.axes[1][i]) * prim.half.y +
+                extent[i] = std::fabs(prim.axes[0][i]) * prim.half.x +
+                            std::fabs(prim.axes[1][i]) * prim.half.y +
                             std::fabs(prim.axes[2][i]) * prim.half.z;
             break;
     }

@@ -4,8 +4,8 @@
 #include <cstdint>
 #include <limits>
 
-#include "core/math/transform.h"
 #include "core/geometry/shape_kind.h"
+#include "core/math/transform.h"
 
 namespace f2 {
 
@@ -33,8 +33,14 @@ struct Bounds {
     Vec3 lo{kInfinity, kInfinity, kInfinity};
     Vec3 hi{-kInfinity, -kInfinity, -kInfinity};
 
-    void grow(const Bounds& b) { lo = vmin(lo, b.lo); hi = vmax(hi, b.hi); }
-    void grow(Vec3 p) { lo = vmin(lo, p); hi = vmax(hi, p); }
+    void grow(const Bounds& b) {
+        lo = vmin(lo, b.lo);
+        hi = vmax(hi, b.hi);
+    }
+    void grow(Vec3 p) {
+        lo = vmin(lo, p);
+        hi = vmax(hi, p);
+    }
     Vec3 centroid() const { return lo * 0.5f + hi * 0.5f; }  // no overflow near the float limit
     float halfArea() const {
         Vec3 e = hi - lo;
@@ -70,9 +76,15 @@ inline Primitive makePrimitive(ShapeKind kind, Vec3 size, const Transform& world
     for (int i = 0; i < 3; ++i) p.axes[i] = worldFromLocal.linear.column(i);
     p.axisAligned = p.axes[0] == Vec3{1, 0, 0} && p.axes[1] == Vec3{0, 1, 0} && p.axes[2] == Vec3{0, 0, 1};
     switch (kind) {
-        case ShapeKind::Sphere: p.half = {size.x, size.x, size.x}; break;
-        case ShapeKind::Cylinder: p.half = {size.x, size.y * 0.5f, size.x}; break;
-        case ShapeKind::Box: p.half = size * 0.5f; break;
+        case ShapeKind::Sphere:
+            p.half = {size.x, size.x, size.x};
+            break;
+        case ShapeKind::Cylinder:
+            p.half = {size.x, size.y * 0.5f, size.x};
+            break;
+        case ShapeKind::Box:
+            p.half = size * 0.5f;
+            break;
     }
     return p;
 }

@@ -37,8 +37,7 @@ Mat3 rotationFromEulerDegrees(double rx, double ry, double rz) {
         {-sy, cy * sx, cy * cx},
     };
     Mat3 out;
-    for (int i = 0; i < 3; ++i)
-        out.row[i] = {float(m[i][0]), float(m[i][1]), float(m[i][2])};
+    for (int i = 0; i < 3; ++i) out.row[i] = {float(m[i][0]), float(m[i][1]), float(m[i][2])};
     return out;
 }
 

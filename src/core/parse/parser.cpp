@@ -244,7 +244,8 @@ class Parser : private ExpansionSink {
         order_.push_back(pos);
         if (severity == Severity::Error && errors_ >= limits_.maxErrors) {
             diagnostics_.push_back(
-                {loc, Severity::Error, "too many errors (" + std::to_string(errors_) + "); parsing stopped here"});
+                {loc, Severity::Error,
+                 "too many errors (" + std::to_string(errors_) + "); parsing stopped here"});
             order_.push_back(pos);
             stopped_ = true;
         }
@@ -301,7 +302,8 @@ class Parser : private ExpansionSink {
         const LogicalToken& last =
             tokens_.tokens[static_cast<std::size_t>(std::min(tokens_.count, kMaxStoredTokens) - 1)];
         const auto begin = static_cast<std::size_t>(first.column - 1);
-        return tokens_.raw.substr(begin, static_cast<std::size_t>(last.column - 1) + last.written.size() - begin);
+        return tokens_.raw.substr(begin,
+                                  static_cast<std::size_t>(last.column - 1) + last.written.size() - begin);
     }
 
     /// `message` with a note naming an invisible or unusual character of
@@ -395,10 +397,10 @@ class Parser : private ExpansionSink {
         }
         const bool plural = allowed.size() > 1 || *allowed.begin() != 1;
         // A no-break space glues two arguments into one, so the count is the first thing wrong.
-        error(commandPos(), noteCharacters(quoteToken(commandText()) + " takes " + list +
-                                               (plural ? " arguments" : " argument") + ", got " +
-                                               std::to_string(n),
-                                           commandLine(), commandPos()));
+        error(commandPos(),
+              noteCharacters(quoteToken(commandText()) + " takes " + list +
+                                 (plural ? " arguments" : " argument") + ", got " + std::to_string(n),
+                             commandLine(), commandPos()));
         return false;
     }
 
@@ -508,8 +510,9 @@ class Parser : private ExpansionSink {
     /// Looks up an existing object by name; `token` is the whole argument, for the message.
     std::optional<std::size_t> existing(std::string_view name, std::string_view token, Pos pos) {
         if (!isValidName(name)) {
-            error(pos, noteCharacters("invalid target " + quoteToken(token) + " (expected a name or name.part)",
-                                      token, pos));
+            error(pos,
+                  noteCharacters("invalid target " + quoteToken(token) + " (expected a name or name.part)",
+                                 token, pos));
             return std::nullopt;
         }
         auto it = names_.find(name);
@@ -541,10 +544,11 @@ class Parser : private ExpansionSink {
         const int index = partIndex(part);
         if (index < 0) {
             const std::string_view guess = suggestPart(part);
-            error(pos, noteCharacters("unknown part " + quoteToken(part) +
-                                          (guess.empty() ? std::string(" (expected body, head, lhand or rhand)")
-                                                         : " (did you mean '" + std::string(guess) + "'?)"),
-                                      part, pos));
+            error(pos,
+                  noteCharacters("unknown part " + quoteToken(part) +
+                                     (guess.empty() ? std::string(" (expected body, head, lhand or rhand)")
+                                                    : " (did you mean '" + std::string(guess) + "'?)"),
+                                 part, pos));
             return std::nullopt;
         }
         const SceneObject& o = scene_.objects[object];
@@ -760,9 +764,9 @@ class Parser : private ExpansionSink {
             warning({1, 1}, "the scene has no objects: every frame shows only the background");
             return;
         }
-        const bool lit = scene_.ambient > 0 ||
-                         std::any_of(scene_.lights.begin(), scene_.lights.end(),
-                                     [](const DirectionalLight& l) { return l.intensity > 0; });
+        const bool lit =
+            scene_.ambient > 0 || std::any_of(scene_.lights.begin(), scene_.lights.end(),
+                                              [](const DirectionalLight& l) { return l.intensity > 0; });
         if (!lit) {
             warning(books_.front().defined,
                     "the scene has no light (no '/amb_light' or '/dir_light' with an intensity > 0): "
@@ -861,10 +865,11 @@ class Parser : private ExpansionSink {
         }
         const int n = argCount();
         if (n < 2) {
-            error(commandPos(),
-                  noteCharacters("'/key' takes 2 or 8 arguments (a frame, a target and 0 or 6 numbers), got " +
-                                     std::to_string(n),
-                                 commandLine(), commandPos()));
+            error(
+                commandPos(),
+                noteCharacters("'/key' takes 2 or 8 arguments (a frame, a target and 0 or 6 numbers), got " +
+                                   std::to_string(n),
+                               commandLine(), commandPos()));
             return;
         }
         // A last argument that is a word, not a number, is the key's mode (SPEC 9.3).
@@ -872,9 +877,9 @@ class Parser : private ExpansionSink {
                              isNameStart(arg(n - 1).front());
         const int numbers = n - 2 - (hasMode ? 1 : 0);
         if (numbers != 0 && numbers != 6) {
-            error(commandPos(),
-                  noteCharacters("'/key' takes 0 or 6 numbers after the target, got " + std::to_string(numbers),
-                                 commandLine(), commandPos()));
+            error(commandPos(), noteCharacters("'/key' takes 0 or 6 numbers after the target, got " +
+                                                   std::to_string(numbers),
+                                               commandLine(), commandPos()));
             return;
         }
         bool ok = true;
@@ -890,7 +895,8 @@ class Parser : private ExpansionSink {
         if (!t || !ok) return;
         if (t->camera) {
             // `/camera` may come later: its pose is filled in at the end.
-            cameraKeys_.push_back({frame, numbers == 6 ? std::optional<Pose>(p) : std::nullopt, mode, argPos(0)});
+            cameraKeys_.push_back(
+                {frame, numbers == 6 ? std::optional<Pose>(p) : std::nullopt, mode, argPos(0)});
             return;
         }
         // Without numbers: an object's pose as created, a part's zero offset and rotation.
@@ -959,7 +965,8 @@ class Parser : private ExpansionSink {
         std::optional<std::size_t> child;
         if (!camera) {
             if (name.find('.') != std::string_view::npos) {
-                error(argPos(0), "only a whole object or the camera can be attached, got " + quoteToken(name));
+                error(argPos(0),
+                      "only a whole object or the camera can be attached, got " + quoteToken(name));
             } else {
                 child = existing(name, name, argPos(0));
             }
@@ -1032,7 +1039,8 @@ class Parser : private ExpansionSink {
         std::vector<std::uint32_t> chain;
         for (std::uint32_t i = 0; i < objects.size(); ++i) {
             // Climb while the objects are attached and not yet placed, then place them top first.
-            for (std::uint32_t x = i; objects[x].attachedTo && !placed[x]; x = objects[x].attachedTo->object) {
+            for (std::uint32_t x = i; objects[x].attachedTo && !placed[x];
+                 x = objects[x].attachedTo->object) {
                 placed[x] = true;
                 chain.push_back(x);
             }

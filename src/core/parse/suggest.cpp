@@ -23,11 +23,20 @@ struct PartAlias {
 };
 
 constexpr std::array<PartAlias, 14> kPartAliases = {{
-    {"torso", PartId::Body},        {"trunk", PartId::Body},        {"left", PartId::LHand},
-    {"larm", PartId::LHand},        {"leftarm", PartId::LHand},     {"left_arm", PartId::LHand},
-    {"lefthand", PartId::LHand},    {"left_hand", PartId::LHand},   {"right", PartId::RHand},
-    {"rarm", PartId::RHand},        {"rightarm", PartId::RHand},    {"right_arm", PartId::RHand},
-    {"righthand", PartId::RHand},   {"right_hand", PartId::RHand},
+    {"torso", PartId::Body},
+    {"trunk", PartId::Body},
+    {"left", PartId::LHand},
+    {"larm", PartId::LHand},
+    {"leftarm", PartId::LHand},
+    {"left_arm", PartId::LHand},
+    {"lefthand", PartId::LHand},
+    {"left_hand", PartId::LHand},
+    {"right", PartId::RHand},
+    {"rarm", PartId::RHand},
+    {"rightarm", PartId::RHand},
+    {"right_arm", PartId::RHand},
+    {"righthand", PartId::RHand},
+    {"right_hand", PartId::RHand},
 }};
 
 }  // namespace

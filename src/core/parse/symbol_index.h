@@ -21,8 +21,8 @@ struct TokenSpan {
 /// An object as its creating command made it (no keys yet), and where.
 struct IndexedObject {
     SceneObject object;
-    TokenSpan name;        ///< the name argument of the creating command
-    SourceLoc command;     ///< the command's first character
+    TokenSpan name;     ///< the name argument of the creating command
+    SourceLoc command;  ///< the command's first character
 };
 
 /// A command argument that names an existing object (`r1`, or the `r1` of `r1.head`:

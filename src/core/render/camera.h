@@ -12,7 +12,7 @@ struct Camera {
     int width = 800, height = 600;
     float distance = 0.5f;  ///< eye-to-screen distance in screen widths
     Vec3 eye;
-    Mat3 worldFromCamera;   ///< R: columns are right, up, forward
+    Mat3 worldFromCamera;  ///< R: columns are right, up, forward
 
     static Camera fromDesc(const CameraDesc& desc) {
         return {desc.width, desc.height, float(desc.distance), desc.pose.position,
@@ -75,8 +75,8 @@ struct Camera {
 /// applied (SPEC 9.1). Every front end renders and exports through this.
 inline Camera cameraAt(const SceneDesc& scene, double t) {
     const Transform worldFromCamera = cameraFrameAt(scene, t);
-    return {scene.camera.width, scene.camera.height, float(scene.camera.distance), worldFromCamera.translation,
-            worldFromCamera.linear};
+    return {scene.camera.width, scene.camera.height, float(scene.camera.distance),
+            worldFromCamera.translation, worldFromCamera.linear};
 }
 
 /// What the frames of an animation are seen through: the scene's own camera

@@ -20,7 +20,9 @@ struct Image {
         pixels.resize(std::size_t(w) * std::size_t(h));
     }
     Rgb8& at(int x, int y) { return pixels[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
-    const Rgb8& at(int x, int y) const { return pixels[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
+    const Rgb8& at(int x, int y) const {
+        return pixels[std::size_t(y) * std::size_t(width) + std::size_t(x)];
+    }
     friend bool operator==(const Image&, const Image&) = default;
 };
 

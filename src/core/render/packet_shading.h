@@ -88,8 +88,8 @@ inline ColorP shadeSurfaces(const FrameScene& frame, const PacketSurface& s,
         if (simd::none(lit)) continue;
         counts.shadow += std::uint64_t(__builtin_popcount(simd::bits(lit)));
         std::span<const std::uint32_t> entry = i < shadowEntry.size() ? shadowEntry[i] : std::span{&root, 1};
-        lit = simd::andNot(lit, occludedPacket(frame.bvh, ParallelRays(s.shadowOrigin, light.toLight), lit, Float(0.0f),
-                                                    Float(kInfinity), s.skip, entry));
+        lit = simd::andNot(lit, occludedPacket(frame.bvh, ParallelRays(s.shadowOrigin, light.toLight), lit,
+                                               Float(0.0f), Float(kInfinity), s.skip, entry));
         if (simd::none(lit)) continue;
         Float intensity(light.intensity);
         diffuse = simd::select(lit, diffuse + intensity * s.kd * nDotL, diffuse);
@@ -97,10 +97,10 @@ inline ColorP shadeSurfaces(const FrameScene& frame, const PacketSurface& s,
         Float rDotV = dot(reflected, s.toEye);
         Mask shiny = lit & (rDotV > Float(0.0f)) & (s.ks > Float(0.0f));
         if (simd::any(shiny))
-            specular = simd::select(
-                shiny,
-                specular + simd::min(intensity * s.ks, Float(kMaxLight)) * simd::powPositive(rDotV, s.shininess),
-                specular);
+            specular = simd::select(shiny,
+                                    specular + simd::min(intensity * s.ks, Float(kMaxLight)) *
+                                                   simd::powPositive(rDotV, s.shininess),
+                                    specular);
     }
     diffuse = simd::min(diffuse, Float(kMaxLight));  // see kMaxLight: no 0 * inf in a black channel
     out.r = simd::select(s.hitLanes, s.color.x * diffuse + specular, out.r);

@@ -8,8 +8,8 @@
 
 namespace f2 {
 
-std::optional<PickHit> pickPoint(const SceneDesc& scene, const FrameScene& frame, const Camera& camera, float px,
-                                 float py) {
+std::optional<PickHit> pickPoint(const SceneDesc& scene, const FrameScene& frame, const Camera& camera,
+                                 float px, float py) {
     const Ray ray = camera.rayThrough(px, py);
     HitRecord hit;
     if (!frame.bvh.intersect(ray, primaryRayStart(ray.origin), kInfinity, hit)) return std::nullopt;

@@ -13,17 +13,17 @@ namespace f2 {
 
 /// A scene-level identity and where the ray met it.
 struct PickHit {
-    std::size_t object = 0;       ///< index into SceneDesc::objects
-    std::optional<PartId> part;   ///< the part of a robot or human (eyes belong to the head)
-    Vec3 point;                   ///< world position of the hit
-    float distance = 0;           ///< along the ray, from the eye
+    std::size_t object = 0;      ///< index into SceneDesc::objects
+    std::optional<PartId> part;  ///< the part of a robot or human (eyes belong to the head)
+    Vec3 point;                  ///< world position of the hit
+    float distance = 0;          ///< along the ray, from the eye
 };
 
 /// What image point (px, py) (pixel coordinates as Camera::rayThrough; the
 /// centre of pixel (i, j) is (i + 0.5, j + 0.5)) shows in `frame`, which is
 /// `scene` evaluated at some time with its BVH built. Nothing for the background.
-std::optional<PickHit> pickPoint(const SceneDesc& scene, const FrameScene& frame, const Camera& camera, float px,
-                                 float py);
+std::optional<PickHit> pickPoint(const SceneDesc& scene, const FrameScene& frame, const Camera& camera,
+                                 float px, float py);
 
 /// What pixel (x, y) of `camera`'s image shows at time `t` (evaluates the frame).
 std::optional<PickHit> pickPixel(const SceneDesc& scene, double t, const Camera& camera, int x, int y);

@@ -10,9 +10,12 @@ namespace f2 {
 namespace {
 const char* shapeName(ShapeKind kind) {
     switch (kind) {
-        case ShapeKind::Sphere: return "sphere";
-        case ShapeKind::Cylinder: return "cylinder";
-        case ShapeKind::Box: return "box";
+        case ShapeKind::Sphere:
+            return "sphere";
+        case ShapeKind::Cylinder:
+            return "cylinder";
+        case ShapeKind::Box:
+            return "box";
     }
     return "?";
 }
@@ -25,7 +28,8 @@ std::vector<PixelReport::Crossing> crossingsOf(const EvaluatedFrame& frame, cons
     std::vector<PixelReport::Crossing> out;
     for (std::uint32_t i = 0; i < frame.primitives.size(); ++i) {
         PixelReport::Crossing c{i, 0, Face::Curved};
-        if (i != skip && intersectPrimitive(frame.primitives[i], ray, tMin, kInfinity, c.t, c.face)) out.push_back(c);
+        if (i != skip && intersectPrimitive(frame.primitives[i], ray, tMin, kInfinity, c.t, c.face))
+            out.push_back(c);
     }
     std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) {
         return std::tie(a.t, a.primitive) < std::tie(b.t, b.primitive);
@@ -53,7 +57,8 @@ PixelReport tracePixel(const FrameScene& frame, const Camera& camera, int x, int
         r.color = shadeHit(frame, r.ray, r.chosen, [&](const LightTerm& term) {
             PixelReport::Light light{term, frame.lights[term.light].toLight};
             if (term.shadowed) {
-                auto blockers = crossingsOf(frame, {r.surface.shadowOrigin, light.toLight}, 0.0f, r.surface.skip);
+                auto blockers =
+                    crossingsOf(frame, {r.surface.shadowOrigin, light.toLight}, 0.0f, r.surface.skip);
                 if (!blockers.empty()) {
                     light.occluder = blockers.front().primitive;
                     light.occluderT = blockers.front().t;
@@ -77,7 +82,8 @@ std::string primitiveName(const SceneDesc& scene, const EvaluatedFrame& frame, s
     if (isModel(o.kind)) {
         const ModelDef& model = modelOf(o.kind);
         std::size_t shape = primitive - frame.firstPrimitive[object];
-        if (shape < model.shapes.size()) name += std::string(".") + kPartNames[std::size_t(model.shapes[shape].part)];
+        if (shape < model.shapes.size())
+            name += std::string(".") + kPartNames[std::size_t(model.shapes[shape].part)];
     }
     return name + " (" + shapeName(frame.primitives[primitive].kind) + ")";
 }

@@ -71,7 +71,7 @@ constexpr std::size_t kShadowEntryLights = 4;
 /// of every block first, then the shadow rays, which then all start from the
 /// BVH nodes that the beam of their origins toward each light reaches.
 class TileRenderer {
-public:
+   public:
     TileRenderer(const FrameScene& frame, const Camera& camera, int aa, RayCounts& counts)
         : frame_(frame), camera_(camera), aa_(aa), counts_(counts) {}
 
@@ -97,7 +97,8 @@ public:
                     Float px = Float(float(x0 + (k % blocksX) * kBlockWidth)) + lanes.x;
                     Float py = Float(float(y0 + (k / blocksX) * kBlockHeight)) + lanes.y;
                     Mask inside = (px < Float(float(camera_.width))) & (py < Float(float(camera_.height)));
-                    surfaces_[k] = findSurfaces(frame_, primaryRays(camera_, px + ox, py + oy), inside, entry, counts_);
+                    surfaces_[k] =
+                        findSurfaces(frame_, primaryRays(camera_, px + ox, py + oy), inside, entry, counts_);
                     const PacketSurface& s = surfaces_[k];
                     lo = select(s.hitLanes, vmin(s.shadowOrigin, lo), lo);
                     hi = select(s.hitLanes, vmax(s.shadowOrigin, hi), hi);
@@ -106,7 +107,8 @@ public:
                 for (int k = 0; k < blocks; ++k) {
                     ColorP c = shadeSurfaces(frame_, surfaces_[k], shadowEntry.perLight(), counts_);
                     if (aa_ > 1) c = clamped(c);  // the average of displayed values
-                    sum_[k] = sx == 0 && sy == 0 ? c : ColorP{sum_[k].r + c.r, sum_[k].g + c.g, sum_[k].b + c.b};
+                    sum_[k] =
+                        sx == 0 && sy == 0 ? c : ColorP{sum_[k].r + c.r, sum_[k].g + c.g, sum_[k].b + c.b};
                 }
             }
         }
@@ -121,22 +123,23 @@ public:
         return true;
     }
 
-private:
+   private:
     /// Per light, the entry nodes of the shadow rays leaving the box [lo, hi]
     /// (lane-wise bounds of the tile's shadow origins).
     class ShadowEntries {
-    public:
+       public:
         ShadowEntries(const FrameScene& frame, const Vec3P& lo, const Vec3P& hi) {
             const Bounds origins{{simd::minLane(lo.x), simd::minLane(lo.y), simd::minLane(lo.z)},
                                  {simd::maxLane(hi.x), simd::maxLane(hi.y), simd::maxLane(hi.z)}};
             if (!(origins.lo.x <= origins.hi.x)) return;  // nothing was hit: no shadow rays
             count_ = std::min(frame.lights.size(), kShadowEntryLights);
             for (std::size_t i = 0; i < count_; ++i)
-                entries_[i] = {store_[i], frame.bvh.beamEntryNodes(origins, frame.lights[i].toLight, store_[i])};
+                entries_[i] = {store_[i],
+                               frame.bvh.beamEntryNodes(origins, frame.lights[i].toLight, store_[i])};
         }
         std::span<const std::span<const std::uint32_t>> perLight() const { return {entries_, count_}; }
 
-    private:
+       private:
         std::uint32_t store_[kShadowEntryLights][kEntryNodes];
         std::span<const std::uint32_t> entries_[kShadowEntryLights];
         std::size_t count_ = 0;
@@ -187,8 +190,7 @@ bool Renderer::trace(const FrameScene& frame, const Camera& camera, Image& out, 
             cancelled.store(true, std::memory_order_relaxed);
             return;
         }
-        for (int y = y0; y < y1; ++y)
-            std::copy_n(&local[(y - y0) * kTileSize], x1 - x0, &out.at(x0, y));
+        for (int y = y0; y < y1; ++y) std::copy_n(&local[(y - y0) * kTileSize], x1 - x0, &out.at(x0, y));
         primaryRays.fetch_add(tileRays.primary, std::memory_order_relaxed);
         shadowRays.fetch_add(tileRays.shadow, std::memory_order_relaxed);
     });

@@ -4,8 +4,8 @@
 /// SIMD type appears here, so users compile without the core's CPU flags.
 #include <atomic>
 
-#include "core/render/frame_scene.h"
 #include "core/render/camera.h"
+#include "core/render/frame_scene.h"
 #include "core/render/image.h"
 #include "core/render/ray_counts.h"
 #include "core/util/thread_pool.h"
@@ -30,7 +30,7 @@ struct FrameTimings {
 inline constexpr int kTileSize = 32;
 
 class Renderer {
-public:
+   public:
     /// `threads` = 0 uses every core.
     explicit Renderer(int threads = 0);
 
@@ -48,7 +48,7 @@ public:
     const FrameScene& frame() const { return frame_; }
     int threadCount() const { return pool_.threadCount(); }
 
-private:
+   private:
     ThreadPool pool_;
     FrameScene frame_;
 };

@@ -32,7 +32,7 @@ inline constexpr float kMaxLight = std::numeric_limits<float>::max();
 /// face the viewer, and where its shadow rays start.
 struct ShadingPoint {
     Vec3 position;
-    Vec3 normal;         ///< unit, facing the viewer
+    Vec3 normal;          ///< unit, facing the viewer
     bool inside = false;  ///< the hit was seen from within its primitive
     /// Primitive the shadow rays skip: their own, except from the inside.
     std::uint32_t skip = Bvh::kNoPrimitive;

@@ -45,17 +45,23 @@ const ModelDef& modelOf(ObjectKind kind) { return kind == ObjectKind::Robot ? kR
 
 std::size_t primitiveCountOf(ObjectKind kind) {
     switch (kind) {
-        case ObjectKind::Robot: return std::size(kRobotShapes);
-        case ObjectKind::Human: return std::size(kHumanShapes);
-        default: return 1;
+        case ObjectKind::Robot:
+            return std::size(kRobotShapes);
+        case ObjectKind::Human:
+            return std::size(kHumanShapes);
+        default:
+            return 1;
     }
 }
 
 ShapeKind shapeKindOf(ObjectKind kind) {
     switch (kind) {
-        case ObjectKind::Cylinder: return ShapeKind::Cylinder;
-        case ObjectKind::Box: return ShapeKind::Box;
-        default: return ShapeKind::Sphere;
+        case ObjectKind::Cylinder:
+            return ShapeKind::Cylinder;
+        case ObjectKind::Box:
+            return ShapeKind::Box;
+        default:
+            return ShapeKind::Sphere;
     }
 }
 

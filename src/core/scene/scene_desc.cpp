@@ -8,12 +8,18 @@ namespace f2 {
 
 std::string_view interpolationName(Interpolation mode) {
     switch (mode) {
-        case Interpolation::Linear: return "linear";
-        case Interpolation::Ease: return "ease";
-        case Interpolation::Spline: return "spline";
-        case Interpolation::EaseIn: return "ease_in";
-        case Interpolation::EaseOut: return "ease_out";
-        case Interpolation::Step: return "step";
+        case Interpolation::Linear:
+            return "linear";
+        case Interpolation::Ease:
+            return "ease";
+        case Interpolation::Spline:
+            return "spline";
+        case Interpolation::EaseIn:
+            return "ease_in";
+        case Interpolation::EaseOut:
+            return "ease_out";
+        case Interpolation::Step:
+            return "step";
     }
     return "linear";
 }

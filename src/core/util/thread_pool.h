@@ -15,7 +15,7 @@
 namespace f2 {
 
 class ThreadPool {
-public:
+   public:
     /// `threads` counts the caller: 1 means no worker threads. 0 = all cores.
     explicit ThreadPool(int threads = 0);
     ~ThreadPool();
@@ -29,12 +29,14 @@ public:
     template <class Body>
     void parallelFor(std::uint32_t count, Body&& body) {
         using Fn = std::remove_reference_t<Body>;
-        run(count, [](void* ctx, std::uint32_t i) { (*static_cast<Fn*>(ctx))(i); }, const_cast<void*>(static_cast<const void*>(&body)));
+        run(
+            count, [](void* ctx, std::uint32_t i) { (*static_cast<Fn*>(ctx))(i); },
+            const_cast<void*>(static_cast<const void*>(&body)));
     }
 
     static int hardwareThreads();
 
-private:
+   private:
     using ItemFn = void (*)(void*, std::uint32_t);
     void run(std::uint32_t count, ItemFn fn, void* ctx);
     void workerLoop();
