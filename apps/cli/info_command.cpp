@@ -11,22 +11,6 @@
 namespace f2::cli {
 
 namespace {
-const char* kindName(ObjectKind kind) {
-    switch (kind) {
-        case ObjectKind::Sphere:
-            return "sphere";
-        case ObjectKind::Cylinder:
-            return "cylinder";
-        case ObjectKind::Box:
-            return "box";
-        case ObjectKind::Robot:
-            return "robot";
-        case ObjectKind::Human:
-            return "human";
-    }
-    return "?";
-}
-
 /// Keys with a mode word of their own shown by frame; the rest are counted.
 constexpr std::size_t kShownKeyModes = 4;
 
@@ -105,7 +89,7 @@ int runInfo(const std::string& path) {
               << loaded->linesRead << " read with /repeat and /include expanded\n";
     printCamera(s);
     for (const SceneObject& o : s.objects) {
-        std::cout << "  " << kindName(o.kind) << ' ' << o.name << '\n';
+        std::cout << "  " << objectKindName(o.kind) << ' ' << o.name << '\n';
         if (o.attachedTo) std::cout << "    rides on " << refName(s, *o.attachedTo) << '\n';
         printTrack(o.name, o.track);
         if (isModel(o.kind))

@@ -17,17 +17,6 @@ std::string matrix3x4(const Mat3& a, Vec3 t) {
     return text;
 }
 
-const char* kindName(ShapeKind kind) {
-    switch (kind) {
-        case ShapeKind::Sphere:
-            return "sphere";
-        case ShapeKind::Cylinder:
-            return "cylinder";
-        case ShapeKind::Box:
-            return "box";
-    }
-    return "?";
-}
 }  // namespace
 
 std::string primsScene(const SceneDesc& scene, double t, const Camera& camera, const std::string& source) {
@@ -49,7 +38,7 @@ std::string primsScene(const SceneDesc& scene, double t, const Camera& camera, c
         float h = p.kind == ShapeKind::Cylinder ? p.size.y : 0;
         Vec3 box = p.kind == ShapeKind::Box ? p.size : Vec3{};
         const Material& m = p.material;
-        out << kindName(p.kind) << " " << formatNumber(r) << " " << formatNumber(h) << " "
+        out << shapeKindName(p.kind) << " " << formatNumber(r) << " " << formatNumber(h) << " "
             << formatNumber(box.x) << " " << formatNumber(box.y) << " " << formatNumber(box.z) << " "
             << matrix3x4(p.worldFromLocal.linear, p.worldFromLocal.translation) << " " << int(p.color.r)
             << " " << int(p.color.g) << " " << int(p.color.b) << " " << formatNumber(m.ka) << " "

@@ -196,11 +196,6 @@ std::array<std::size_t, 5> keyCounts(const Analysis& a, std::size_t object) {
     return counts;
 }
 
-std::string_view objectKindName(ObjectKind kind) {
-    static constexpr std::array<std::string_view, 5> kNames = {"sphere", "cylinder", "box", "robot", "human"};
-    return kNames[static_cast<std::size_t>(kind)];
-}
-
 bool isValidName(std::string_view name) {
     return !name.empty() && isNameStart(name.front()) &&
            std::all_of(name.begin() + 1, name.end(), isNameChar);

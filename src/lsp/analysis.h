@@ -66,9 +66,6 @@ struct PartSuffix {
 };
 std::optional<PartSuffix> partAfter(const Analysis& a, const TokenSpan& name);
 
-/// "sphere", "cylinder", "box", "robot" or "human".
-std::string_view objectKindName(ObjectKind kind);
-
 /// Whether `name` is valid as a new object or variable name.
 bool isValidName(std::string_view name);
 

@@ -71,10 +71,6 @@ constexpr std::array<CommandName, 17> kCommands = {{
     {"/attach", Command::Attach},
 }};
 
-constexpr std::array<std::string_view, 5> kObjectKindNames = {"sphere", "cylinder", "box", "robot", "human"};
-
-std::string_view kindName(ObjectKind kind) { return kObjectKindNames[static_cast<std::size_t>(kind)]; }
-
 /// The name of the scene camera as a target (SPEC 9.1); no object may take it.
 constexpr std::string_view kCameraName = "camera";
 
@@ -554,7 +550,8 @@ class Parser : private ExpansionSink {
         const SceneObject& o = scene_.objects[object];
         if (!isModel(o.kind)) {
             error(pos, quoteToken(commandText()) + " on a part of a primitive: " + quoteToken(o.name) +
-                           " is a " + std::string(kindName(o.kind)) + "; only robots and humans have parts");
+                           " is a " + std::string(objectKindName(o.kind)) +
+                           "; only robots and humans have parts");
             return std::nullopt;
         }
         return index;

@@ -8,18 +8,6 @@
 namespace f2 {
 
 namespace {
-const char* shapeName(ShapeKind kind) {
-    switch (kind) {
-        case ShapeKind::Sphere:
-            return "sphere";
-        case ShapeKind::Cylinder:
-            return "cylinder";
-        case ShapeKind::Box:
-            return "box";
-    }
-    return "?";
-}
-
 /// Every primitive `ray` crosses within (tMin, inf) other than `skip`, by
 /// brute force (not the BVH, which the report is there to check), nearest
 /// first and equal distances by index.
@@ -85,7 +73,7 @@ std::string primitiveName(const SceneDesc& scene, const EvaluatedFrame& frame, s
         if (shape < model.shapes.size())
             name += std::string(".") + kPartNames[std::size_t(model.shapes[shape].part)];
     }
-    return name + " (" + shapeName(frame.primitives[primitive].kind) + ")";
+    return name + " (" + std::string(shapeKindName(frame.primitives[primitive].kind)) + ")";
 }
 
 }  // namespace f2

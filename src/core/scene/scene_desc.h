@@ -62,6 +62,12 @@ struct Track {
 
 enum class ObjectKind : std::uint8_t { Sphere, Cylinder, Box, Robot, Human };
 
+/// "sphere", "cylinder", "box", "robot" or "human", as the creating command.
+constexpr std::string_view objectKindName(ObjectKind kind) {
+    constexpr std::string_view kNames[] = {"sphere", "cylinder", "box", "robot", "human"};
+    return kNames[static_cast<int>(kind)];
+}
+
 inline bool isModel(ObjectKind k) { return k == ObjectKind::Robot || k == ObjectKind::Human; }
 
 /// Parts of a model (SPEC 5), in a fixed order used to index arrays.
