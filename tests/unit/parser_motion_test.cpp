@@ -151,6 +151,9 @@ TEST(ParserModes, Errors) {
     expectOnlyError(a + "/key 0 a 1 2 3 4 5 6 7\n", 2, 1,
                     "'/key' takes 0 or 6 numbers after the target, got 7");
     expectOnlyError(a + "/key 0 a ease ease\n", 2, 1, "'/key' takes 0 or 6 numbers after the target, got 1");
+    // Longer than any key: its last word is past the stored tokens (found by the fuzzer).
+    expectOnlyError(a + "/key 0 a 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 ease\n", 2, 1,
+                    "'/key' takes 0 or 6 numbers after the target, got 18");
 }
 
 }  // namespace

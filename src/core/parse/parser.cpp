@@ -870,8 +870,10 @@ class Parser : private ExpansionSink {
             return;
         }
         // A last argument that is a word, not a number, is the key's mode (SPEC 9.3).
-        const bool hasMode = n > 2 && argToken(n - 1).form == TokenForm::Word && !arg(n - 1).empty() &&
-                             isNameStart(arg(n - 1).front());
+        // Only a line short enough to be a key has its last token stored.
+        constexpr int kMostKeyArgs = 9;  // frame, target, six numbers, mode
+        const bool hasMode = n > 2 && n <= kMostKeyArgs && argToken(n - 1).form == TokenForm::Word &&
+                             !arg(n - 1).empty() && isNameStart(arg(n - 1).front());
         const int numbers = n - 2 - (hasMode ? 1 : 0);
         if (numbers != 0 && numbers != 6) {
             error(commandPos(), noteCharacters("'/key' takes 0 or 6 numbers after the target, got " +
