@@ -25,9 +25,9 @@
 
 #include "animation_exporter.h"
 #include "autosave.h"
+#include "capture_pose.h"
 #include "core/anim/frame_builder.h"
 #include "core/anim/frame_time.h"
-#include "core/anim/track.h"
 #include "core/render/pick.h"
 #include "core/render/renderer.h"
 #include "editor_dock.h"
@@ -227,6 +227,8 @@ void MainWindow::createActions() {
     QMenu* capture = menuBar()->addMenu(tr("&Capture"));
     capture->addAction(tr("Set &Camera from View"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_C), this,
                        &MainWindow::setCameraFromView);
+    capture->addAction(tr("Key C&amera Here"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_K), this,
+                       &MainWindow::keyCameraHere);
     capture->addAction(tr("&Key Selection Here"), QKeySequence(Qt::CTRL | Qt::Key_K), this,
                        &MainWindow::keySelectionHere);
 
@@ -570,14 +572,25 @@ bool MainWindow::keySelectionHere() {
         statusBar()->showMessage(tr("Select an object or part first (click it in the picture)."), 5000);
         return false;
     }
-    const SceneObject& target = scene->objects[*object];
     const int frame = playback_->frame();
-    // An object's key is its absolute pose; a part's, its offset and rotation.
-    const Pose pose = selection_->part
-                          ? evaluateTrack(target.partTracks[std::size_t(*selection_->part)], frame, Pose{})
-                          : evaluateTrack(target.track, frame, target.rest);
-    applyEdit(editor(), keyEdit(editor()->toPlainText(), selection_->target(), frame, pose));
+    const Pose pose = selectionKeyPose(*scene, *object, selection_->part, frame);
+    const QString text = editor()->toPlainText();
+    applyEdit(editor(),
+              keyEdit(text, selection_->target(), frame, pose, creatingLine(text, selection_->object)));
     return true;
+}
+
+void MainWindow::keyCameraHere() {
+    const auto scene = document_->scene();
+    const int frame = playback_->frame();
+    // What the user sees: the look-around if there is one, else the scene camera.
+    const auto& orbit = viewport_->orbit();
+    const Pose pose = cameraKeyPose(*scene, frame, orbit ? std::optional(orbit->pose()) : std::nullopt);
+    const QString text = editor()->toPlainText();
+    applyEdit(editor(), keyEdit(text, QStringLiteral("camera"), frame, pose, cameraLine(text)));
+    if (orbit && scene->camera.lookAt)
+        statusBar()->showMessage(
+            tr("The camera's /look_at turns it: the key moves the eye, not where it looks."), 8000);
 }
 
 QString MainWindow::selectionStatus() const { return selectionStatus_->text(); }

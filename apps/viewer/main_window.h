@@ -101,6 +101,11 @@ class MainWindow : public QMainWindow {
     /// Writes the selection's pose at the current frame as its `/key` line
     /// there (replacing one at that frame). One undo step. False without a selection.
     bool keySelectionHere();
+    /// Writes the camera's `/key` line at the current frame (replacing one at
+    /// that frame) with the pose that shows the view on screen: the
+    /// look-around's eye and rotation while orbiting, else the scene camera's
+    /// own pose there (capture_pose.h). One undo step.
+    void keyCameraHere();
     /// While paused, the picture refines: the same frame again with 2x2, then
     /// kRefinedAntialias x kRefinedAntialias samples (View › Refine When Paused).
     void setRefinement(bool on);
