@@ -130,6 +130,13 @@ MainWindow::MainWindow(QWidget* parent)
     connect(timeline_, &TimelineWidget::scrubStarted, playback_, &Playback::beginScrub);
     connect(timeline_, &TimelineWidget::scrubFinished, playback_, &Playback::endScrub);
     connect(timeline_, &TimelineWidget::speedChanged, playback_, &Playback::setSpeed);
+    connect(timeline_, &TimelineWidget::loopInRequested, playback_, &Playback::setLoopIn);
+    connect(timeline_, &TimelineWidget::loopOutRequested, playback_, &Playback::setLoopOut);
+    connect(timeline_, &TimelineWidget::loopClearRequested, playback_, &Playback::clearLoop);
+    connect(playback_, &Playback::loopRangeChanged, this, [this] {
+        const auto loop = playback_->loopRange();
+        timeline_->setLoop(loop ? std::optional(std::pair(loop->first, loop->last)) : std::nullopt);
+    });
 
     createActions();
     setAcceptDrops(true);
@@ -199,6 +206,12 @@ void MainWindow::createActions() {
         play->addAction(tr("F&irst Frame"), QKeySequence(Qt::Key_Home), playback_, &Playback::seekToStart));
     stageShortcut(
         play->addAction(tr("&Last Frame"), QKeySequence(Qt::Key_End), playback_, &Playback::seekToEnd));
+    play->addSeparator();
+    stageShortcut(play->addAction(tr("Set Loop &In Here"), QKeySequence(Qt::Key_I), this,
+                                  [this] { playback_->setLoopIn(playback_->frame()); }));
+    stageShortcut(play->addAction(tr("Set Loop &Out Here"), QKeySequence(Qt::Key_O), this,
+                                  [this] { playback_->setLoopOut(playback_->frame()); }));
+    play->addAction(tr("&Clear Loop"), QKeySequence(Qt::ALT | Qt::Key_X), playback_, &Playback::clearLoop);
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     stageShortcut(
@@ -406,7 +419,10 @@ void MainWindow::onSceneChanged(bool newDocument) {
     const auto scene = document_->scene();
     playback_->setRange(scene->lastFrame(), scene->fps);
     timeline_->setRange(scene->lastFrame(), scene->fps);
-    if (newDocument) playback_->seek(0);
+    if (newDocument) {
+        playback_->clearLoop();
+        playback_->seek(0);
+    }
     timeline_->setTime(playback_->time());
     const Camera camera = cameraAt(*scene, playback_->time());
     // A reload of the same file keeps the user's look-around; a new file starts at its camera.
@@ -677,7 +693,7 @@ void MainWindow::exportPngSequence() {
         QFileDialog::getExistingDirectory(this, tr("Export PNG Sequence to Folder"), outputFolder());
     if (dir.isEmpty()) return;
     const QString stem = exportStem();
-    const FramePattern pattern = exportSequencePattern(dir, stem, scene->lastFrame() + 1);
+    const FramePattern pattern = exportSequencePattern(dir, stem, playback_->playRange().last + 1);
     runExport(std::move(scene), std::make_unique<PngSequenceSink>(pattern),
               QDir(dir).filePath(stem + "_*.png"));
 }
@@ -703,8 +719,8 @@ void MainWindow::exportVideo() {
     runExport(std::move(scene), std::make_unique<VideoSink>(file, *format, Rgb8{bg.r, bg.g, bg.b}), path);
 }
 
-void MainWindow::runExport(std::shared_ptr<const SceneDesc> scene, std::unique_ptr<FrameSink> sink,
-                           const QString& destination) {
+ExportJob MainWindow::exportJob(std::shared_ptr<const SceneDesc> scene, std::unique_ptr<FrameSink> sink,
+                                const QString& destination) const {
     ExportJob job;
     // Like `f2 render`: the scene's /camera size, seen from the current view.
     // The scene's moving camera, unless the user is looking around.
@@ -712,9 +728,18 @@ void MainWindow::runExport(std::shared_ptr<const SceneDesc> scene, std::unique_p
     job.view = viewport_->isOrbiting() ? FrameView::fixedCamera(viewport_->viewCamera(size))
                                        : FrameView::sceneCamera(size.width(), size.height());
     job.scene = std::move(scene);
-    job.lastFrame = job.scene->lastFrame();
+    // The loop's frames when it is set, else the whole scene.
+    const FrameRange frames = playback_->playRange();
+    job.firstFrame = frames.first;
+    job.lastFrame = frames.last;
     job.sink = std::move(sink);
     job.destination = destination;
+    return job;
+}
+
+void MainWindow::runExport(std::shared_ptr<const SceneDesc> scene, std::unique_ptr<FrameSink> sink,
+                           const QString& destination) {
+    ExportJob job = exportJob(std::move(scene), std::move(sink), destination);
     exportWithProgress(this, std::move(job), [this](bool ok, bool cancelled, const QString& message) {
         if (ok || cancelled)
             statusBar()->showMessage(message, 10000);
