@@ -31,6 +31,7 @@ class SceneEditor;
 class SceneDocument;
 class TimelineWidget;
 class ViewportWidget;
+class ViewModeMenu;
 enum class RenderScale;
 
 class MainWindow : public QMainWindow {
@@ -77,6 +78,8 @@ class MainWindow : public QMainWindow {
     TimelineWidget* timeline() const { return timeline_; }
     ViewportWidget* viewport() const { return viewport_; }
     RenderController* renderController() const { return controller_.get(); }
+    /// View › Mode: what the picture shows (shaded or a diagnostic view).
+    ViewModeMenu* viewModes() const { return viewModes_; }
     QListWidget* problemsList() const { return problemsList_; }
     QDockWidget* diagnosticsDock() const { return diagnosticsDock_; }
     EditorDock* editorDock() const { return editorDock_; }
@@ -103,6 +106,7 @@ class MainWindow : public QMainWindow {
     bool keySelectionHere();
     /// While paused, the picture refines: the same frame again with 2x2, then
     /// kRefinedAntialias x kRefinedAntialias samples (View › Refine When Paused).
+    /// Only the shaded view refines: the diagnostic views trace pixel centres.
     void setRefinement(bool on);
     /// The picture on screen is still to be refined.
     bool isRefining() const;
@@ -178,6 +182,8 @@ class MainWindow : public QMainWindow {
     QLabel* selectionStatus_ = nullptr;
     std::optional<Selection> selection_;
     QLabel* refineStatus_ = nullptr;
+    QLabel* viewStatus_ = nullptr;  ///< the view mode of the picture on screen
+    ViewModeMenu* viewModes_ = nullptr;
     bool refinement_ = true;
     RenderRequest lastRequest_;  // the view the latest request showed, at 1 sample
     QTimer frameTimer_;          // coalesces scheduleFrame() calls
