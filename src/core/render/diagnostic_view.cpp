@@ -7,7 +7,7 @@
 
 namespace f2 {
 
-RayProbe probeRay(const FrameScene& frame, const Ray& ray) {
+RayProbe probeRay(const FrameScene& frame, const Ray& ray, bool lights) {
     RayProbe probe;
     probe.lights = int(frame.lights.size());
     HitRecord hit;
@@ -16,6 +16,7 @@ RayProbe probeRay(const FrameScene& frame, const Ray& ray) {
     probe.distance = hit.t;
     probe.primitive = hit.primitive;
     probe.normal = shadingPoint(frame, ray, hit).normal;
+    if (!lights) return probe;
     // The shading's own shadow rays, so the mask and the cost are what the image used.
     shadeHit(
         frame, ray, hit,
@@ -90,6 +91,7 @@ bool traceView(const FrameScene& frame, const Camera& camera, ViewMode mode, Ima
     std::vector<float> values(scaled ? out.pixels.size() : 0);
     std::atomic<bool> cancelled{false};
     std::atomic<std::uint64_t> shadowRays{0};
+    const bool lights = mode == ViewMode::ShadowMask || mode == ViewMode::Cost;
     auto row = [&](std::uint32_t y) {
         if (cancel && cancel->load(std::memory_order_relaxed)) {
             cancelled.store(true, std::memory_order_relaxed);
@@ -97,7 +99,7 @@ bool traceView(const FrameScene& frame, const Camera& camera, ViewMode mode, Ima
         }
         std::uint64_t rowShadowRays = 0;
         for (int x = 0; x < camera.width; ++x) {
-            const RayProbe p = probeRay(frame, camera.rayThrough(float(x) + 0.5f, float(y) + 0.5f));
+            const RayProbe p = probeRay(frame, camera.rayThrough(float(x) + 0.5f, float(y) + 0.5f), lights);
             rowShadowRays += p.shadowRays;
             const std::size_t i = std::size_t(y) * std::size_t(camera.width) + std::size_t(x);
             switch (mode) {

@@ -32,8 +32,10 @@ struct RayProbe {
 };
 
 /// Traces `ray` from the eye as traceRay() does (same start, same BVH query,
-/// same shadow rays), recording instead of shading.
-RayProbe probeRay(const FrameScene& frame, const Ray& ray);
+/// same shadow rays), recording instead of shading. Without `lights`, the
+/// shadow rays are not cast (lit, blocked, shadowRays stay 0 and cost counts
+/// the primary ray alone): the modes that do not show them run faster.
+RayProbe probeRay(const FrameScene& frame, const Ray& ray, bool lights = true);
 
 /// Normals view: floor(255·(n + 1)/2 + 0.5) per channel; background black.
 Rgb8 normalColor(const RayProbe& probe);
