@@ -19,7 +19,7 @@ QString ViewModeMenu::label(ViewMode mode) {
         case ViewMode::PrimitiveIds:
             return tr("Primitive IDs");
         case ViewMode::Cost:
-            return tr("Cost (BVH Heat Map)");
+            return tr("BVH Cost");
     }
     return {};
 }
