@@ -25,9 +25,9 @@
 
 #include "animation_exporter.h"
 #include "autosave.h"
+#include "capture_pose.h"
 #include "core/anim/frame_builder.h"
 #include "core/anim/frame_time.h"
-#include "core/anim/track.h"
 #include "core/render/pick.h"
 #include "core/render/renderer.h"
 #include "editor_dock.h"
@@ -132,6 +132,13 @@ MainWindow::MainWindow(QWidget* parent)
     connect(timeline_, &TimelineWidget::scrubStarted, playback_, &Playback::beginScrub);
     connect(timeline_, &TimelineWidget::scrubFinished, playback_, &Playback::endScrub);
     connect(timeline_, &TimelineWidget::speedChanged, playback_, &Playback::setSpeed);
+    connect(timeline_, &TimelineWidget::loopInRequested, playback_, &Playback::setLoopIn);
+    connect(timeline_, &TimelineWidget::loopOutRequested, playback_, &Playback::setLoopOut);
+    connect(timeline_, &TimelineWidget::loopClearRequested, playback_, &Playback::clearLoop);
+    connect(playback_, &Playback::loopRangeChanged, this, [this] {
+        const auto loop = playback_->loopRange();
+        timeline_->setLoop(loop ? std::optional(std::pair(loop->first, loop->last)) : std::nullopt);
+    });
 
     createActions();
     setAcceptDrops(true);
@@ -201,6 +208,12 @@ void MainWindow::createActions() {
         play->addAction(tr("F&irst Frame"), QKeySequence(Qt::Key_Home), playback_, &Playback::seekToStart));
     stageShortcut(
         play->addAction(tr("&Last Frame"), QKeySequence(Qt::Key_End), playback_, &Playback::seekToEnd));
+    play->addSeparator();
+    stageShortcut(play->addAction(tr("Set Loop &In Here"), QKeySequence(Qt::Key_I), this,
+                                  [this] { playback_->setLoopIn(playback_->frame()); }));
+    stageShortcut(play->addAction(tr("Set Loop &Out Here"), QKeySequence(Qt::Key_O), this,
+                                  [this] { playback_->setLoopOut(playback_->frame()); }));
+    play->addAction(tr("&Clear Loop"), QKeySequence(Qt::ALT | Qt::Key_X), playback_, &Playback::clearLoop);
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     stageShortcut(
@@ -231,6 +244,8 @@ void MainWindow::createActions() {
     QMenu* capture = menuBar()->addMenu(tr("&Capture"));
     capture->addAction(tr("Set &Camera from View"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_C), this,
                        &MainWindow::setCameraFromView);
+    capture->addAction(tr("Key C&amera Here"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_K), this,
+                       &MainWindow::keyCameraHere);
     capture->addAction(tr("&Key Selection Here"), QKeySequence(Qt::CTRL | Qt::Key_K), this,
                        &MainWindow::keySelectionHere);
 
@@ -408,7 +423,10 @@ void MainWindow::onSceneChanged(bool newDocument) {
     const auto scene = document_->scene();
     playback_->setRange(scene->lastFrame(), scene->fps);
     timeline_->setRange(scene->lastFrame(), scene->fps);
-    if (newDocument) playback_->seek(0);
+    if (newDocument) {
+        playback_->clearLoop();
+        playback_->seek(0);
+    }
     timeline_->setTime(playback_->time());
     const Camera camera = cameraAt(*scene, playback_->time());
     // A reload of the same file keeps the user's look-around; a new file starts at its camera.
@@ -576,14 +594,25 @@ bool MainWindow::keySelectionHere() {
         statusBar()->showMessage(tr("Select an object or part first (click it in the picture)."), 5000);
         return false;
     }
-    const SceneObject& target = scene->objects[*object];
     const int frame = playback_->frame();
-    // An object's key is its absolute pose; a part's, its offset and rotation.
-    const Pose pose = selection_->part
-                          ? evaluateTrack(target.partTracks[std::size_t(*selection_->part)], frame, Pose{})
-                          : evaluateTrack(target.track, frame, target.rest);
-    applyEdit(editor(), keyEdit(editor()->toPlainText(), selection_->target(), frame, pose));
+    const Pose pose = selectionKeyPose(*scene, *object, selection_->part, frame);
+    const QString text = editor()->toPlainText();
+    applyEdit(editor(),
+              keyEdit(text, selection_->target(), frame, pose, creatingLine(text, selection_->object)));
     return true;
+}
+
+void MainWindow::keyCameraHere() {
+    const auto scene = document_->scene();
+    const int frame = playback_->frame();
+    // What the user sees: the look-around if there is one, else the scene camera.
+    const auto& orbit = viewport_->orbit();
+    const Pose pose = cameraKeyPose(*scene, frame, orbit ? std::optional(orbit->pose()) : std::nullopt);
+    const QString text = editor()->toPlainText();
+    applyEdit(editor(), keyEdit(text, QStringLiteral("camera"), frame, pose, cameraLine(text)));
+    if (orbit && scene->camera.lookAt)
+        statusBar()->showMessage(
+            tr("The camera's /look_at turns it: the key moves the eye, not where it looks."), 8000);
 }
 
 QString MainWindow::selectionStatus() const { return selectionStatus_->text(); }
@@ -675,7 +704,7 @@ void MainWindow::exportPngSequence() {
         QFileDialog::getExistingDirectory(this, tr("Export PNG Sequence to Folder"), outputFolder());
     if (dir.isEmpty()) return;
     const QString stem = exportStem();
-    const FramePattern pattern = exportSequencePattern(dir, stem, scene->lastFrame() + 1);
+    const FramePattern pattern = exportSequencePattern(dir, stem, playback_->playRange().last + 1);
     runExport(std::move(scene), std::make_unique<PngSequenceSink>(pattern),
               QDir(dir).filePath(stem + "_*.png"));
 }
@@ -701,8 +730,8 @@ void MainWindow::exportVideo() {
     runExport(std::move(scene), std::make_unique<VideoSink>(file, *format, Rgb8{bg.r, bg.g, bg.b}), path);
 }
 
-void MainWindow::runExport(std::shared_ptr<const SceneDesc> scene, std::unique_ptr<FrameSink> sink,
-                           const QString& destination) {
+ExportJob MainWindow::exportJob(std::shared_ptr<const SceneDesc> scene, std::unique_ptr<FrameSink> sink,
+                                const QString& destination) const {
     ExportJob job;
     // Like `f2 render`: the scene's /camera size, seen from the current view.
     // The scene's moving camera, unless the user is looking around.
@@ -710,9 +739,18 @@ void MainWindow::runExport(std::shared_ptr<const SceneDesc> scene, std::unique_p
     job.view = viewport_->isOrbiting() ? FrameView::fixedCamera(viewport_->viewCamera(size))
                                        : FrameView::sceneCamera(size.width(), size.height());
     job.scene = std::move(scene);
-    job.lastFrame = job.scene->lastFrame();
+    // The loop's frames when it is set, else the whole scene.
+    const FrameRange frames = playback_->playRange();
+    job.firstFrame = frames.first;
+    job.lastFrame = frames.last;
     job.sink = std::move(sink);
     job.destination = destination;
+    return job;
+}
+
+void MainWindow::runExport(std::shared_ptr<const SceneDesc> scene, std::unique_ptr<FrameSink> sink,
+                           const QString& destination) {
+    ExportJob job = exportJob(std::move(scene), std::move(sink), destination);
     exportWithProgress(this, std::move(job), [this](bool ok, bool cancelled, const QString& message) {
         if (ok || cancelled)
             statusBar()->showMessage(message, 10000);
