@@ -42,6 +42,7 @@
 #include "scene_editor.h"
 #include "text_capture.h"
 #include "timeline_widget.h"
+#include "view_mode_menu.h"
 #include "viewport_widget.h"
 
 namespace f2::viewer {
@@ -97,8 +98,9 @@ MainWindow::MainWindow(QWidget* parent)
     sizeStatus_ = new QLabel(this);
     selectionStatus_ = new QLabel(this);
     refineStatus_ = new QLabel(this);
+    viewStatus_ = new QLabel(this);
     for (QLabel* label :
-         {selectionStatus_, refineStatus_, frameStatus_, timeStatus_, fpsStatus_, sizeStatus_})
+         {selectionStatus_, viewStatus_, refineStatus_, frameStatus_, timeStatus_, fpsStatus_, sizeStatus_})
         statusBar()->addPermanentWidget(label);
 
     frameTimer_.setSingleShot(true);
@@ -230,6 +232,8 @@ void MainWindow::createActions() {
         scales->addAction(a);
         if (int(scale) == saved) viewport_->setRenderScale(scale);
     }
+    viewModes_ = new ViewModeMenu(view);
+    connect(viewModes_, &ViewModeMenu::modeChanged, this, &MainWindow::scheduleFrame);
     QAction* refineAction = view->addAction(tr("&Refine When Paused"), this, &MainWindow::setRefinement);
     refineAction->setCheckable(true);
     refineAction->setChecked(refinement_);
@@ -486,7 +490,9 @@ void MainWindow::requestFrame() {
     if (!scene) return;
     const double time = playback_->time();
     viewport_->followSceneCamera(cameraAt(*scene, time));
-    lastRequest_ = {std::move(scene), time, viewport_->viewCamera(), {}};
+    RenderOptions options;
+    options.view = viewModes_->mode();
+    lastRequest_ = {std::move(scene), time, viewport_->viewCamera(), options};
     controller_->request(lastRequest_);
 }
 
@@ -500,7 +506,7 @@ void MainWindow::setRefinement(bool on) {
 
 bool MainWindow::isRefining() const {
     return refinement_ && !playback_->isPlaying() && shownFrame_.serial != 0 &&
-           shownFrame_.antialias < kRefinedAntialias;
+           shownFrame_.view == ViewMode::Shaded && shownFrame_.antialias < kRefinedAntialias;
 }
 
 void MainWindow::refine() {
@@ -660,8 +666,11 @@ void MainWindow::updateStatus() {
         sizeStatus_->setText(tr("%1×%2").arg(shownFrame_.size.width()).arg(shownFrame_.size.height()));
     }
     fpsStatus_->setText(tr("%1 fps").arg(controller_->achievedFps(), 0, 'f', 1));
+    viewStatus_->setText(tr("view: %1").arg(ViewModeMenu::label(shownFrame_.view)));
     const int n = shownFrame_.antialias;
-    refineStatus_->setText(shownFrame_.serial == 0 || playback_->isPlaying() || !refinement_ ? QString()
+    refineStatus_->setText(shownFrame_.serial == 0 || playback_->isPlaying() || !refinement_ ||
+                                   shownFrame_.view != ViewMode::Shaded
+                               ? QString()
                            : isRefining() ? tr("refining: %1×%1 samples…").arg(n)
                                           : tr("refined: %1×%1 samples").arg(n));
 }
@@ -704,7 +713,9 @@ Image MainWindow::frameToSave() const {
     const QSize size = viewport_->renderSize();
     Renderer renderer;
     Image image;
-    renderer.render(*document_->scene(), playback_->time(), viewport_->viewCamera(size), image);
+    RenderOptions options;
+    options.view = viewModes_->mode();  // what the picture shows
+    renderer.render(*document_->scene(), playback_->time(), viewport_->viewCamera(size), image, options);
     return image;
 }
 

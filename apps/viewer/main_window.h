@@ -33,6 +33,7 @@ class SceneEditor;
 class SceneDocument;
 class TimelineWidget;
 class ViewportWidget;
+class ViewModeMenu;
 enum class RenderScale;
 
 class MainWindow : public QMainWindow {
@@ -79,6 +80,8 @@ class MainWindow : public QMainWindow {
     TimelineWidget* timeline() const { return timeline_; }
     ViewportWidget* viewport() const { return viewport_; }
     RenderController* renderController() const { return controller_.get(); }
+    /// View › Mode: what the picture shows (shaded or a diagnostic view).
+    ViewModeMenu* viewModes() const { return viewModes_; }
     QListWidget* problemsList() const { return problemsList_; }
     QDockWidget* diagnosticsDock() const { return diagnosticsDock_; }
     EditorDock* editorDock() const { return editorDock_; }
@@ -110,6 +113,7 @@ class MainWindow : public QMainWindow {
     void keyCameraHere();
     /// While paused, the picture refines: the same frame again with 2x2, then
     /// kRefinedAntialias x kRefinedAntialias samples (View › Refine When Paused).
+    /// Only the shaded view refines: the diagnostic views trace pixel centres.
     void setRefinement(bool on);
     /// The picture on screen is still to be refined.
     bool isRefining() const;
@@ -195,6 +199,8 @@ class MainWindow : public QMainWindow {
     QLabel* selectionStatus_ = nullptr;
     std::optional<Selection> selection_;
     QLabel* refineStatus_ = nullptr;
+    QLabel* viewStatus_ = nullptr;  ///< the view mode of the picture on screen
+    ViewModeMenu* viewModes_ = nullptr;
     bool refinement_ = true;
     RenderRequest lastRequest_;  // the view the latest request showed, at 1 sample
     QTimer frameTimer_;          // coalesces scheduleFrame() calls
