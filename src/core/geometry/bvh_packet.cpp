@@ -115,8 +115,10 @@ Mask occludedPacket(const Bvh& bvh, const ParallelRays& rays, Mask active, Float
     return occludedPacket(bvh, rays, active, tMin, tMax, skip, {&root, 1});
 }
 
-Mask occludedPacket(const Bvh& bvh, const ParallelRays& rays, Mask active, Float tMin, Float tMax, Int skip,
-                    std::span<const std::uint32_t> roots) {
+namespace {
+template <class Origin, class Direction>
+Mask occludedFrom(const Bvh& bvh, const Rays<Origin, Direction>& rays, Mask active, Float tMin, Float tMax,
+                  Int skip, std::span<const std::uint32_t> roots) {
     const std::span<const Bvh::Node> nodes = bvh.nodes();
     const std::span<const Primitive> ordered = bvh.orderedPrimitives();
     Mask blocked = simd::noLanes();
@@ -151,6 +153,22 @@ Mask occludedPacket(const Bvh& bvh, const ParallelRays& rays, Mask active, Float
         if (top == 0) return blocked;
         current = stack[--top];
     }
+}
+}  // namespace
+
+Mask occludedPacket(const Bvh& bvh, const ParallelRays& rays, Mask active, Float tMin, Float tMax, Int skip,
+                    std::span<const std::uint32_t> roots) {
+    return occludedFrom(bvh, rays, active, tMin, tMax, skip, roots);
+}
+
+Mask occludedPacket(const Bvh& bvh, const EyeRays& rays, Mask active, Float tMin, Float tMax, Int skip) {
+    const std::uint32_t root = 0;
+    return occludedFrom(bvh, rays, active, tMin, tMax, skip, {&root, 1});
+}
+
+Mask occludedPacket(const Bvh& bvh, const FreeRays& rays, Mask active, Float tMin, Float tMax, Int skip) {
+    const std::uint32_t root = 0;
+    return occludedFrom(bvh, rays, active, tMin, tMax, skip, {&root, 1});
 }
 
 template <class Excludes, class Distance>
