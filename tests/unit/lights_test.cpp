@@ -11,6 +11,7 @@
 #include "core/anim/light_frame.h"
 #include "core/render/pixel_report.h"
 #include "core/render/renderer.h"
+#include "core/scene/bench_scenes.h"
 #include "test_scenes.h"
 
 namespace f2 {
@@ -243,13 +244,8 @@ TEST(LightPacketPath, IdenticalToTheReferenceForEveryLightKind) {
                          "soft point and spot");
 }
 
-TEST(LightPacketPath, WithinOneLevelOfTheReferenceWithHighlights) {
-    // With highlights the packet path's pow() may round one level apart (docs/design.md).
-    SceneDesc scene = test::sceneFromText(
-        "/camera 160 120 0.6 30 180 -300 25 -5 0\n/box floor 800 20 800 0 -10 100\n"
-        "/sphere s 40 0 40 100\n/material s 1 1 0.8 20\n/robot r 100 0 150 0 200 0\n/amb_light 0.1\n"
-        "/point_light 0.6 -80 220 20 size 40 4\n/spot_light 0.6 150 250 -30 -0.4 -1 0.3 20 35\n"
-        "/dir_light 0.5 0.3 -1 0.6 angle 2 4\n");
+/// With highlights the packet path's pow() may round one level apart (docs/design.md).
+void expectPathsWithinOneLevel(const SceneDesc& scene, const std::string& what) {
     Renderer renderer(2);
     Image fast, reference;
     Camera camera = Camera::fromDesc(scene.camera);
@@ -260,7 +256,25 @@ TEST(LightPacketPath, WithinOneLevelOfTheReferenceWithHighlights) {
         Rgb8 a = fast.pixels[i], b = reference.pixels[i];
         worst = std::max({worst, std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b)});
     }
-    EXPECT_LE(worst, 1);
+    EXPECT_LE(worst, 1) << what;
+}
+
+TEST(LightPacketPath, WithinOneLevelOfTheReferenceWithHighlights) {
+    expectPathsWithinOneLevel(
+        test::sceneFromText(
+            "/camera 160 120 0.6 30 180 -300 25 -5 0\n/box floor 800 20 800 0 -10 100\n"
+            "/sphere s 40 0 40 100\n/material s 1 1 0.8 20\n/robot r 100 0 150 0 200 0\n/amb_light 0.1\n"
+            "/point_light 0.6 -80 220 20 size 40 4\n/spot_light 0.6 150 250 -30 -0.4 -1 0.3 20 35\n"
+            "/dir_light 0.5 0.3 -1 0.6 angle 2 4\n"),
+        "highlights");
+    // Hundreds of robots: a soft sun's shadow packets start from the deep
+    // nodes that one of its sample directions reaches from each tile.
+    BenchSceneSpec spec;
+    spec.shape = BenchShape::Robots;
+    spec.count = 400;
+    expectPathsWithinOneLevel(
+        test::sceneFromText(benchSceneText(spec, 200, 150) + "/dir_light 0.4 -0.2 -1 0.5 angle 4 4\n"),
+        "400 robots under a soft sun");
 }
 
 }  // namespace

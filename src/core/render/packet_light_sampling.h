@@ -17,11 +17,11 @@ inline Vec3P normalize(const Vec3P& v) { return v * (Float(1.0f) / simd::sqrt(do
 
 inline std::uint64_t laneCount(Mask m) { return std::uint64_t(__builtin_popcount(simd::bits(m))); }
 
-/// visibleSunSamples() for the `lit` lanes; shadow rays start from `entry`
-/// (Bvh::beamEntryNodes of the tile's origins along that sample) when given.
+/// visibleSunSamples() for the `lit` lanes; the shadow rays start from
+/// `entry` (Bvh::beamEntryNodes of the tile's origins along the samples).
 inline Int visibleSunSamplesP(const FrameScene& frame, const LightSample& light, const Vec3P& origin,
-                              const Vec3P& normal, Int skip, Mask lit, RayCounts& counts) {
-    const std::uint32_t root = 0;
+                              const Vec3P& normal, Int skip, Mask lit, std::span<const std::uint32_t> entry,
+                              RayCounts& counts) {
     Int visible(0);
     for (std::uint32_t k = 0; k < light.sampleCount; ++k) {
         const Vec3 toSample = frame.sunDirections[light.firstSample + k];
@@ -30,7 +30,7 @@ inline Int visibleSunSamplesP(const FrameScene& frame, const LightSample& light,
         counts.shadow += laneCount(lanes);
         const Mask reach =
             simd::andNot(lanes, occludedPacket(frame.bvh, ParallelRays(origin, toSample), lanes, Float(0.0f),
-                                               Float(kInfinity), skip, {&root, 1}));
+                                               Float(kInfinity), skip, entry));
         visible = simd::select(reach, visible + Int(1), visible);
     }
     return visible;

@@ -109,14 +109,14 @@ inline ColorP shadeSurfaces(const FrameScene& frame, const PacketSurface& s,
         Mask lit = s.hitLanes & (nDotL > Float(0.0f));
         if (simd::none(lit)) continue;
         Float intensity(light.intensity);
+        std::span<const std::uint32_t> entry = i < shadowEntry.size() ? shadowEntry[i] : std::span{&root, 1};
         if (light.sampleCount == 0) {
             counts.shadow += laneCount(lit);
-            std::span<const std::uint32_t> entry =
-                i < shadowEntry.size() ? shadowEntry[i] : std::span{&root, 1};
             lit = simd::andNot(lit, occludedPacket(frame.bvh, ParallelRays(s.shadowOrigin, light.toLight),
                                                    lit, Float(0.0f), Float(kInfinity), s.skip, entry));
         } else {
-            Int visible = visibleSunSamplesP(frame, light, s.shadowOrigin, s.normal, s.skip, lit, counts);
+            Int visible =
+                visibleSunSamplesP(frame, light, s.shadowOrigin, s.normal, s.skip, lit, entry, counts);
             lit = lit & (Int(0) < visible);
             intensity = intensity * visibleFraction(visible, light.sampleCount);
         }
