@@ -61,7 +61,8 @@ struct LightTerm {
     float distance = kInfinity;  ///< to a point or spot light's centre
     float intensity = 0;         ///< what arrives, before shadows: after a spot's cone and fade
     float nDotL = 0;             ///< <= 0: the surface faces away, no shadow ray
-    float visible = 1;           ///< fraction of the light's shadow rays that reach it
+    float visible = 1;           ///< fraction of the light's shadow samples that reach it
+    std::uint32_t rays = 0;      ///< shadow rays cast
     bool shadowed = false;       ///< none did
     float diffuse = 0;           ///< intensity * visible * kd * N.L (0 unless lit)
     float specular = 0;          ///< intensity * visible * ks * (R.V)^n (0 unless lit and R.V > 0)
@@ -82,9 +83,11 @@ inline void addPhong(LightTerm& term, const Material& m, Vec3 n, Vec3 toEye, flo
 }
 
 /// Colour (0..1, unclamped) of the nearest hit `hit` of `ray`; onLight(term)
-/// sees each light's LightTerm (the --pixel report).
-template <class OnLight>
-inline Vec3 shadeHit(const FrameScene& frame, const Ray& ray, const HitRecord& hit, OnLight&& onLight) {
+/// sees each light's LightTerm (the --pixel report); the shadow rays'
+/// traversals add their work to `count` (TraversalCount: the cost view).
+template <class OnLight, class Count>
+inline Vec3 shadeHit(const FrameScene& frame, const Ray& ray, const HitRecord& hit, OnLight&& onLight,
+                     Count& count) {
     const Surface& surface = frame.surfaces[hit.primitive];
     const Material& m = surface.material;
     const ShadingPoint s = shadingPoint(frame, ray, hit);
@@ -102,11 +105,15 @@ inline Vec3 shadeHit(const FrameScene& frame, const Ray& ray, const HitRecord& h
         term.nDotL = dot(n, light.toLight);
         if (term.nDotL > 0) {
             if (light.sampleCount == 0) {
-                term.shadowed = frame.bvh.occluded({s.shadowOrigin, light.toLight}, 0.0f, kInfinity, s.skip);
+                term.rays = 1;
+                term.shadowed =
+                    frame.bvh.occluded({s.shadowOrigin, light.toLight}, 0.0f, kInfinity, s.skip, count);
             } else {
-                const std::uint32_t visible = visibleSunSamples(frame, light, s.shadowOrigin, n, s.skip);
-                term.visible = float(visible) / float(light.sampleCount);
-                term.shadowed = visible == 0;
+                const SampledShadow shadow =
+                    visibleSunSamples(frame, light, s.shadowOrigin, n, s.skip, count);
+                term.rays = shadow.rays;
+                term.visible = float(shadow.visible) / float(light.sampleCount);
+                term.shadowed = shadow.visible == 0;
             }
             if (!term.shadowed) addPhong(term, m, n, toEye, diffuse, specular);
         }
@@ -124,12 +131,14 @@ inline Vec3 shadeHit(const FrameScene& frame, const Ray& ray, const HitRecord& h
             term.intensity = localLightIntensity(light, -dot(view.toLight, light.axis), view.distance);
             if (term.intensity > 0) {
                 if (light.sampleCount == 0) {
-                    term.shadowed = localLightBlocked(frame, light, view, s.skip);
+                    term.rays = 1;
+                    term.shadowed = localLightBlocked(frame, light, view, s.skip, count);
                 } else {
-                    const std::uint32_t visible =
-                        visibleDiscSamples(frame, light, view, s.shadowOrigin, n, s.skip);
-                    term.visible = float(visible) / float(light.sampleCount);
-                    term.shadowed = visible == 0;
+                    const SampledShadow shadow =
+                        visibleDiscSamples(frame, light, view, s.shadowOrigin, n, s.skip, count);
+                    term.rays = shadow.rays;
+                    term.visible = float(shadow.visible) / float(light.sampleCount);
+                    term.shadowed = shadow.visible == 0;
                 }
                 if (!term.shadowed) addPhong(term, m, n, toEye, diffuse, specular);
             }
@@ -137,6 +146,12 @@ inline Vec3 shadeHit(const FrameScene& frame, const Ray& ray, const HitRecord& h
         onLight(term);
     }
     return surface.color * std::min(diffuse, kMaxLight) + Vec3{specular, specular, specular};
+}
+
+template <class OnLight>
+inline Vec3 shadeHit(const FrameScene& frame, const Ray& ray, const HitRecord& hit, OnLight&& onLight) {
+    NoTraversalCount none;
+    return shadeHit(frame, ray, hit, onLight, none);
 }
 
 inline Vec3 shadeHit(const FrameScene& frame, const Ray& ray, const HitRecord& hit) {
