@@ -355,9 +355,9 @@ class Parser : private ExpansionSink {
             case Command::AmbLight:
                 return parseAmbLight();
             case Command::PointLight:
-                return parsePointLight();
+                return parseLocalLight(LocalLightKind::Point);
             case Command::SpotLight:
-                return parseSpotLight();
+                return parseLocalLight(LocalLightKind::Spot);
             case Command::DirLight:
                 return parseDirLight();
             case Command::Background:
@@ -779,15 +779,21 @@ class Parser : private ExpansionSink {
         return ok;
     }
 
+    /// A light command's `fixed` arguments are there (options may follow) and
+    /// the light limit is not reached.
+    bool lightArgsAllowed(int fixed) {
+        if (argCount() < fixed) {
+            expectArgs({fixed});
+            return false;
+        }
+        return lightAllowed();
+    }
+
     /// The largest angular radius of a soft sun (degrees): wider is no longer a sun.
     static constexpr float kMaxSunRadius = 45.0f;
 
     void parseDirLight() {
-        if (argCount() < 4) {
-            expectArgs({4});
-            return;
-        }
-        if (!lightAllowed()) return;
+        if (!lightArgsAllowed(4)) return;
         bool ok = true;
         DirectionalLight light;
         light.intensity = nonNegative(0, "light intensity", ok);
@@ -798,38 +804,19 @@ class Parser : private ExpansionSink {
         scene_.lights.push_back(light);
     }
 
-    /// `/point_light <i> <x> <y> <z> [fade D P] [size S N]`
-    void parsePointLight() {
-        if (argCount() < 4) {
-            expectArgs({4});
-            return;
-        }
-        if (!lightAllowed()) return;
-        bool ok = true;
-        LocalLight light;
-        light.intensity = nonNegative(0, "light intensity", ok);
-        light.position = vec3(1, ok);
-        LightOptions options;
-        if (!lightOptions(4, {LightOption::Fade, LightOption::Size}, options) || !ok) return;
-        light.fade = options.fade;
-        light.area = options.shadow;
-        scene_.localLights.push_back(light);
-    }
-
+    /// `/point_light <i> <x> <y> <z> [fade D P] [size S N]` and
     /// `/spot_light <i> <x> <y> <z> <dx> <dy> <dz> <radius> <falloff> [tightness T] [fade D P] [size S N]`
-    void parseSpotLight() {
-        if (argCount() < 9) {
-            expectArgs({9});
-            return;
-        }
-        if (!lightAllowed()) return;
+    void parseLocalLight(LocalLightKind kind) {
+        const bool spot = kind == LocalLightKind::Spot;
+        const int fixed = spot ? 9 : 4;
+        if (!lightArgsAllowed(fixed)) return;
         bool ok = true;
         LocalLight light;
-        light.kind = LocalLightKind::Spot;
+        light.kind = kind;
         light.intensity = nonNegative(0, "light intensity", ok);
         light.position = vec3(1, ok);
-        light.direction = lightDirection(4, ok);
-        {
+        if (spot) {
+            light.direction = lightDirection(4, ok);
             bool good = true;
             light.radius = nonNegative(7, "spot radius", good);
             light.falloff = nonNegative(8, "spot falloff", good);
@@ -845,8 +832,11 @@ class Parser : private ExpansionSink {
             ok = ok && good;
         }
         LightOptions options;
-        if (!lightOptions(9, {LightOption::Tightness, LightOption::Fade, LightOption::Size}, options) || !ok)
-            return;
+        const bool optionsOk =
+            spot
+                ? lightOptions(fixed, {LightOption::Tightness, LightOption::Fade, LightOption::Size}, options)
+                : lightOptions(fixed, {LightOption::Fade, LightOption::Size}, options);
+        if (!optionsOk || !ok) return;
         light.tightness = options.tightness;
         light.fade = options.fade;
         light.area = options.shadow;
