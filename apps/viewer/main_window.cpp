@@ -55,6 +55,7 @@ constexpr int kLineRole = Qt::UserRole + 1;
 constexpr int kColumnRole = Qt::UserRole + 2;
 const char* const kRecentKey = "recentFiles";
 const char* const kScaleKey = "renderScale";
+const char* const kPlaybackAntialiasKey = "playbackAntialias";
 }  // namespace
 
 MainWindow::MainWindow(QWidget* parent)
@@ -97,8 +98,9 @@ MainWindow::MainWindow(QWidget* parent)
     sizeStatus_ = new QLabel(this);
     selectionStatus_ = new QLabel(this);
     refineStatus_ = new QLabel(this);
-    for (QLabel* label :
-         {selectionStatus_, refineStatus_, frameStatus_, timeStatus_, fpsStatus_, sizeStatus_})
+    playbackAntialiasStatus_ = new QLabel(this);
+    for (QLabel* label : {selectionStatus_, refineStatus_, playbackAntialiasStatus_, frameStatus_,
+                          timeStatus_, fpsStatus_, sizeStatus_})
         statusBar()->addPermanentWidget(label);
 
     frameTimer_.setSingleShot(true);
@@ -220,6 +222,23 @@ void MainWindow::createActions() {
     QAction* refineAction = view->addAction(tr("&Refine When Paused"), this, &MainWindow::setRefinement);
     refineAction->setCheckable(true);
     refineAction->setChecked(refinement_);
+    QMenu* playbackAa = view->addMenu(tr("Playback &Anti-aliasing"));
+    playbackAntialiasActions_ = new QActionGroup(this);
+    const std::pair<QString, PlaybackAntialiasMode> modes[] = {
+        {tr("&Off (1 sample)"), PlaybackAntialiasMode::Off},
+        {tr("&Auto (as many samples as the frame budget allows)"), PlaybackAntialiasMode::Auto},
+        {tr("O&n (2×2 samples)"), PlaybackAntialiasMode::On}};
+    for (const auto& [label, mode] : modes) {
+        QAction* a = playbackAa->addAction(label, this, [this, m = mode] { setPlaybackAntialias(m); });
+        a->setCheckable(true);
+        a->setData(int(mode));
+        playbackAntialiasActions_->addAction(a);
+    }
+    const int savedMode = QSettings().value(kPlaybackAntialiasKey, int(PlaybackAntialiasMode::Auto)).toInt();
+    setPlaybackAntialias(savedMode >= int(PlaybackAntialiasMode::Off) &&
+                                 savedMode <= int(PlaybackAntialiasMode::On)
+                             ? PlaybackAntialiasMode(savedMode)
+                             : PlaybackAntialiasMode::Auto);
     view->addSeparator();
     view->addAction(editorDock_->toggleViewAction());
     view->addAction(diagnosticsDock_->toggleViewAction());
@@ -246,6 +265,15 @@ void MainWindow::resizeForViewport(QSize viewportSize) {
     if (const QScreen* s = screen()) wanted = wanted.boundedTo(s->availableGeometry().size());
     resize(wanted);
 }
+
+void MainWindow::setPlaybackAntialias(PlaybackAntialiasMode mode) {
+    QSettings().setValue(kPlaybackAntialiasKey, int(mode));
+    playbackAntialias_.setMode(mode);
+    for (QAction* a : playbackAntialiasActions_->actions()) a->setChecked(a->data().toInt() == int(mode));
+    updateStatus();
+}
+
+QString MainWindow::playbackAntialiasStatus() const { return playbackAntialiasStatus_->text(); }
 
 void MainWindow::setRenderScale(RenderScale scale) {
     QSettings().setValue(kScaleKey, int(scale));
@@ -404,6 +432,9 @@ void MainWindow::onSceneChanged(bool newDocument) {
     const auto scene = document_->scene();
     playback_->setRange(scene->lastFrame(), scene->fps);
     timeline_->setRange(scene->lastFrame(), scene->fps);
+    // A playing frame may take one tick of the clock; another scene's cost is not known yet.
+    playbackAntialias_.setBudgetMs(playback_->tickIntervalMs());
+    if (newDocument) playbackAntialias_.reset();
     if (newDocument) playback_->seek(0);
     timeline_->setTime(playback_->time());
     const Camera camera = cameraAt(*scene, playback_->time());
@@ -469,7 +500,9 @@ void MainWindow::requestFrame() {
     const double time = playback_->time();
     viewport_->followSceneCamera(cameraAt(*scene, time));
     lastRequest_ = {std::move(scene), time, viewport_->viewCamera(), {}};
-    controller_->request(lastRequest_);
+    RenderRequest request = lastRequest_;
+    if (playback_->isPlaying()) request.options.antialias = playbackAntialias_.level();
+    controller_->request(request);
 }
 
 void MainWindow::setRefinement(bool on) {
@@ -497,6 +530,7 @@ void MainWindow::refine() {
 }
 
 void MainWindow::onFrameReady(const QImage& image, const FrameInfo& info) {
+    playbackAntialias_.observe(info.antialias, info.timings);
     shownFrame_ = info;
     viewport_->setImage(image);
     updateSelectionView();
@@ -598,6 +632,11 @@ void MainWindow::updateStatus() {
     refineStatus_->setText(shownFrame_.serial == 0 || playback_->isPlaying() || !refinement_ ? QString()
                            : isRefining() ? tr("refining: %1×%1 samples…").arg(n)
                                           : tr("refined: %1×%1 samples").arg(n));
+    const char* const modeNames[] = {"off", "auto", "on"};
+    playbackAntialiasStatus_->setText(
+        shownFrame_.serial != 0 && playback_->isPlaying()
+            ? tr("playing: %1×%1 samples (%2)").arg(n).arg(tr(modeNames[int(playbackAntialias_.mode())]))
+            : QString());
 }
 
 void MainWindow::openDialog() {

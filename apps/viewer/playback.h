@@ -22,6 +22,8 @@ class Playback : public QObject {
     int frame() const;
     bool isPlaying() const { return timer_.isActive(); }
     double speed() const { return speed_; }
+    /// Milliseconds between the clock's ticks while playing: one scene frame, at most 60 a second.
+    int tickIntervalMs() const { return timer_.interval(); }
 
    public slots:
     void play();
