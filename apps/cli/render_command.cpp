@@ -19,6 +19,7 @@
 #include "pixel_story.h"
 #include "progress.h"
 #include "scene_source.h"
+#include "view_option.h"
 
 namespace f2::cli {
 
@@ -35,6 +36,7 @@ struct RenderArgs {
     std::string shard;
     bool resume = false;
     std::string pixel;  ///< "X,Y": print that pixel's story instead of writing an image
+    ViewMode view = ViewMode::Shaded;
     MotionBlur motionBlur;
     const CLI::Option* frameOption = nullptr;
     const CLI::Option* motionBlurOption = nullptr;
@@ -47,6 +49,7 @@ struct AnimationJob {
     AnimationRange range;
     int antialias;
     int threads;
+    ViewMode viewMode;
     MotionBlur motionBlur;
 };
 
@@ -59,6 +62,7 @@ std::string describe(const AnimationJob& job) {
     if (job.range.shardCount > 1) s << " shard " << job.range.shardIndex << "/" << job.range.shardCount;
     s << " (" << job.view.width << "x" << job.view.height << ", " << job.range.outputFps << " fps, aa "
       << job.antialias;
+    if (job.viewMode != ViewMode::Shaded) s << ", view " << viewModeName(job.viewMode);
     if (job.motionBlur.enabled())
         s << ", motion blur " << job.motionBlur.shutter << " x " << job.motionBlur.samples;
     s << ")";
@@ -75,7 +79,7 @@ AnimationResult renderWithProgress(const AnimationJob& job, FrameSink& sink, Pro
                             skipped = p.skipped;
                             progress.update(int(p.done), double(p.subFramesDone) / p.subFramesPerFrame);
                         },
-                        {job.threads, {job.antialias}, job.motionBlur});
+                        {job.threads, {job.antialias, job.viewMode}, job.motionBlur});
     progress.clear();
     return result;
 }
@@ -139,7 +143,7 @@ int renderImage(const RenderArgs& args, const LoadedScene& loaded, const FrameVi
     const std::string where = toStdout ? "standard output" : args.output;
     const AnimationResult result =
         renderAnimation(loaded.scene, AnimationRange::still(t, loaded.scene.fps), view, sink,
-                        &interruptFlag(), {}, {args.threads, {args.antialias}, args.motionBlur});
+                        &interruptFlag(), {}, {args.threads, {args.antialias, args.view}, args.motionBlur});
     switch (result.outcome) {
         case AnimationResult::Outcome::Failed:
             std::cerr << "f2 render: " << result.error << '\n';
@@ -151,7 +155,8 @@ int renderImage(const RenderArgs& args, const LoadedScene& loaded, const FrameVi
             break;
     }
     std::cerr << "f2 render: " << loaded.name << " frame " << t << " -> " << where << " (" << view.width
-              << "x" << view.height << ", ";
+              << "x" << view.height << ", "
+              << (args.view != ViewMode::Shaded ? "view " + std::string(viewModeName(args.view)) + ", " : "");
     if (args.motionBlur.enabled())
         std::cerr << "motion blur " << args.motionBlur.shutter << " x " << args.motionBlur.samples << ", ";
     std::cerr << result.threads << " threads, " << formatMilliseconds(result.renderMs) << ")\n";
@@ -192,6 +197,9 @@ int runRender(const RenderArgs& args) {
         return usageError(
             "--motion-blur: the shutter must be more than 0 (a fraction of a frame, up to 1); leave the "
             "option out for sharp frames");
+    if (args.motionBlur.enabled() && args.view != ViewMode::Shaded)
+        return usageError("--view " + std::string(viewModeName(args.view)) +
+                          " shows one instant; --motion-blur averages the shaded picture over many");
     std::string error;
     auto output = classifyOutput(args.output, error);
     if (!output) return usageError(error);
@@ -223,9 +231,10 @@ int runRender(const RenderArgs& args) {
                                 0,           shard.index, shard.count,       range.step};
     if (frames.lastRendered() > lastFrame)
         std::cerr << "f2 render: warning: " << pastTheEndWarning(frames, lastFrame) << '\n';
-    AnimationJob job{&*loaded,     FrameView::sceneCamera(width, height),
-                     frames,       args.antialias,
-                     args.threads, args.motionBlur};
+    AnimationJob job{&*loaded,       FrameView::sceneCamera(width, height),
+                     frames,         args.antialias,
+                     args.threads,   args.view,
+                     args.motionBlur};
     if (!args.pixel.empty()) {
         if (!args.frames.empty() || !args.shard.empty() || args.resume)
             return usageError("--pixel traces one pixel of one frame: choose the frame with --frame");
@@ -320,6 +329,7 @@ Command addRenderCommand(CLI::App& app) {
            "Print the story of one pixel (its ray, every primitive along it, the hit, the normal, each "
            "light's term and shadow, the colour) instead of writing an image")
         ->type_name("X,Y");
+    addViewOption(*sub, args->view);
     return {sub, [args] { return runRender(*args); }};
 }
 

@@ -163,6 +163,18 @@ TEST(MotionBlur, CancelStopsBetweenSubFrames) {
     EXPECT_EQ(reported, (std::vector<int>{1, 2}));
 }
 
+TEST(MotionBlur, DiagnosticViewShowsTheMiddleSubFrame) {
+    const SceneDesc scene = test::sceneFromText(kMovingScene);
+    const auto subs = MotionBlur{1, 4}.subFrames(scene, FrameView::sceneCamera(96, 72), 5, 1);
+    RenderOptions depth;
+    depth.view = ViewMode::Depth;
+    Renderer renderer(2);
+    Image averaged, middle;
+    renderer.renderAveraged(scene, subs, averaged, depth);
+    renderer.render(scene, subs[2].time, subs[2].camera, middle, depth);
+    EXPECT_TRUE(averaged == middle);
+}
+
 /// Collects the frames a renderAnimation writes.
 class MemorySink : public FrameSink {
    public:

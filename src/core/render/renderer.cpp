@@ -4,8 +4,10 @@
 #include <chrono>
 
 #include "core/anim/frame_builder.h"
+#include "core/render/diagnostic_view.h"
 #include "core/render/packet_shading.h"
 #include "core/render/shading.h"
+#include "core/render/view_legend.h"
 
 namespace f2 {
 
@@ -228,6 +230,12 @@ bool forEachTile(ThreadPool& pool, const Camera& camera, RayCounts* rays, Render
 
 bool Renderer::trace(const FrameScene& frame, const Camera& camera, Image& out, const RenderOptions& options,
                      const std::atomic<bool>* cancel, RayCounts* rays) {
+    if (options.view != ViewMode::Shaded) {
+        ViewRange range;
+        if (!traceView(frame, camera, options.view, out, &pool_, cancel, &range, rays)) return false;
+        drawViewLegend(out, options.view, range);
+        return true;
+    }
     out.resize(camera.width, camera.height);
     const int aa = options.antialias < 1 ? 1 : options.antialias;
     return forEachTile(pool_, camera, rays, [&](int x0, int y0, int x1, int y1, RayCounts& tileRays) {
@@ -293,6 +301,11 @@ FrameTimings Renderer::renderAveraged(const SceneDesc& scene, std::span<const Su
                                       const std::function<void(int)>& subFrameDone) {
     FrameTimings timings;
     if (subFrames.empty()) return timings;
+    // A diagnostic view shows one instant (depths or costs do not average): the middle sub-frame.
+    if (options.view != ViewMode::Shaded) {
+        const SubFrame& middle = subFrames[subFrames.size() / 2];
+        return render(scene, middle.time, middle.camera, out, options, cancel);
+    }
     const int width = subFrames.front().camera.width, height = subFrames.front().camera.height;
     sum_.resize(width, height);
     std::fill(sum_.pixels.begin(), sum_.pixels.end(), LinearRgb{});

@@ -11,12 +11,16 @@
 #include "core/render/image.h"
 #include "core/render/linear_image.h"
 #include "core/render/ray_counts.h"
+#include "core/render/view_mode.h"
 #include "core/util/thread_pool.h"
 
 namespace f2 {
 
 struct RenderOptions {
     int antialias = 1;  ///< N: N x N stratified samples per pixel; 1 = pixel centre (SPEC 2)
+    /// What the pixels show. The diagnostic modes trace one ray per pixel
+    /// centre by the reference path (diagnostic_view.h); antialias is for Shaded.
+    ViewMode view = ViewMode::Shaded;
 };
 
 /// Wall-clock split of one frame, in milliseconds, and the rays it cast.
@@ -44,7 +48,8 @@ class Renderer {
     /// `threads` = 0 uses every core.
     explicit Renderer(int threads = 0);
 
-    /// Traces a prepared frame (its BVH built) into `out` at the camera's size.
+    /// Traces a prepared frame (its BVH built) into `out` at the camera's size,
+    /// in the view mode of `options` (depth and cost with their legend, view_legend.h).
     /// Returns false if `cancel` was raised (the image is then incomplete).
     bool trace(const FrameScene& frame, const Camera& camera, Image& out, const RenderOptions& options = {},
                const std::atomic<bool>* cancel = nullptr, RayCounts* rays = nullptr);
@@ -58,7 +63,8 @@ class Renderer {
     /// size): each is evaluated, built and traced as by render(), its pixels
     /// (the clamped mean of the anti-aliasing samples) added up in float in
     /// sub-frame order, and the mean converted to bytes once. The same bytes for
-    /// any thread count; one sub-frame gives render()'s bytes. `subFrameDone`
+    /// any thread count; one sub-frame gives render()'s bytes. A diagnostic
+    /// view (options.view) shows the middle sub-frame alone. `subFrameDone`
     /// (optional) is called on this thread after each sub-frame with the number done.
     FrameTimings renderAveraged(const SceneDesc& scene, std::span<const SubFrame> subFrames, Image& out,
                                 const RenderOptions& options = {}, const std::atomic<bool>* cancel = nullptr,
