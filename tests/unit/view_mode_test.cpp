@@ -131,6 +131,23 @@ TEST(ViewModes, ShadowMaskIsTheFractionOfLights) {
     EXPECT_EQ(image.at(kCentre, kCentre), (Rgb8{128, 128, 128}));  // one lit, one turned away
 }
 
+TEST(ViewModes, ShadowMaskCountsASoftLightsVisibleFraction) {
+    // The light is a sun of angular radius 10°: a floor point 33.5 to the side of
+    // the ball's centre sees the ball's rim 4.4° from straight up, inside the sun's disc.
+    std::string text = kBallOverFloor;
+    text.replace(text.find("/dir_light 0.8 0 -1 0"), 21, "/dir_light 0.8 0 -1 0 angle 10 4");
+    Frame f(text.c_str());
+    const Vec3 edge{33.5f, -45, 100};
+    const RayProbe p = probeRay(f.renderer.frame(), {{0, 0, 0}, normalize(edge)});
+    ASSERT_TRUE(p.hit);
+    ASSERT_EQ(p.primitive, 1u);
+    EXPECT_GT(p.lit, 0.0f);
+    EXPECT_GT(p.blocked, 0.0f);
+    EXPECT_FLOAT_EQ(p.lit + p.blocked, 1.0f);
+    EXPECT_EQ(p.shadowRays, 16u);  // 4 x 4 samples
+    EXPECT_EQ(shadowMaskColor(p), (Rgb8{255, toByte(p.lit), toByte(p.lit)}));
+}
+
 TEST(ViewModes, PrimitiveIdsAreDistinctFixedColours) {
     Frame f(kBallOverFloor);
     const Image image = f.view(ViewMode::PrimitiveIds);

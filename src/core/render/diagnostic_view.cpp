@@ -23,7 +23,10 @@ RayProbe probeRay(const FrameScene& frame, const Ray& ray, bool lights) {
         [&](const LightTerm& term) {
             if (term.rays == 0) return;  // faces away, or outside a spot's cone
             probe.shadowRays += term.rays;
-            ++(term.shadowed ? probe.blocked : probe.lit);  // a soft light partly seen counts as lit
+            // A soft light counts by the fraction of its samples that reach the point.
+            const float seen = term.shadowed ? 0.0f : term.visible;
+            probe.lit += seen;
+            probe.blocked += 1.0f - seen;
         },
         probe.cost);
     return probe;
@@ -39,7 +42,7 @@ Rgb8 shadowMaskColor(const RayProbe& probe) {
     if (!probe.hit) return kMaskBackground;
     if (probe.lights == 0) return {0, 0, 0};
     const float n = float(probe.lights);
-    const float lit = float(probe.lit) / n, blocked = float(probe.blocked) / n;
+    const float lit = probe.lit / n, blocked = probe.blocked / n;
     return {toByte(lit + blocked), toByte(lit), toByte(lit)};
 }
 

@@ -25,8 +25,8 @@ struct RayProbe {
     Vec3 normal;                  ///< unit, turned to face the viewer (as shaded)
     std::uint32_t primitive = 0;  ///< the primitive hit, index in scene order
     int lights = 0;               ///< lights of the frame
-    int lit = 0;                  ///< of them, reaching the point
-    int blocked = 0;              ///< facing the point, but their shadow ray meets something
+    float lit = 0;                ///< of them, reaching the point (a soft light: the fraction of its samples)
+    float blocked = 0;            ///< facing the point, but their shadow rays meet something (the fraction)
     TraversalCount cost;          ///< the primary ray's traversal plus every shadow ray's
     std::uint32_t shadowRays = 0;
 };
