@@ -112,10 +112,10 @@ void applyViewerOptions(const ViewerOptions& options, MainWindow& window) {
             const FrameInfo& last = window.shownFrame();
             std::fprintf(stderr,
                          "f2-viewer: %llu frames in %.2f s = %.1f fps achieved (scene %d fps), %dx%d, "
-                         "last frame %.1f ms, %llu requests skipped\n",
+                         "last frame %.1f ms with %dx%d samples, %llu requests skipped\n",
                          static_cast<unsigned long long>(frames), seconds, frames / seconds,
                          window.playback()->fps(), last.size.width(), last.size.height(),
-                         last.timings.totalMs(),
+                         last.timings.totalMs(), last.antialias, last.antialias,
                          static_cast<unsigned long long>(window.renderController()->framesSkipped()));
         });
     }
