@@ -22,6 +22,7 @@
 #include <QStatusBar>
 #include <QTextBlock>
 #include <QVBoxLayout>
+#include <QWindow>
 
 #include "animation_exporter.h"
 #include "autosave.h"
@@ -56,6 +57,7 @@ constexpr int kLineRole = Qt::UserRole + 1;
 constexpr int kColumnRole = Qt::UserRole + 2;
 const char* const kRecentKey = "recentFiles";
 const char* const kScaleKey = "renderScale";
+const char* const kPlaybackAntialiasKey = "playbackAntialias";
 }  // namespace
 
 MainWindow::MainWindow(QWidget* parent)
@@ -99,8 +101,9 @@ MainWindow::MainWindow(QWidget* parent)
     selectionStatus_ = new QLabel(this);
     refineStatus_ = new QLabel(this);
     viewStatus_ = new QLabel(this);
-    for (QLabel* label :
-         {selectionStatus_, viewStatus_, refineStatus_, frameStatus_, timeStatus_, fpsStatus_, sizeStatus_})
+    playbackAntialiasStatus_ = new QLabel(this);
+    for (QLabel* label : {selectionStatus_, viewStatus_, refineStatus_, playbackAntialiasStatus_,
+                          frameStatus_, timeStatus_, fpsStatus_, sizeStatus_})
         statusBar()->addPermanentWidget(label);
 
     frameTimer_.setSingleShot(true);
@@ -237,6 +240,23 @@ void MainWindow::createActions() {
     QAction* refineAction = view->addAction(tr("&Refine When Paused"), this, &MainWindow::setRefinement);
     refineAction->setCheckable(true);
     refineAction->setChecked(refinement_);
+    QMenu* playbackAa = view->addMenu(tr("Playback &Anti-aliasing"));
+    playbackAntialiasActions_ = new QActionGroup(this);
+    const std::pair<QString, PlaybackAntialiasMode> modes[] = {
+        {tr("&Off (1 sample)"), PlaybackAntialiasMode::Off},
+        {tr("&Auto (as many samples as the frame budget allows)"), PlaybackAntialiasMode::Auto},
+        {tr("O&n (2×2 samples)"), PlaybackAntialiasMode::On}};
+    for (const auto& [label, mode] : modes) {
+        QAction* a = playbackAa->addAction(label, this, [this, m = mode] { setPlaybackAntialias(m); });
+        a->setCheckable(true);
+        a->setData(int(mode));
+        playbackAntialiasActions_->addAction(a);
+    }
+    const int savedMode = QSettings().value(kPlaybackAntialiasKey, int(PlaybackAntialiasMode::Auto)).toInt();
+    setPlaybackAntialias(savedMode >= int(PlaybackAntialiasMode::Off) &&
+                                 savedMode <= int(PlaybackAntialiasMode::On)
+                             ? PlaybackAntialiasMode(savedMode)
+                             : PlaybackAntialiasMode::Auto);
     view->addSeparator();
     view->addAction(editorDock_->toggleViewAction());
     view->addAction(diagnosticsDock_->toggleViewAction());
@@ -265,6 +285,15 @@ void MainWindow::resizeForViewport(QSize viewportSize) {
     if (const QScreen* s = screen()) wanted = wanted.boundedTo(s->availableGeometry().size());
     resize(wanted);
 }
+
+void MainWindow::setPlaybackAntialias(PlaybackAntialiasMode mode) {
+    QSettings().setValue(kPlaybackAntialiasKey, int(mode));
+    playbackAntialias_.setMode(mode);
+    for (QAction* a : playbackAntialiasActions_->actions()) a->setChecked(a->data().toInt() == int(mode));
+    updateStatus();
+}
+
+QString MainWindow::playbackAntialiasStatus() const { return playbackAntialiasStatus_->text(); }
 
 void MainWindow::setRenderScale(RenderScale scale) {
     QSettings().setValue(kScaleKey, int(scale));
@@ -423,6 +452,9 @@ void MainWindow::onSceneChanged(bool newDocument) {
     const auto scene = document_->scene();
     playback_->setRange(scene->lastFrame(), scene->fps);
     timeline_->setRange(scene->lastFrame(), scene->fps);
+    // A playing frame may take one tick of the clock; another scene's cost is not known yet.
+    playbackAntialias_.setBudgetMs(playback_->tickIntervalMs());
+    if (newDocument) playbackAntialias_.reset();
     if (newDocument) {
         playback_->clearLoop();
         playback_->seek(0);
@@ -493,7 +525,10 @@ void MainWindow::requestFrame() {
     RenderOptions options;
     options.view = viewModes_->mode();
     lastRequest_ = {std::move(scene), time, viewport_->viewCamera(), options};
-    controller_->request(lastRequest_);
+    RenderRequest request = lastRequest_;
+    if (playback_->isPlaying() && options.view == ViewMode::Shaded)
+        request.options.antialias = playbackAntialias_.level();
+    controller_->request(request);
 }
 
 void MainWindow::setRefinement(bool on) {
@@ -509,6 +544,12 @@ bool MainWindow::isRefining() const {
            shownFrame_.view == ViewMode::Shaded && shownFrame_.antialias < kRefinedAntialias;
 }
 
+bool MainWindow::isPictureComplete() const {
+    return isVisible() && windowHandle() && windowHandle()->isExposed() && shownFrame_.serial != 0 &&
+           shownFrame_.size == viewport_->renderSize() && !controller_->hasPendingFrames() &&
+           !frameTimer_.isActive() && !isRefining();
+}
+
 void MainWindow::refine() {
     // Only the latest view, only when nothing newer is on its way: any change
     // (time, camera, size, scene) makes a new one-sample request, which
@@ -521,6 +562,7 @@ void MainWindow::refine() {
 }
 
 void MainWindow::onFrameReady(const QImage& image, const FrameInfo& info) {
+    playbackAntialias_.observe(info.antialias, info.timings);
     shownFrame_ = info;
     viewport_->setImage(image);
     updateSelectionView();
@@ -537,13 +579,46 @@ void MainWindow::selectAt(QPointF imagePoint) {
     const Camera camera = viewport_->viewCamera(image.size());
     const auto hit = pickPixel(*scene, shownFrame_.time, camera, int(imagePoint.x()), int(imagePoint.y()));
     setSelection(hit ? std::optional(selectionOf(*scene, *hit)) : std::nullopt);
-    if (!selection_) return;
-    if (const int line = creatingLine(editor()->toPlainText(), selection_->object)) {
+    if (selection_) showCreatingLine();
+}
+
+int MainWindow::editorLineOf(const CreatedAt& created, ObjectKind kind) const {
+    if (created.loc.file != document_->sourceName()) return 0;
+    const QTextBlock block = editor()->document()->findBlockByNumber(created.loc.line - 1);
+    if (!block.isValid()) return 0;
+    // The text may have changed since the scene parsed: the line must still hold the command.
+    const std::string_view name = objectKindName(kind);
+    const QString command = u'/' + QString::fromLatin1(name.data(), qsizetype(name.size()));
+    return block.text().mid(created.loc.column - 1).startsWith(command) ? created.loc.line : 0;
+}
+
+void MainWindow::showCreatingLine() {
+    const auto scene = document_->scene();
+    const auto object = findObject(*scene, *selection_);
+    const CreatedAt* created = document_->locations()->object(selection_->object);
+    if (!object || !created) return;
+    const QString target = selection_->target();
+    // Several objects from one line: a loop made them (or an include read more than once).
+    const QString loop =
+        created->sameLine > 1 ? tr(", one of %1 objects that line makes").arg(created->sameLine) : QString();
+    if (const int line = editorLineOf(*created, scene->objects[*object].kind)) {
         QTextCursor cursor(editor()->document()->findBlockByNumber(line - 1));
         cursor.movePosition(QTextCursor::EndOfBlock, QTextCursor::KeepAnchor);
         editor()->setTextCursor(cursor);
         editor()->centerCursor();
+        if (!loop.isEmpty())
+            statusBar()->showMessage(tr("%1 is made by line %2%3").arg(target).arg(line).arg(loop));
+        return;
     }
+    // Another file (an /include), or text that changed since: name the place, open nothing.
+    const QString place =
+        QStringLiteral("%1:%2").arg(QString::fromStdString(created->loc.file)).arg(created->loc.line);
+    statusBar()->showMessage(created->loc.file == document_->sourceName()
+                                 ? tr("%1 was made by line %2 before the latest edits%3")
+                                       .arg(target)
+                                       .arg(created->loc.line)
+                                       .arg(loop)
+                                 : tr("%1 is made in an included file, %2%3").arg(target, place, loop));
 }
 
 void MainWindow::setSelection(std::optional<Selection> selection) {
@@ -596,9 +671,13 @@ bool MainWindow::keySelectionHere() {
     }
     const int frame = playback_->frame();
     const Pose pose = selectionKeyPose(*scene, *object, selection_->part, frame);
-    const QString text = editor()->toPlainText();
-    applyEdit(editor(),
-              keyEdit(text, selection_->target(), frame, pose, creatingLine(text, selection_->object)));
+    // A new target's first key goes after its creating line, unless a loop
+    // made it (inside the loop it would be read on every pass) or it is in
+    // another file: then at the end.
+    const CreatedAt* created = document_->locations()->object(selection_->object);
+    const int createdAt =
+        created && created->sameLine == 1 ? editorLineOf(*created, scene->objects[*object].kind) : 0;
+    applyEdit(editor(), keyEdit(editor()->toPlainText(), selection_->target(), frame, pose, createdAt));
     return true;
 }
 
@@ -636,6 +715,11 @@ void MainWindow::updateStatus() {
                                ? QString()
                            : isRefining() ? tr("refining: %1×%1 samples…").arg(n)
                                           : tr("refined: %1×%1 samples").arg(n));
+    const char* const modeNames[] = {"off", "auto", "on"};
+    playbackAntialiasStatus_->setText(
+        shownFrame_.serial != 0 && playback_->isPlaying() && shownFrame_.view == ViewMode::Shaded
+            ? tr("playing: %1×%1 samples (%2)").arg(n).arg(tr(modeNames[int(playbackAntialias_.mode())]))
+            : QString());
 }
 
 void MainWindow::openDialog() {

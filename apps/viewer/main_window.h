@@ -10,9 +10,12 @@
 
 #include "animation_exporter.h"
 #include "core/render/image.h"
+#include "playback_antialias.h"
 #include "render_controller.h"
+#include "scene_locations.h"
 #include "selection.h"
 
+class QActionGroup;
 class QLabel;
 class QListWidget;
 class QListWidgetItem;
@@ -118,6 +121,12 @@ class MainWindow : public QMainWindow {
     bool isRefining() const;
     /// The last step of refinement: what `f2 render --aa 4` computes.
     static constexpr int kRefinedAntialias = 4;
+    /// View › Playback Anti-aliasing: the samples of frames rendered while playing (saved in the settings).
+    void setPlaybackAntialias(PlaybackAntialiasMode mode);
+    /// Its policy: the mode, the frame budget, the estimates (tests inject a cost model).
+    PlaybackAntialias& playbackAntialias() { return playbackAntialias_; }
+    /// The status bar's text about the samples of playing frames (empty while paused).
+    QString playbackAntialiasStatus() const;
     /// The export of `scene` into `sink` from the current view: the loop's
     /// frames when loop points are set, else frames 0..last, at the scene's
     /// /camera size. `destination` names the output in messages.
@@ -125,6 +134,9 @@ class MainWindow : public QMainWindow {
                         const QString& destination) const;
     /// The status bar's text about the selection.
     QString selectionStatus() const;
+    /// The window is on screen and so is a finished picture: the latest
+    /// request, at the picture area's render size, refined when paused.
+    bool isPictureComplete() const;
     /// The frame on screen (time, timings, size); serial 0 before the first.
     const FrameInfo& shownFrame() const { return shownFrame_; }
 
@@ -161,6 +173,12 @@ class MainWindow : public QMainWindow {
     void updateStatus();
     /// Outline and status of the selection for the frame on screen.
     void updateSelectionView();
+    /// Selects the selection's creating line in the editor; says in the status
+    /// bar when a loop made it or it is in another file.
+    void showCreatingLine();
+    /// The editor's line of `created` (an object of `kind`), or 0 when it is
+    /// in another file or the text has changed there since the scene parsed.
+    int editorLineOf(const CreatedAt& created, ObjectKind kind) const;
     void openDialog();
     void saveFrame();
     void exportPngSequence();
@@ -195,7 +213,10 @@ class MainWindow : public QMainWindow {
     QLabel* viewStatus_ = nullptr;  ///< the view mode of the picture on screen
     ViewModeMenu* viewModes_ = nullptr;
     bool refinement_ = true;
-    RenderRequest lastRequest_;  // the view the latest request showed, at 1 sample
+    QLabel* playbackAntialiasStatus_ = nullptr;
+    QActionGroup* playbackAntialiasActions_ = nullptr;
+    PlaybackAntialias playbackAntialias_;
+    RenderRequest lastRequest_;  // the view the latest request showed, at 1 sample (paused)
     QTimer frameTimer_;          // coalesces scheduleFrame() calls
     QTimer statusTimer_;         // lets the FPS readout fall to 0 when nothing renders
     FrameInfo shownFrame_;
