@@ -22,6 +22,7 @@
 #include <QStatusBar>
 #include <QTextBlock>
 #include <QVBoxLayout>
+#include <QWindow>
 
 #include "animation_exporter.h"
 #include "autosave.h"
@@ -541,6 +542,12 @@ void MainWindow::setRefinement(bool on) {
 bool MainWindow::isRefining() const {
     return refinement_ && !playback_->isPlaying() && shownFrame_.serial != 0 &&
            shownFrame_.view == ViewMode::Shaded && shownFrame_.antialias < kRefinedAntialias;
+}
+
+bool MainWindow::isPictureComplete() const {
+    return isVisible() && windowHandle() && windowHandle()->isExposed() && shownFrame_.serial != 0 &&
+           shownFrame_.size == viewport_->renderSize() && !controller_->hasPendingFrames() &&
+           !frameTimer_.isActive() && !isRefining();
 }
 
 void MainWindow::refine() {

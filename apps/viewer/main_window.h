@@ -134,6 +134,9 @@ class MainWindow : public QMainWindow {
                         const QString& destination) const;
     /// The status bar's text about the selection.
     QString selectionStatus() const;
+    /// The window is on screen and so is a finished picture: the latest
+    /// request, at the picture area's render size, refined when paused.
+    bool isPictureComplete() const;
     /// The frame on screen (time, timings, size); serial 0 before the first.
     const FrameInfo& shownFrame() const { return shownFrame_; }
 

@@ -398,10 +398,19 @@ void ViewerTest::pausedPictureRefinesToAa4() {
     QVERIFY(fromQImage(w.viewport()->image()) == coreRender(*w.document()->scene(), 5, 96, 72, 4));
     QVERIFY(fromQImage(w.viewport()->image()) != coreRender(*w.document()->scene(), 5, 96, 72, 1));
 
-    // A change restarts it: one sample first, then 2x2, then 4x4, all of frame 6.
+    // The picture is complete (what --screenshot waits for): refined, at the window's size.
+    QVERIFY(w.isPictureComplete());
+
+    // A change restarts it: one sample first, then 2x2, then 4x4, all of frame 6;
+    // only the last is a complete picture.
     QSignalSpy frames(w.renderController(), &RenderController::frameReady);
+    QList<bool> complete;
+    connect(w.renderController(), &RenderController::frameReady, this,
+            [&] { complete << w.isPictureComplete(); });
     w.playback()->seek(6);
+    QVERIFY(!w.isPictureComplete());
     QVERIFY(waitForShownFrame(w, 6));
+    disconnect(w.renderController(), &RenderController::frameReady, this, nullptr);
     QList<int> steps;
     for (const auto& args : frames) {
         const auto info = args.at(1).value<FrameInfo>();
@@ -409,6 +418,7 @@ void ViewerTest::pausedPictureRefinesToAa4() {
         steps << info.antialias;
     }
     QCOMPARE(steps, (QList<int>{1, 2, 4}));
+    QCOMPARE(complete, (QList<bool>{false, false, true}));
     QVERIFY(fromQImage(w.viewport()->image()) == coreRender(*w.document()->scene(), 6, 96, 72, 4));
 
     // Playing shows one sample per frame; switched off, paused frames stay at one sample.

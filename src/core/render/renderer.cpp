@@ -153,9 +153,17 @@ class TileRenderer {
                                  {simd::maxLane(hi.x), simd::maxLane(hi.y), simd::maxLane(hi.z)}};
             if (!(origins.lo.x <= origins.hi.x)) return;  // nothing was hit: no shadow rays
             count_ = std::min(frame.lights.size(), kShadowEntryLights);
-            for (std::size_t i = 0; i < count_; ++i)
-                entries_[i] = {store_[i],
-                               frame.bvh.beamEntryNodes(origins, frame.lights[i].toLight, store_[i])};
+            for (std::size_t i = 0; i < count_; ++i) {
+                const LightSample& light = frame.lights[i];
+                // A soft sun's samples all start from the nodes that one of its directions reaches.
+                const std::size_t n =
+                    light.sampleCount == 0
+                        ? frame.bvh.beamEntryNodes(origins, light.toLight, store_[i])
+                        : frame.bvh.beamEntryNodes(
+                              origins, std::span(&frame.sunDirections[light.firstSample], light.sampleCount),
+                              store_[i]);
+                entries_[i] = {store_[i], n};
+            }
         }
         std::span<const std::span<const std::uint32_t>> perLight() const { return {entries_, count_}; }
 
