@@ -311,7 +311,7 @@ bool Bvh::update(std::span<const Primitive> primitives, ThreadPool* pool) {
     return true;
 }
 
-bool Bvh::intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit) const {
+bool Bvh::intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit, std::uint32_t skip) const {
     if (nodes_.empty()) return false;
     Vec3 invDir = inverseDirection(ray.direction);
     std::uint32_t stack[kStackSize];
@@ -329,7 +329,7 @@ bool Bvh::intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit) cons
             for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
                 float t;
                 Face face;
-                if (intersectPrimitive(ordered_[i], ray, tMin, bound, t, face) &&
+                if (original_[i] != skip && intersectPrimitive(ordered_[i], ray, tMin, bound, t, face) &&
                     (!found || t < tMax || original_[i] < hit.primitive)) {
                     tMax = t;
                     bound = nextUp(t);

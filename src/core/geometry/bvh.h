@@ -42,13 +42,15 @@ class Bvh {
     /// Expected cost of a ray under the SAH model, relative to the root's area.
     float sahCost() const;
 
-    /// Closest hit within (tMin, tMax); of hits at the same distance, the
-    /// primitive first in the frame (lowest index), whatever the tree's shape.
-    bool intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit) const;
+    static constexpr std::uint32_t kNoPrimitive = 0xFFFFFFFFu;
+    /// Closest hit within (tMin, tMax) on a primitive other than `skip` (mirrored
+    /// rays skip the convex primitive they leave); of hits at the same distance,
+    /// the primitive first in the frame (lowest index), whatever the tree's shape.
+    bool intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit,
+                   std::uint32_t skip = kNoPrimitive) const;
     /// Any hit within (tMin, tMax) on a primitive other than `skip`: shadow rays
     /// stop at the first occluder. A convex primitive cannot shadow its own lit
     /// side, so shadow rays skip the primitive they start on.
-    static constexpr std::uint32_t kNoPrimitive = 0xFFFFFFFFu;
     bool occluded(const Ray& ray, float tMin, float tMax, std::uint32_t skip = kNoPrimitive) const;
 
     /// Up to out.size() nodes whose subtrees hold every primitive that a ray

@@ -3,7 +3,9 @@
 #include <chrono>
 
 #include "core/anim/frame_builder.h"
+#include "core/render/packet_reflection.h"
 #include "core/render/packet_shading.h"
+#include "core/render/reflection.h"
 #include "core/render/shading.h"
 
 namespace f2 {
@@ -106,6 +108,7 @@ class TileRenderer {
                 ShadowEntries shadowEntry(frame_, lo, hi);
                 for (int k = 0; k < blocks; ++k) {
                     ColorP c = shadeSurfaces(frame_, surfaces_[k], shadowEntry.perLight(), counts_);
+                    c = withReflections(frame_, surfaces_[k], c, counts_);
                     if (aa_ > 1) c = clamped(c);  // the average of displayed values
                     sum_[k] =
                         sx == 0 && sy == 0 ? c : ColorP{sum_[k].r + c.r, sum_[k].g + c.g, sum_[k].b + c.b};
@@ -174,7 +177,7 @@ bool Renderer::trace(const FrameScene& frame, const Camera& camera, Image& out, 
     const int tilesY = (camera.height + kTileSize - 1) / kTileSize;
     const int aa = options.antialias < 1 ? 1 : options.antialias;
     std::atomic<bool> cancelled{false};
-    std::atomic<std::uint64_t> primaryRays{0}, shadowRays{0};
+    std::atomic<std::uint64_t> primaryRays{0}, shadowRays{0}, reflectedRays{0};
 
     pool_.parallelFor(std::uint32_t(tilesX * tilesY), [&](std::uint32_t tile) {
         const int x0 = int(tile % std::uint32_t(tilesX)) * kTileSize;
@@ -193,8 +196,9 @@ bool Renderer::trace(const FrameScene& frame, const Camera& camera, Image& out, 
         for (int y = y0; y < y1; ++y) std::copy_n(&local[(y - y0) * kTileSize], x1 - x0, &out.at(x0, y));
         primaryRays.fetch_add(tileRays.primary, std::memory_order_relaxed);
         shadowRays.fetch_add(tileRays.shadow, std::memory_order_relaxed);
+        reflectedRays.fetch_add(tileRays.reflected, std::memory_order_relaxed);
     });
-    if (rays) *rays = {primaryRays.load(), shadowRays.load()};
+    if (rays) *rays = {primaryRays.load(), shadowRays.load(), reflectedRays.load()};
     return !cancelled.load();
 }
 
