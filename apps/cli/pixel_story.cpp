@@ -5,6 +5,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "core/render/diagnostic_view.h"
 #include "core/render/pixel_report.h"
 #include "core/render/reflection.h"
 #include "core/render/renderer.h"
@@ -116,6 +117,11 @@ int printPixelStory(const LoadedScene& loaded, const Camera& camera, double t, i
     out << "image    " << int(rendered.r) << " " << int(rendered.g) << " " << int(rendered.b)
         << " (the packet path" << (antialias > 1 ? ", --aa " + std::to_string(antialias) + " samples" : "")
         << ")\n";
+    // What --view cost shows for this pixel, counted by the same traversals.
+    const RayProbe probe = probeRay(frame, r.ray);
+    out << "cost     " << probe.cost.total() << " = " << probe.cost.nodes << " BVH node boxes + "
+        << probe.cost.primitives << " primitives tested, by the primary ray and " << probe.shadowRays
+        << " shadow ray" << (probe.shadowRays == 1 ? "" : "s") << " (--view cost)\n";
     return 0;
 }
 

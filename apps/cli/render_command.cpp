@@ -19,6 +19,7 @@
 #include "pixel_story.h"
 #include "progress.h"
 #include "scene_source.h"
+#include "view_option.h"
 
 namespace f2::cli {
 
@@ -35,6 +36,7 @@ struct RenderArgs {
     std::string shard;
     bool resume = false;
     std::string pixel;  ///< "X,Y": print that pixel's story instead of writing an image
+    ViewMode view = ViewMode::Shaded;
     const CLI::Option* frameOption = nullptr;
 };
 
@@ -45,6 +47,7 @@ struct AnimationJob {
     AnimationRange range;
     int antialias;
     int threads;
+    ViewMode viewMode;
 };
 
 int interruptedExit() { return 128 + (interruptSignal() ? interruptSignal() : 2); }
@@ -55,7 +58,9 @@ std::string describe(const AnimationJob& job) {
     if (job.range.step > 1) s << " every " << job.range.step;
     if (job.range.shardCount > 1) s << " shard " << job.range.shardIndex << "/" << job.range.shardCount;
     s << " (" << job.view.width << "x" << job.view.height << ", " << job.range.outputFps << " fps, aa "
-      << job.antialias << ")";
+      << job.antialias;
+    if (job.viewMode != ViewMode::Shaded) s << ", view " << viewModeName(job.viewMode);
+    s << ")";
     return s.str();
 }
 
@@ -68,7 +73,7 @@ AnimationResult renderWithProgress(const AnimationJob& job, FrameSink& sink, Pro
                                                  skipped = p.skipped;
                                                  progress.update(int(p.done));
                                              },
-                                             {job.threads, {job.antialias}});
+                                             {job.threads, {job.antialias, job.viewMode}});
     progress.clear();
     return result;
 }
@@ -132,7 +137,7 @@ int renderImage(const RenderArgs& args, const LoadedScene& loaded, const FrameVi
     const std::string where = toStdout ? "standard output" : args.output;
     const AnimationResult result =
         renderAnimation(loaded.scene, AnimationRange::still(t, loaded.scene.fps), view, sink,
-                        &interruptFlag(), {}, {args.threads, {args.antialias}});
+                        &interruptFlag(), {}, {args.threads, {args.antialias, args.view}});
     switch (result.outcome) {
         case AnimationResult::Outcome::Failed:
             std::cerr << "f2 render: " << result.error << '\n';
@@ -144,8 +149,9 @@ int renderImage(const RenderArgs& args, const LoadedScene& loaded, const FrameVi
             break;
     }
     std::cerr << "f2 render: " << loaded.name << " frame " << t << " -> " << where << " (" << view.width
-              << "x" << view.height << ", " << result.threads << " threads, "
-              << formatMilliseconds(result.renderMs) << ")\n";
+              << "x" << view.height << ", "
+              << (args.view != ViewMode::Shaded ? "view " + std::string(viewModeName(args.view)) + ", " : "")
+              << result.threads << " threads, " << formatMilliseconds(result.renderMs) << ")\n";
     return 0;
 }
 
@@ -210,7 +216,8 @@ int runRender(const RenderArgs& args) {
                                 0,           shard.index, shard.count,       range.step};
     if (frames.lastRendered() > lastFrame)
         std::cerr << "f2 render: warning: " << pastTheEndWarning(frames, lastFrame) << '\n';
-    AnimationJob job{&*loaded, FrameView::sceneCamera(width, height), frames, args.antialias, args.threads};
+    AnimationJob job{&*loaded, FrameView::sceneCamera(width, height), frames, args.antialias, args.threads,
+                     args.view};
     if (!args.pixel.empty()) {
         if (!args.frames.empty() || !args.shard.empty() || args.resume)
             return usageError("--pixel traces one pixel of one frame: choose the frame with --frame");
@@ -285,6 +292,7 @@ Command addRenderCommand(CLI::App& app) {
            "Print the story of one pixel (its ray, every primitive along it, the hit, the normal, each "
            "light's term and shadow, the colour) instead of writing an image")
         ->type_name("X,Y");
+    addViewOption(*sub, args->view);
     return {sub, [args] { return runRender(*args); }};
 }
 

@@ -25,9 +25,9 @@
 
 #include "animation_exporter.h"
 #include "autosave.h"
+#include "capture_pose.h"
 #include "core/anim/frame_builder.h"
 #include "core/anim/frame_time.h"
-#include "core/anim/track.h"
 #include "core/render/pick.h"
 #include "core/render/renderer.h"
 #include "editor_dock.h"
@@ -42,6 +42,7 @@
 #include "scene_editor.h"
 #include "text_capture.h"
 #include "timeline_widget.h"
+#include "view_mode_menu.h"
 #include "viewport_widget.h"
 
 namespace f2::viewer {
@@ -97,8 +98,9 @@ MainWindow::MainWindow(QWidget* parent)
     sizeStatus_ = new QLabel(this);
     selectionStatus_ = new QLabel(this);
     refineStatus_ = new QLabel(this);
+    viewStatus_ = new QLabel(this);
     for (QLabel* label :
-         {selectionStatus_, refineStatus_, frameStatus_, timeStatus_, fpsStatus_, sizeStatus_})
+         {selectionStatus_, viewStatus_, refineStatus_, frameStatus_, timeStatus_, fpsStatus_, sizeStatus_})
         statusBar()->addPermanentWidget(label);
 
     frameTimer_.setSingleShot(true);
@@ -130,6 +132,13 @@ MainWindow::MainWindow(QWidget* parent)
     connect(timeline_, &TimelineWidget::scrubStarted, playback_, &Playback::beginScrub);
     connect(timeline_, &TimelineWidget::scrubFinished, playback_, &Playback::endScrub);
     connect(timeline_, &TimelineWidget::speedChanged, playback_, &Playback::setSpeed);
+    connect(timeline_, &TimelineWidget::loopInRequested, playback_, &Playback::setLoopIn);
+    connect(timeline_, &TimelineWidget::loopOutRequested, playback_, &Playback::setLoopOut);
+    connect(timeline_, &TimelineWidget::loopClearRequested, playback_, &Playback::clearLoop);
+    connect(playback_, &Playback::loopRangeChanged, this, [this] {
+        const auto loop = playback_->loopRange();
+        timeline_->setLoop(loop ? std::optional(std::pair(loop->first, loop->last)) : std::nullopt);
+    });
 
     createActions();
     setAcceptDrops(true);
@@ -199,6 +208,12 @@ void MainWindow::createActions() {
         play->addAction(tr("F&irst Frame"), QKeySequence(Qt::Key_Home), playback_, &Playback::seekToStart));
     stageShortcut(
         play->addAction(tr("&Last Frame"), QKeySequence(Qt::Key_End), playback_, &Playback::seekToEnd));
+    play->addSeparator();
+    stageShortcut(play->addAction(tr("Set Loop &In Here"), QKeySequence(Qt::Key_I), this,
+                                  [this] { playback_->setLoopIn(playback_->frame()); }));
+    stageShortcut(play->addAction(tr("Set Loop &Out Here"), QKeySequence(Qt::Key_O), this,
+                                  [this] { playback_->setLoopOut(playback_->frame()); }));
+    play->addAction(tr("&Clear Loop"), QKeySequence(Qt::ALT | Qt::Key_X), playback_, &Playback::clearLoop);
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     stageShortcut(
@@ -217,6 +232,8 @@ void MainWindow::createActions() {
         scales->addAction(a);
         if (int(scale) == saved) viewport_->setRenderScale(scale);
     }
+    viewModes_ = new ViewModeMenu(view);
+    connect(viewModes_, &ViewModeMenu::modeChanged, this, &MainWindow::scheduleFrame);
     QAction* refineAction = view->addAction(tr("&Refine When Paused"), this, &MainWindow::setRefinement);
     refineAction->setCheckable(true);
     refineAction->setChecked(refinement_);
@@ -227,6 +244,8 @@ void MainWindow::createActions() {
     QMenu* capture = menuBar()->addMenu(tr("&Capture"));
     capture->addAction(tr("Set &Camera from View"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_C), this,
                        &MainWindow::setCameraFromView);
+    capture->addAction(tr("Key C&amera Here"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_K), this,
+                       &MainWindow::keyCameraHere);
     capture->addAction(tr("&Key Selection Here"), QKeySequence(Qt::CTRL | Qt::Key_K), this,
                        &MainWindow::keySelectionHere);
 
@@ -404,7 +423,10 @@ void MainWindow::onSceneChanged(bool newDocument) {
     const auto scene = document_->scene();
     playback_->setRange(scene->lastFrame(), scene->fps);
     timeline_->setRange(scene->lastFrame(), scene->fps);
-    if (newDocument) playback_->seek(0);
+    if (newDocument) {
+        playback_->clearLoop();
+        playback_->seek(0);
+    }
     timeline_->setTime(playback_->time());
     const Camera camera = cameraAt(*scene, playback_->time());
     // A reload of the same file keeps the user's look-around; a new file starts at its camera.
@@ -468,7 +490,9 @@ void MainWindow::requestFrame() {
     if (!scene) return;
     const double time = playback_->time();
     viewport_->followSceneCamera(cameraAt(*scene, time));
-    lastRequest_ = {std::move(scene), time, viewport_->viewCamera(), {}};
+    RenderOptions options;
+    options.view = viewModes_->mode();
+    lastRequest_ = {std::move(scene), time, viewport_->viewCamera(), options};
     controller_->request(lastRequest_);
 }
 
@@ -482,7 +506,7 @@ void MainWindow::setRefinement(bool on) {
 
 bool MainWindow::isRefining() const {
     return refinement_ && !playback_->isPlaying() && shownFrame_.serial != 0 &&
-           shownFrame_.antialias < kRefinedAntialias;
+           shownFrame_.view == ViewMode::Shaded && shownFrame_.antialias < kRefinedAntialias;
 }
 
 void MainWindow::refine() {
@@ -570,14 +594,25 @@ bool MainWindow::keySelectionHere() {
         statusBar()->showMessage(tr("Select an object or part first (click it in the picture)."), 5000);
         return false;
     }
-    const SceneObject& target = scene->objects[*object];
     const int frame = playback_->frame();
-    // An object's key is its absolute pose; a part's, its offset and rotation.
-    const Pose pose = selection_->part
-                          ? evaluateTrack(target.partTracks[std::size_t(*selection_->part)], frame, Pose{})
-                          : evaluateTrack(target.track, frame, target.rest);
-    applyEdit(editor(), keyEdit(editor()->toPlainText(), selection_->target(), frame, pose));
+    const Pose pose = selectionKeyPose(*scene, *object, selection_->part, frame);
+    const QString text = editor()->toPlainText();
+    applyEdit(editor(),
+              keyEdit(text, selection_->target(), frame, pose, creatingLine(text, selection_->object)));
     return true;
+}
+
+void MainWindow::keyCameraHere() {
+    const auto scene = document_->scene();
+    const int frame = playback_->frame();
+    // What the user sees: the look-around if there is one, else the scene camera.
+    const auto& orbit = viewport_->orbit();
+    const Pose pose = cameraKeyPose(*scene, frame, orbit ? std::optional(orbit->pose()) : std::nullopt);
+    const QString text = editor()->toPlainText();
+    applyEdit(editor(), keyEdit(text, QStringLiteral("camera"), frame, pose, cameraLine(text)));
+    if (orbit && scene->camera.lookAt)
+        statusBar()->showMessage(
+            tr("The camera's /look_at turns it: the key moves the eye, not where it looks."), 8000);
 }
 
 QString MainWindow::selectionStatus() const { return selectionStatus_->text(); }
@@ -594,8 +629,11 @@ void MainWindow::updateStatus() {
         sizeStatus_->setText(tr("%1×%2").arg(shownFrame_.size.width()).arg(shownFrame_.size.height()));
     }
     fpsStatus_->setText(tr("%1 fps").arg(controller_->achievedFps(), 0, 'f', 1));
+    viewStatus_->setText(tr("view: %1").arg(ViewModeMenu::label(shownFrame_.view)));
     const int n = shownFrame_.antialias;
-    refineStatus_->setText(shownFrame_.serial == 0 || playback_->isPlaying() || !refinement_ ? QString()
+    refineStatus_->setText(shownFrame_.serial == 0 || playback_->isPlaying() || !refinement_ ||
+                                   shownFrame_.view != ViewMode::Shaded
+                               ? QString()
                            : isRefining() ? tr("refining: %1×%1 samples…").arg(n)
                                           : tr("refined: %1×%1 samples").arg(n));
 }
@@ -638,7 +676,9 @@ Image MainWindow::frameToSave() const {
     const QSize size = viewport_->renderSize();
     Renderer renderer;
     Image image;
-    renderer.render(*document_->scene(), playback_->time(), viewport_->viewCamera(size), image);
+    RenderOptions options;
+    options.view = viewModes_->mode();  // what the picture shows
+    renderer.render(*document_->scene(), playback_->time(), viewport_->viewCamera(size), image, options);
     return image;
 }
 
@@ -664,7 +704,7 @@ void MainWindow::exportPngSequence() {
         QFileDialog::getExistingDirectory(this, tr("Export PNG Sequence to Folder"), outputFolder());
     if (dir.isEmpty()) return;
     const QString stem = exportStem();
-    const FramePattern pattern = exportSequencePattern(dir, stem, scene->lastFrame() + 1);
+    const FramePattern pattern = exportSequencePattern(dir, stem, playback_->playRange().last + 1);
     runExport(std::move(scene), std::make_unique<PngSequenceSink>(pattern),
               QDir(dir).filePath(stem + "_*.png"));
 }
@@ -690,8 +730,8 @@ void MainWindow::exportVideo() {
     runExport(std::move(scene), std::make_unique<VideoSink>(file, *format, Rgb8{bg.r, bg.g, bg.b}), path);
 }
 
-void MainWindow::runExport(std::shared_ptr<const SceneDesc> scene, std::unique_ptr<FrameSink> sink,
-                           const QString& destination) {
+ExportJob MainWindow::exportJob(std::shared_ptr<const SceneDesc> scene, std::unique_ptr<FrameSink> sink,
+                                const QString& destination) const {
     ExportJob job;
     // Like `f2 render`: the scene's /camera size, seen from the current view.
     // The scene's moving camera, unless the user is looking around.
@@ -699,9 +739,18 @@ void MainWindow::runExport(std::shared_ptr<const SceneDesc> scene, std::unique_p
     job.view = viewport_->isOrbiting() ? FrameView::fixedCamera(viewport_->viewCamera(size))
                                        : FrameView::sceneCamera(size.width(), size.height());
     job.scene = std::move(scene);
-    job.lastFrame = job.scene->lastFrame();
+    // The loop's frames when it is set, else the whole scene.
+    const FrameRange frames = playback_->playRange();
+    job.firstFrame = frames.first;
+    job.lastFrame = frames.last;
     job.sink = std::move(sink);
     job.destination = destination;
+    return job;
+}
+
+void MainWindow::runExport(std::shared_ptr<const SceneDesc> scene, std::unique_ptr<FrameSink> sink,
+                           const QString& destination) {
+    ExportJob job = exportJob(std::move(scene), std::move(sink), destination);
     exportWithProgress(this, std::move(job), [this](bool ok, bool cancelled, const QString& message) {
         if (ok || cancelled)
             statusBar()->showMessage(message, 10000);

@@ -8,6 +8,7 @@
 #include <functional>
 #include <memory>
 
+#include "animation_exporter.h"
 #include "core/render/image.h"
 #include "render_controller.h"
 #include "selection.h"
@@ -31,6 +32,7 @@ class SceneEditor;
 class SceneDocument;
 class TimelineWidget;
 class ViewportWidget;
+class ViewModeMenu;
 enum class RenderScale;
 
 class MainWindow : public QMainWindow {
@@ -77,6 +79,8 @@ class MainWindow : public QMainWindow {
     TimelineWidget* timeline() const { return timeline_; }
     ViewportWidget* viewport() const { return viewport_; }
     RenderController* renderController() const { return controller_.get(); }
+    /// View › Mode: what the picture shows (shaded or a diagnostic view).
+    ViewModeMenu* viewModes() const { return viewModes_; }
     QListWidget* problemsList() const { return problemsList_; }
     QDockWidget* diagnosticsDock() const { return diagnosticsDock_; }
     EditorDock* editorDock() const { return editorDock_; }
@@ -101,13 +105,24 @@ class MainWindow : public QMainWindow {
     /// Writes the selection's pose at the current frame as its `/key` line
     /// there (replacing one at that frame). One undo step. False without a selection.
     bool keySelectionHere();
+    /// Writes the camera's `/key` line at the current frame (replacing one at
+    /// that frame) with the pose that shows the view on screen: the
+    /// look-around's eye and rotation while orbiting, else the scene camera's
+    /// own pose there (capture_pose.h). One undo step.
+    void keyCameraHere();
     /// While paused, the picture refines: the same frame again with 2x2, then
     /// kRefinedAntialias x kRefinedAntialias samples (View › Refine When Paused).
+    /// Only the shaded view refines: the diagnostic views trace pixel centres.
     void setRefinement(bool on);
     /// The picture on screen is still to be refined.
     bool isRefining() const;
     /// The last step of refinement: what `f2 render --aa 4` computes.
     static constexpr int kRefinedAntialias = 4;
+    /// The export of `scene` into `sink` from the current view: the loop's
+    /// frames when loop points are set, else frames 0..last, at the scene's
+    /// /camera size. `destination` names the output in messages.
+    ExportJob exportJob(std::shared_ptr<const SceneDesc> scene, std::unique_ptr<FrameSink> sink,
+                        const QString& destination) const;
     /// The status bar's text about the selection.
     QString selectionStatus() const;
     /// The frame on screen (time, timings, size); serial 0 before the first.
@@ -154,9 +169,8 @@ class MainWindow : public QMainWindow {
     QString exportStem() const;
     /// True (after saying so) if `path` is the scene file, which the viewer never writes.
     bool refuseSceneFile(const QString& path, const QString& title);
-    /// The export flow shared by both: renders frames 0..last of `scene` at its
-    /// /camera size from the current view into `sink`, with progress; errors
-    /// go to a message box. `destination` names the output in messages.
+    /// The export flow shared by both: runs exportJob() with progress; errors
+    /// go to a message box.
     void runExport(std::shared_ptr<const SceneDesc> scene, std::unique_ptr<FrameSink> sink,
                    const QString& destination);
     void addRecentFile(const QString& path);
@@ -178,6 +192,8 @@ class MainWindow : public QMainWindow {
     QLabel* selectionStatus_ = nullptr;
     std::optional<Selection> selection_;
     QLabel* refineStatus_ = nullptr;
+    QLabel* viewStatus_ = nullptr;  ///< the view mode of the picture on screen
+    ViewModeMenu* viewModes_ = nullptr;
     bool refinement_ = true;
     RenderRequest lastRequest_;  // the view the latest request showed, at 1 sample
     QTimer frameTimer_;          // coalesces scheduleFrame() calls

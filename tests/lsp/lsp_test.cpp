@@ -6,13 +6,16 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <random>
 #include <string>
 
 #include "core/parse/parser.h"
+#include "core/parse/symbol_index.h"
 #include "lsp/command_docs.h"
 #include "lsp/features.h"
 #include "lsp/message_reader.h"
+#include "lsp/scene_sources.h"
 #include "lsp/server.h"
 #include "lsp/source_scan.h"
 
@@ -318,7 +321,14 @@ TEST(Includes, DiagnosticsInAnIncludedFileAreItsOwn) {
                                TextDocument("/amb_light 1\n/include part.f2\n/key 1 ball\n", 1));
     const Json published = publishDiagnostics(a);
     ASSERT_EQ(published.size(), 2u) << published.dump();
-    EXPECT_EQ(published[0]["diagnostics"], Json::array());
+    // On the include line of the open file: a summary pointing at the place.
+    ASSERT_EQ(published[0]["diagnostics"].size(), 1u);
+    const Json& summary = published[0]["diagnostics"][0];
+    EXPECT_EQ(summary["range"], toJson(Range{{1, 9}, {1, 16}}));
+    EXPECT_EQ(summary["message"],
+              "in the included file part.f2:3:8: unknown name 'bal' (did you mean 'ball'?)");
+    EXPECT_EQ(summary["relatedInformation"][0]["location"],
+              location(uriFromPath((dir / "part.f2").string()), Range{{2, 7}, {2, 10}}));
     EXPECT_EQ(published[1]["uri"], uriFromPath((dir / "part.f2").string()));
     ASSERT_EQ(published[1]["diagnostics"].size(), 1u);
     EXPECT_EQ(published[1]["diagnostics"][0]["range"], toJson(Range{{2, 7}, {2, 10}}));
@@ -357,6 +367,186 @@ TEST(Includes, FixedIncludeErrorsAreClearedOnSave) {
             .dump());
     EXPECT_EQ(diagnosticsOf(saved, partUri), Json::array());
     fs::remove_all(dir);
+}
+
+/// A scene in a temporary directory: main.f2 includes parts/stage.f2, which
+/// defines a variable and an object main.f2 uses, and uses one of main.f2's.
+struct IncludedScene {
+    std::filesystem::path dir;
+    std::string main, stage;
+    static constexpr const char* kMain =
+        "/let w 40\n"                       // 0
+        "/include \"parts/stage.f2\"\n"     // 1
+        "/sphere ball (w) 0 (h) 0\n"        // 2
+        "/key 0 prop\n"                     // 3
+        "/key 10 prop 0 (h * 2) 0 0 0 0\n"  // 4
+        "/look_at prop\n"                   // 5
+        "/key 0 camera\n";                  // 6
+    static constexpr const char* kStage =
+        "/amb_light 1\n"                     // 0
+        "/let h 25\n"                        // 1
+        "/box prop 10 (w) 10 0 0 0\n"        // 2
+        "/camera 320 240 0.5 0 100 -500\n";  // 3
+
+    explicit IncludedScene(const std::string& name) {
+        dir = std::filesystem::temp_directory_path() / (name + std::to_string(::getpid()));
+        std::filesystem::create_directories(dir / "parts");
+        main = (dir / "main.f2").string();
+        stage = (dir / "parts" / "stage.f2").string();
+        std::ofstream(main) << kMain;
+        std::ofstream(stage) << kStage;
+    }
+    ~IncludedScene() { std::filesystem::remove_all(dir); }
+};
+
+TEST(Includes, VariablesAndObjectsFollowedBothWays) {
+    const IncludedScene scene("f2_lsp_both_");
+    const Analysis m = analyze(uriFromPath(scene.main), TextDocument(IncludedScene::kMain, 1));
+    const std::string mainUri = uriFromPath(scene.main), stageUri = uriFromPath(scene.stage);
+    EXPECT_TRUE(m.result.ok());
+    // From main.f2 into the included file: the variable h and the object prop.
+    EXPECT_EQ(definition(m, {2, 20}), location(stageUri, Range{{1, 5}, {1, 6}}));
+    EXPECT_EQ(definition(m, {3, 8}), location(stageUri, Range{{2, 5}, {2, 9}}));
+    EXPECT_EQ(references(m, {4, 16}, true).size(), 3u);
+    const Json edit = rename(m, {2, 20}, "height");
+    EXPECT_EQ(edit["changes"][stageUri].size(), 1u);
+    EXPECT_EQ(edit["changes"][mainUri].size(), 2u);
+    EXPECT_THROW(rename(m, {2, 20}, "w"), RequestError);      // taken
+    EXPECT_THROW(rename(m, {3, 8}, "camera"), RequestError);  // reserved
+    EXPECT_THROW(rename(m, {3, 8}, "ball"), RequestError);    // taken
+    // Back: stage.f2 open, analysed as part of main.f2 (its buffer replaces the file).
+    const SourceOverlay open{{scene.main, IncludedScene::kMain},
+                             {scene.stage, std::string(IncludedScene::kStage) + "# edited\n"}};
+    const Analysis s = analyze(stageUri, TextDocument(open.at(scene.stage), 2), open, scene.main);
+    EXPECT_EQ(s.root, scene.main);
+    EXPECT_TRUE(s.result.ok()) << publishDiagnostics(s).dump();
+    EXPECT_EQ(s.document.lineCount(), 6);
+    EXPECT_EQ(definition(s, {2, 14}), location(mainUri, Range{{0, 5}, {0, 6}}));
+    EXPECT_EQ(references(s, {2, 6}, false).size(), 3u);  // the uses in main.f2
+    const std::string hoverW = hover(s, {2, 14})["contents"]["value"];
+    EXPECT_EQ(hoverW, "**variable** `w`, defined at line 1 of " + scene.main + ":\n```f2\n/let w 40\n```");
+    // Alone, stage.f2 does not know w.
+    const Analysis alone = analyze(stageUri, TextDocument(IncludedScene::kStage, 1));
+    EXPECT_FALSE(alone.result.ok());
+    EXPECT_TRUE(definition(alone, {2, 14}).is_null());
+}
+
+TEST(Includes, ParserReadsOpenTextsBeforeTheDisk) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("f2_lsp_overlay_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    std::ofstream(dir / "part.f2") << "/fps x\n";  // broken on disk, fixed in the editor
+    std::ofstream(dir / "main.f2") << "";
+    const std::string main = (dir / "main.f2").string(), part = (dir / "part.f2").string();
+    const std::string ghost = (dir / "ghost.f2").string();  // open, never saved
+    const SourceOverlay open{{part, "/fps 30\n"}, {ghost, "/amb_light 1\n/include ghost.f2\n"}};
+    SymbolIndex index;
+    const ParseResult fixed = parseScene("/include part.f2\n/amb_light 1\n", main, ParseLimits{}, index, open);
+    EXPECT_TRUE(fixed.ok());
+    EXPECT_EQ(fixed.scene->fps, 30);
+    // An unsaved file that includes itself: a cycle, not an endless read.
+    const ParseResult cycle = parseScene("/include ghost.f2\n", main, ParseLimits{}, index, open);
+    ASSERT_EQ(cycle.diagnostics.size(), 1u);
+    EXPECT_EQ(cycle.diagnostics[0].loc.file, ghost);
+    EXPECT_EQ(cycle.diagnostics[0].message.rfind("include cycle: ", 0), 0u) << cycle.diagnostics[0].message;
+    // The text stands for its file: including that file is a cycle at once.
+    const ParseResult self = parseScene("/include main.f2\n", main, ParseLimits{}, index, open);
+    ASSERT_EQ(self.diagnostics.size(), 1u);
+    EXPECT_EQ(self.diagnostics[0].loc.file, main);
+    EXPECT_EQ(self.diagnostics[0].loc.line, 1);
+    fs::remove_all(dir);
+}
+
+TEST(Includes, ScanSurvivesCyclesMissingFilesAndDiamonds) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("f2_lsp_scan_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    std::ofstream(dir / "a.f2") << "/let a 1\n/include b.f2\n/include missing.f2\n/include \"{x}.f2\"\n";
+    std::ofstream(dir / "b.f2") << "/let b 2\n/include a.f2\n";
+    // 17 levels, each including the next twice: 2^17 readings without the line budget.
+    for (int i = 0; i < 17; ++i) {
+        const std::string next = "d" + std::to_string(i + 1) + ".f2";
+        std::ofstream(dir / ("d" + std::to_string(i) + ".f2"))
+            << "/include " << next << "\n/include " << next << "\n";
+    }
+    std::ofstream(dir / "d17.f2") << "/let deep 1\n";
+    const std::string a = (dir / "a.f2").string();
+    const SceneSources cyc =
+        scanScene(a, TextDocument("/let a 1\n/include b.f2\n/include missing.f2\n", 1), {});
+    ASSERT_EQ(cyc.files.size(), 2u);
+    EXPECT_TRUE(cyc.reaches(0, 1));
+    EXPECT_TRUE(cyc.reaches(1, 0));
+    EXPECT_EQ(cyc.variables.size(), 2u);  // b.f2's include of a.f2 is not followed again
+    const SceneSources deep =
+        scanScene((dir / "d0.f2").string(), TextDocument("/include d1.f2\n/include d1.f2\n", 1), {});
+    EXPECT_EQ(deep.files.size(), 18u);    // d0 … d17 read; d17 is 17 deep, beyond 16: not followed
+    EXPECT_TRUE(deep.variables.empty());  // so its /let is not seen
+    fs::remove_all(dir);
+}
+
+TEST(Includes, OpenDocumentsThatIncludeEachOtherOrThemselves) {
+    // Files that exist only as open documents: their texts are what includes read.
+    Server server;
+    server.handle(R"({"id":1,"method":"initialize"})");
+    auto open = [&](const std::string& uri, const std::string& text) {
+        return server.handle(
+            Json({{"method", "textDocument/didOpen"},
+                  {"params", {{"textDocument", {{"uri", uri}, {"version", 1}, {"text", text}}}}}})
+                .dump());
+    };
+    const std::string a = "file:///nowhere/a.f2", b = "file:///nowhere/b.f2";
+    open(a, "/amb_light 1\n/include b.f2\n/sphere s (n) 0 0 0\n");
+    const auto both = open(b, "/let n 3\n/include b.f2\n");
+    // b.f2 is read as part of a.f2: its self-include is a cycle, reported once on b.f2.
+    std::map<std::string, Json> published;
+    for (const std::string& m : both) {
+        const Json j = Json::parse(m);
+        published[j["params"]["uri"]] = j["params"]["diagnostics"];
+    }
+    ASSERT_EQ(published.size(), 2u);
+    ASSERT_EQ(published[b].size(), 1u);
+    EXPECT_EQ(published[b][0]["message"].get<std::string>().rfind("include cycle: ", 0), 0u);
+    EXPECT_EQ(published[a].size(), 1u);  // the summary on a.f2's include line
+    // The variable n of the open b.f2 is known in a.f2, both ways.
+    const Json def = Json::parse(server.handle(
+        Json({{"id", 2},
+              {"method", "textDocument/definition"},
+              {"params", {{"textDocument", {{"uri", a}}}, {"position", {{"line", 2}, {"character", 11}}}}}})
+            .dump())[0]);
+    EXPECT_EQ(def["result"], location(b, Range{{0, 5}, {0, 6}}));
+    // a.f2 now includes itself and b.f2 includes a.f2: every request still answers.
+    open(a, "/include a.f2\n/include b.f2\n");
+    open(b, "/include a.f2\n");
+    const auto reply = server.handle(
+        Json({{"id", 3},
+              {"method", "textDocument/hover"},
+              {"params", {{"textDocument", {{"uri", b}}}, {"position", {{"line", 0}, {"character", 10}}}}}})
+            .dump());
+    ASSERT_EQ(reply.size(), 1u);
+    EXPECT_TRUE(Json::parse(reply[0]).contains("result"));
+}
+
+TEST(Hover, CameraLineKeysLookAtAttachmentAndPose) {
+    const IncludedScene scene("f2_lsp_camera_");
+    const Analysis m = analyze(uriFromPath(scene.main), TextDocument(IncludedScene::kMain, 1));
+    const Json h = hover(m, {6, 9});
+    EXPECT_EQ(h["range"], toJson(Range{{6, 7}, {6, 13}}));
+    EXPECT_EQ(h["contents"]["value"],
+              "**camera**, the scene camera, set at line 4 of " + scene.stage +
+                  ":\n```f2\n/camera 320 240 0.5 0 100 -500\n```\n- image 320 × 240, d 0.5\n- keys: 1\n"
+                  "- looks at: `prop` (line 6)\n- rides on: nothing\n"
+                  "- at frame 0: eye (0, 100, -500), looking along (0, -0.196116, 0.980581)\n");
+    const Analysis attached = analysed(
+        "/amb_light 1\n/camera 320 240 0.5 0 0 -10 0 90 0\n/robot r1 0 0 0\n/attach camera r1.head\n");
+    const std::string text = hover(attached, {3, 10})["contents"]["value"];
+    EXPECT_NE(
+        text.find("- keys: 0\n- looks at: nothing (its keys turn it)\n- rides on: `r1.head` (line 4)\n"),
+        std::string::npos)
+        << text;
+    const Analysis plain = analysed("/amb_light 1\n/key 0 camera 0 0 -10 0 90 0\n");
+    const std::string plainText = hover(plain, {1, 9})["contents"]["value"];
+    EXPECT_NE(plainText.find("no `/camera` line"), std::string::npos) << plainText;
+    EXPECT_NE(plainText.find("eye (0, 0, -10), rotation (0, 90, 0)"), std::string::npos) << plainText;
 }
 
 TEST(Completion, OffersTheParsersCommandsAsSnippets) {

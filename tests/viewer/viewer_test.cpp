@@ -5,6 +5,7 @@
 #include <QElapsedTimer>
 #include <QFile>
 #include <QListWidget>
+#include <QMenu>
 #include <QMenuBar>
 #include <QPlainTextEdit>
 #include <QProcess>
@@ -23,6 +24,7 @@
 
 #include "animation_exporter.h"
 #include "autosave.h"
+#include "core/anim/frame_time.h"
 #include "core/parse/parser.h"
 #include "core/render/renderer.h"
 #include "editor_dock.h"
@@ -31,6 +33,7 @@
 #include "io/png_writer.h"
 #include "io/sequence_sink.h"
 #include "io/video_sink.h"
+#include "key_marker_slider.h"
 #include "main_window.h"
 #include "orbit_camera.h"
 #include "playback.h"
@@ -74,6 +77,7 @@ class ViewerTest : public QObject {
     void exportWritesPngSequence();
     void exportWritesVideo();
     void cancelledVideoExportLeavesNoFile();
+    void loopPointsDrivePlaybackAndExport();
 };
 
 namespace {
@@ -125,6 +129,9 @@ class GatedSink : public FrameSink {
     std::unique_ptr<VideoSink> video_;
     std::shared_ptr<std::atomic<bool>> release_;
 };
+
+/// A loop range as Playback reports it.
+std::optional<FrameRange> loopOf(int first, int last) { return FrameRange{first, last}; }
 
 }  // namespace
 
@@ -748,6 +755,95 @@ void ViewerTest::cancelledVideoExportLeavesNoFile() {
     QVERIFY(cancelled);
     QVERIFY(!QFileInfo::exists(path));
     QVERIFY2(tempFiles(dir.path()).isEmpty(), qPrintable(tempFiles(dir.path()).join(' ')));
+}
+
+void ViewerTest::loopPointsDrivePlaybackAndExport() {
+    QTemporaryDir dir;
+    auto window = windowOn(smallSceneFile(dir), 3);
+    QVERIFY(window);
+    MainWindow& w = *window;
+    w.editorDock()->hide();  // room for the timeline on the 800-pixel offscreen screen
+    w.resizeForViewport({400, 100});
+    Playback* playback = w.playback();
+    KeyMarkerSlider* slider = w.timeline()->slider();
+    QVERIFY(!playback->loopRange());
+
+    // I and O (the picture has the focus) set the points at the frame shown.
+    w.viewport()->setFocus();
+    QTest::keyClick(w.viewport(), Qt::Key_I);
+    QCOMPARE(playback->loopRange(), loopOf(3, 10));  // out defaults to the last frame
+    playback->seek(6);
+    QTest::keyClick(w.viewport(), Qt::Key_O);
+    QCOMPARE(playback->loopRange(), loopOf(3, 6));
+    QCOMPARE(slider->loop(), (std::optional<std::pair<int, int>>{{3, 6}}));
+
+    // Playing from outside the loop starts at its in point and never leaves it;
+    // it comes round again (4 frames at 4x speed: a sixth of a second a turn).
+    playback->seek(8);
+    playback->setSpeed(4);
+    QList<double> times;
+    connect(playback, &Playback::timeChanged, this, [&](double t) { times << t; });
+    playback->play();
+    QTRY_VERIFY_WITH_TIMEOUT(times.size() > 2 && frameAt(times.last()) < frameAt(times[times.size() - 2]),
+                             kWaitMs);
+    playback->pause();
+    disconnect(playback, &Playback::timeChanged, this, nullptr);
+    QCOMPARE(times.first(), 3.0);
+    for (double t : times) QVERIFY2(t >= 3 && t < 7, qPrintable(QString::number(t)));
+
+    // Dragging a flag on the slider moves that point.
+    const double pausedAt = playback->time();
+    const int top = slider->loopFlagY();
+    QTest::mousePress(slider, Qt::LeftButton, {}, QPoint(slider->positionOf(3), top));
+    QTest::mouseMove(slider, QPoint(slider->positionOf(2), top));
+    QTest::mouseMove(slider, QPoint(slider->positionOf(1), top));
+    QTest::mouseRelease(slider, Qt::LeftButton, {}, QPoint(slider->positionOf(1), top));
+    QCOMPARE(playback->loopRange(), loopOf(1, 6));
+    QTest::mousePress(slider, Qt::LeftButton, {}, QPoint(slider->positionOf(6), top));
+    QTest::mouseMove(slider, QPoint(slider->positionOf(8), top));
+    QTest::mouseRelease(slider, Qt::LeftButton, {}, QPoint(slider->positionOf(8), top));
+    QCOMPARE(playback->loopRange(), loopOf(1, 8));
+    QCOMPARE(playback->time(), pausedAt);  // dragging a flag does not scrub
+
+    // The slider's context menu: in/out at the frame under the mouse, an out
+    // point before the in point moves it along, and Clear.
+    {
+        auto menu = slider->loopMenu(5);
+        QCOMPARE(menu->actions().size(), 3);
+        menu->actions()[0]->trigger();
+        QCOMPARE(playback->loopRange(), loopOf(5, 8));
+    }
+    slider->loopMenu(2)->actions()[1]->trigger();
+    QCOMPARE(playback->loopRange(), loopOf(2, 2));
+
+    // Export renders the loop's frames only, numbered as scene frames.
+    playback->setLoopIn(4);
+    playback->setLoopOut(7);
+    const auto scene = w.document()->scene();
+    ExportJob job = w.exportJob(
+        scene, std::make_unique<PngSequenceSink>(exportSequencePattern(dir.filePath("out"), "small", 11)),
+        "out");
+    QCOMPARE(job.firstFrame, 4);
+    QCOMPARE(job.lastFrame, 7);
+    AnimationExporter exporter;
+    QSignalSpy finished(&exporter, &AnimationExporter::finished);
+    exporter.start(std::move(job));
+    QVERIFY(finished.wait(kWaitMs * 3));
+    QVERIFY2(finished.at(0).at(0).toBool(), qPrintable(finished.at(0).at(1).toString()));
+    QCOMPARE(QDir(dir.filePath("out")).entryList({"*.png"}),
+             (QStringList{"small_0004.png", "small_0005.png", "small_0006.png", "small_0007.png"}));
+    Image read;
+    std::string error;
+    QVERIFY2(readPng(dir.filePath("out/small_0005.png").toStdString(), read, error), error.c_str());
+    QVERIFY(read == coreRender(*scene, 5, 96, 72));
+
+    // Cleared (Alt+X): the whole scene again, for playing and exporting.
+    QTest::keyClick(w.viewport(), Qt::Key_X, Qt::AltModifier);
+    QVERIFY(!playback->loopRange());
+    QVERIFY(!slider->loop());
+    const ExportJob all = w.exportJob(scene, nullptr, "all");
+    QCOMPARE(all.firstFrame, 0);
+    QCOMPARE(all.lastFrame, 10);
 }
 
 QTEST_MAIN(ViewerTest)

@@ -312,12 +312,33 @@ bool Bvh::update(std::span<const Primitive> primitives, ThreadPool* pool) {
 }
 
 bool Bvh::intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit, std::uint32_t skip) const {
+    NoTraversalCount none;
+    return intersectCounted(ray, tMin, tMax, hit, skip, none);
+}
+
+bool Bvh::intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit, TraversalCount& count) const {
+    return intersectCounted(ray, tMin, tMax, hit, kNoPrimitive, count);
+}
+
+bool Bvh::occluded(const Ray& ray, float tMin, float tMax, std::uint32_t skip) const {
+    NoTraversalCount none;
+    return occludedCounted(ray, tMin, tMax, skip, none);
+}
+
+bool Bvh::occluded(const Ray& ray, float tMin, float tMax, std::uint32_t skip, TraversalCount& count) const {
+    return occludedCounted(ray, tMin, tMax, skip, count);
+}
+
+template <class Count>
+bool Bvh::intersectCounted(const Ray& ray, float tMin, float tMax, HitRecord& hit, std::uint32_t skip,
+                           Count& count) const {
     if (nodes_.empty()) return false;
     Vec3 invDir = inverseDirection(ray.direction);
     std::uint32_t stack[kStackSize];
     int top = 0;
     std::uint32_t current = 0;
     bool found = false;
+    count.node();
     if (boxEntry(nodes_[0].bounds, ray.origin, invDir, tMin, tMax) == kInfinity) return false;
     // Once something is hit, primitives at exactly its distance are tested too
     // (up to `bound`), and the lower frame index wins the tie: the pixel must
@@ -329,6 +350,7 @@ bool Bvh::intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit, std:
             for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
                 float t;
                 Face face;
+                count.primitive();
                 if (original_[i] != skip && intersectPrimitive(ordered_[i], ray, tMin, bound, t, face) &&
                     (!found || t < tMax || original_[i] < hit.primitive)) {
                     tMax = t;
@@ -339,6 +361,8 @@ bool Bvh::intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit, std:
             }
         } else {
             std::uint32_t a = node.first, b = node.first + 1;
+            count.node();
+            count.node();
             float ta = boxEntry(nodes_[a].bounds, ray.origin, invDir, tMin, tMax);
             float tb = boxEntry(nodes_[b].bounds, ray.origin, invDir, tMin, tMax);
             if (ta > tb) {
@@ -355,12 +379,14 @@ bool Bvh::intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit, std:
         for (;;) {
             if (top == 0) return found;
             current = stack[--top];
+            count.node();
             if (boxEntry(nodes_[current].bounds, ray.origin, invDir, tMin, tMax) != kInfinity) break;
         }
     }
 }
 
-bool Bvh::occluded(const Ray& ray, float tMin, float tMax, std::uint32_t skip) const {
+template <class Count>
+bool Bvh::occludedCounted(const Ray& ray, float tMin, float tMax, std::uint32_t skip, Count& count) const {
     if (nodes_.empty()) return false;
     Vec3 invDir = inverseDirection(ray.direction);
     std::uint32_t stack[kStackSize];
@@ -368,13 +394,15 @@ bool Bvh::occluded(const Ray& ray, float tMin, float tMax, std::uint32_t skip) c
     stack[top++] = 0;
     while (top > 0) {
         const Node& node = nodes_[stack[--top]];
+        count.node();
         if (boxEntry(node.bounds, ray.origin, invDir, tMin, tMax) == kInfinity) continue;
         if (node.count > 0) {
             for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
                 float t;
                 Face face;
-                if (original_[i] != skip && intersectPrimitive(ordered_[i], ray, tMin, tMax, t, face))
-                    return true;
+                if (original_[i] == skip) continue;
+                count.primitive();
+                if (intersectPrimitive(ordered_[i], ray, tMin, tMax, t, face)) return true;
             }
         } else {
             stack[top++] = node.first + 1;

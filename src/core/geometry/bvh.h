@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/geometry/intersect.h"
+#include "core/geometry/traversal_count.h"
 #include "core/util/thread_pool.h"
 
 namespace f2 {
@@ -48,10 +49,20 @@ class Bvh {
     /// the primitive first in the frame (lowest index), whatever the tree's shape.
     bool intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit,
                    std::uint32_t skip = kNoPrimitive) const;
+    /// The same traversal, adding the boxes and primitives it tests to `count`.
+    bool intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit, TraversalCount& count) const;
+    bool intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit, NoTraversalCount&) const {
+        return intersect(ray, tMin, tMax, hit);
+    }
     /// Any hit within (tMin, tMax) on a primitive other than `skip`: shadow rays
     /// stop at the first occluder. A convex primitive cannot shadow its own lit
     /// side, so shadow rays skip the primitive they start on.
     bool occluded(const Ray& ray, float tMin, float tMax, std::uint32_t skip = kNoPrimitive) const;
+    /// The same traversal, adding the boxes and primitives it tests to `count`.
+    bool occluded(const Ray& ray, float tMin, float tMax, std::uint32_t skip, TraversalCount& count) const;
+    bool occluded(const Ray& ray, float tMin, float tMax, std::uint32_t skip, NoTraversalCount&) const {
+        return occluded(ray, tMin, tMax, skip);
+    }
 
     /// Up to out.size() nodes whose subtrees hold every primitive that a ray
     /// inside `frustum` can reach, nearest to `eye` first; returns how many.
@@ -70,6 +81,13 @@ class Bvh {
     std::span<const std::uint32_t> originalIndices() const { return original_; }
 
    private:
+    /// The single-ray traversals, over a counting policy (traversal_count.h).
+    template <class Count>
+    bool intersectCounted(const Ray& ray, float tMin, float tMax, HitRecord& hit, std::uint32_t skip,
+                          Count& count) const;
+    template <class Count>
+    bool occludedCounted(const Ray& ray, float tMin, float tMax, std::uint32_t skip, Count& count) const;
+
     /// The splitting of entryNodes(): nodes that `excludes` rejects are
     /// dropped, the rest are sorted by `distance`.
     template <class Excludes, class Distance>

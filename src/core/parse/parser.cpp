@@ -193,6 +193,9 @@ class Parser : private ExpansionSink {
     Parser(std::string_view fileName, const ParseLimits& limits, SymbolIndex* index)
         : fileName_(fileName), limits_(limits), index_(index), expander_(expansionLimits(limits), *this) {}
 
+    /// Texts read instead of included files on disk (source_expander.h).
+    void setOverlay(const SourceOverlay* overlay) { expander_.setOverlay(overlay); }
+
     /// `identity`: the main file's (device, inode), when it is a file.
     ParseResult run(std::string_view text,
                     std::optional<std::pair<std::uint64_t, std::uint64_t>> identity = std::nullopt) {
@@ -1188,6 +1191,14 @@ ParseResult parseScene(std::string_view text, std::string_view fileName, const P
                        SymbolIndex& index) {
     index.clear();
     return Parser(fileName, limits, &index).run(text);
+}
+
+ParseResult parseScene(std::string_view text, std::string_view fileName, const ParseLimits& limits,
+                       SymbolIndex& index, const SourceOverlay& overlay) {
+    index.clear();
+    Parser parser(fileName, limits, &index);
+    parser.setOverlay(&overlay);
+    return parser.run(text, fileIdentity(std::string(fileName)));
 }
 
 std::vector<std::string_view> commandNames() {

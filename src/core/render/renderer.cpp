@@ -3,10 +3,12 @@
 #include <chrono>
 
 #include "core/anim/frame_builder.h"
+#include "core/render/diagnostic_view.h"
 #include "core/render/packet_reflection.h"
 #include "core/render/packet_shading.h"
 #include "core/render/reflection.h"
 #include "core/render/shading.h"
+#include "core/render/view_legend.h"
 
 namespace f2 {
 
@@ -172,6 +174,12 @@ class TileRenderer {
 
 bool Renderer::trace(const FrameScene& frame, const Camera& camera, Image& out, const RenderOptions& options,
                      const std::atomic<bool>* cancel, RayCounts* rays) {
+    if (options.view != ViewMode::Shaded) {
+        ViewRange range;
+        if (!traceView(frame, camera, options.view, out, &pool_, cancel, &range, rays)) return false;
+        drawViewLegend(out, options.view, range);
+        return true;
+    }
     out.resize(camera.width, camera.height);
     const int tilesX = (camera.width + kTileSize - 1) / kTileSize;
     const int tilesY = (camera.height + kTileSize - 1) / kTileSize;

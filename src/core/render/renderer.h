@@ -8,12 +8,16 @@
 #include "core/render/frame_scene.h"
 #include "core/render/image.h"
 #include "core/render/ray_counts.h"
+#include "core/render/view_mode.h"
 #include "core/util/thread_pool.h"
 
 namespace f2 {
 
 struct RenderOptions {
     int antialias = 1;  ///< N: N x N stratified samples per pixel; 1 = pixel centre (SPEC 2)
+    /// What the pixels show. The diagnostic modes trace one ray per pixel
+    /// centre by the reference path (diagnostic_view.h); antialias is for Shaded.
+    ViewMode view = ViewMode::Shaded;
 };
 
 /// Wall-clock split of one frame, in milliseconds, and the rays it cast.
@@ -34,7 +38,8 @@ class Renderer {
     /// `threads` = 0 uses every core.
     explicit Renderer(int threads = 0);
 
-    /// Traces a prepared frame (its BVH built) into `out` at the camera's size.
+    /// Traces a prepared frame (its BVH built) into `out` at the camera's size,
+    /// in the view mode of `options` (depth and cost with their legend, view_legend.h).
     /// Returns false if `cancel` was raised (the image is then incomplete).
     bool trace(const FrameScene& frame, const Camera& camera, Image& out, const RenderOptions& options = {},
                const std::atomic<bool>* cancel = nullptr, RayCounts* rays = nullptr);

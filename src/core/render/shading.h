@@ -63,9 +63,11 @@ struct LightTerm {
 };
 
 /// Colour (0..1, unclamped) of the nearest hit `hit` of `ray`; onLight(term)
-/// sees each light's LightTerm (the --pixel report).
-template <class OnLight>
-inline Vec3 shadeHit(const FrameScene& frame, const Ray& ray, const HitRecord& hit, OnLight&& onLight) {
+/// sees each light's LightTerm (the --pixel report); the shadow rays'
+/// traversals add their work to `count` (TraversalCount: the cost view).
+template <class OnLight, class Count>
+inline Vec3 shadeHit(const FrameScene& frame, const Ray& ray, const HitRecord& hit, OnLight&& onLight,
+                     Count& count) {
     const Surface& surface = frame.surfaces[hit.primitive];
     const Material& m = surface.material;
     const ShadingPoint s = shadingPoint(frame, ray, hit);
@@ -80,7 +82,8 @@ inline Vec3 shadeHit(const FrameScene& frame, const Ray& ray, const HitRecord& h
         term.light = i;
         term.nDotL = dot(n, light.toLight);
         if (term.nDotL > 0) {
-            term.shadowed = frame.bvh.occluded({s.shadowOrigin, light.toLight}, 0.0f, kInfinity, s.skip);
+            term.shadowed =
+                frame.bvh.occluded({s.shadowOrigin, light.toLight}, 0.0f, kInfinity, s.skip, count);
             if (!term.shadowed) {
                 term.diffuse = light.intensity * m.kd * term.nDotL;
                 diffuse += term.diffuse;
@@ -98,6 +101,12 @@ inline Vec3 shadeHit(const FrameScene& frame, const Ray& ray, const HitRecord& h
     const Vec3 color = surfaceColorAt(surface, frame.primitives[hit.primitive], s.position, outward,
                                       shadowOffset(s.position));
     return color * std::min(diffuse, kMaxLight) + Vec3{specular, specular, specular};
+}
+
+template <class OnLight>
+inline Vec3 shadeHit(const FrameScene& frame, const Ray& ray, const HitRecord& hit, OnLight&& onLight) {
+    NoTraversalCount none;
+    return shadeHit(frame, ray, hit, onLight, none);
 }
 
 inline Vec3 shadeHit(const FrameScene& frame, const Ray& ray, const HitRecord& hit) {
