@@ -537,13 +537,46 @@ void MainWindow::selectAt(QPointF imagePoint) {
     const Camera camera = viewport_->viewCamera(image.size());
     const auto hit = pickPixel(*scene, shownFrame_.time, camera, int(imagePoint.x()), int(imagePoint.y()));
     setSelection(hit ? std::optional(selectionOf(*scene, *hit)) : std::nullopt);
-    if (!selection_) return;
-    if (const int line = creatingLine(editor()->toPlainText(), selection_->object)) {
+    if (selection_) showCreatingLine();
+}
+
+int MainWindow::editorLineOf(const CreatedAt& created, ObjectKind kind) const {
+    if (created.loc.file != document_->sourceName()) return 0;
+    const QTextBlock block = editor()->document()->findBlockByNumber(created.loc.line - 1);
+    if (!block.isValid()) return 0;
+    // The text may have changed since the scene parsed: the line must still hold the command.
+    const std::string_view name = objectKindName(kind);
+    const QString command = u'/' + QString::fromLatin1(name.data(), qsizetype(name.size()));
+    return block.text().mid(created.loc.column - 1).startsWith(command) ? created.loc.line : 0;
+}
+
+void MainWindow::showCreatingLine() {
+    const auto scene = document_->scene();
+    const auto object = findObject(*scene, *selection_);
+    const CreatedAt* created = document_->locations()->object(selection_->object);
+    if (!object || !created) return;
+    const QString target = selection_->target();
+    // Several objects from one line: a loop made them (or an include read more than once).
+    const QString loop =
+        created->sameLine > 1 ? tr(", one of %1 objects that line makes").arg(created->sameLine) : QString();
+    if (const int line = editorLineOf(*created, scene->objects[*object].kind)) {
         QTextCursor cursor(editor()->document()->findBlockByNumber(line - 1));
         cursor.movePosition(QTextCursor::EndOfBlock, QTextCursor::KeepAnchor);
         editor()->setTextCursor(cursor);
         editor()->centerCursor();
+        if (!loop.isEmpty())
+            statusBar()->showMessage(tr("%1 is made by line %2%3").arg(target).arg(line).arg(loop));
+        return;
     }
+    // Another file (an /include), or text that changed since: name the place, open nothing.
+    const QString place =
+        QStringLiteral("%1:%2").arg(QString::fromStdString(created->loc.file)).arg(created->loc.line);
+    statusBar()->showMessage(created->loc.file == document_->sourceName()
+                                 ? tr("%1 was made by line %2 before the latest edits%3")
+                                       .arg(target)
+                                       .arg(created->loc.line)
+                                       .arg(loop)
+                                 : tr("%1 is made in an included file, %2%3").arg(target, place, loop));
 }
 
 void MainWindow::setSelection(std::optional<Selection> selection) {
@@ -596,9 +629,13 @@ bool MainWindow::keySelectionHere() {
     }
     const int frame = playback_->frame();
     const Pose pose = selectionKeyPose(*scene, *object, selection_->part, frame);
-    const QString text = editor()->toPlainText();
-    applyEdit(editor(),
-              keyEdit(text, selection_->target(), frame, pose, creatingLine(text, selection_->object)));
+    // A new target's first key goes after its creating line, unless a loop
+    // made it (inside the loop it would be read on every pass) or it is in
+    // another file: then at the end.
+    const CreatedAt* created = document_->locations()->object(selection_->object);
+    const int createdAt =
+        created && created->sameLine == 1 ? editorLineOf(*created, scene->objects[*object].kind) : 0;
+    applyEdit(editor(), keyEdit(editor()->toPlainText(), selection_->target(), frame, pose, createdAt));
     return true;
 }
 

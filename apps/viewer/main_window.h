@@ -11,6 +11,7 @@
 #include "animation_exporter.h"
 #include "core/render/image.h"
 #include "render_controller.h"
+#include "scene_locations.h"
 #include "selection.h"
 
 class QLabel;
@@ -161,6 +162,12 @@ class MainWindow : public QMainWindow {
     void updateStatus();
     /// Outline and status of the selection for the frame on screen.
     void updateSelectionView();
+    /// Selects the selection's creating line in the editor; says in the status
+    /// bar when a loop made it or it is in another file.
+    void showCreatingLine();
+    /// The editor's line of `created` (an object of `kind`), or 0 when it is
+    /// in another file or the text has changed there since the scene parsed.
+    int editorLineOf(const CreatedAt& created, ObjectKind kind) const;
     void openDialog();
     void saveFrame();
     void exportPngSequence();

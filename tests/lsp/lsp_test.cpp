@@ -31,6 +31,20 @@ std::vector<MessageReader::Item> readAll(MessageReader& reader) {
 
 Analysis analysed(std::string text) { return analyze("file:///t/a.f2", TextDocument(std::move(text), 1)); }
 
+/// A fresh directory under the system's temporary one, removed at the end.
+struct TempDir {
+    std::filesystem::path path;
+    explicit TempDir(const std::string& name)
+        : path(std::filesystem::temp_directory_path() / (name + std::to_string(::getpid()))) {
+        std::filesystem::create_directories(path);
+    }
+    ~TempDir() { std::filesystem::remove_all(path); }
+    std::string write(const std::string& file, const std::string& text) const {
+        std::ofstream(path / file) << text;
+        return (path / file).string();
+    }
+};
+
 TEST(MessageReader, SplitsFramesFedByteByByte) {
     const std::string stream = frameMessage("{\"a\":1}") + "content-length:  2\r\nX-Other: y\r\n\r\n{}";
     MessageReader reader;
@@ -294,30 +308,25 @@ TEST(Variables, DefinitionReferencesRenameHoverCompletion) {
 }
 
 TEST(Includes, DefinitionHoverAndPathCompletion) {
-    namespace fs = std::filesystem;
-    const fs::path dir = fs::temp_directory_path() / ("f2_lsp_include_" + std::to_string(::getpid()));
-    fs::create_directories(dir / "parts");
-    std::ofstream(dir / "parts" / "floor.f2") << "/box floor 10 10 10 0 0 0\n";
-    std::ofstream(dir / "parts" / "notes.txt") << "x";
-    const std::string main = (dir / "main.f2").string();
+    const TempDir dir("f2_lsp_include_");
+    std::filesystem::create_directories(dir.path / "parts");
+    const std::string floor = dir.write("parts/floor.f2", "/box floor 10 10 10 0 0 0\n");
+    dir.write("parts/notes.txt", "x");
+    const std::string main = (dir.path / "main.f2").string();
     const Analysis a =
         analyze(uriFromPath(main), TextDocument("/include \"parts/floor.f2\"\n/include parts/\n", 1));
-    EXPECT_EQ(definition(a, {0, 12}), location(uriFromPath((dir / "parts" / "floor.f2").string()), Range{}));
-    EXPECT_EQ(hover(a, {0, 12})["contents"]["value"],
-              "**include** `" + (dir / "parts" / "floor.f2").string() + "`");
+    EXPECT_EQ(definition(a, {0, 12}), location(uriFromPath(floor), Range{}));
+    EXPECT_EQ(hover(a, {0, 12})["contents"]["value"], "**include** `" + floor + "`");
     const Json items = completion(a, {1, 15});
     ASSERT_EQ(items.size(), 1u);  // floor.f2; not the .txt
     EXPECT_EQ(items[0]["label"], "floor.f2");
     EXPECT_EQ(items[0]["textEdit"]["range"], toJson(Range{{1, 15}, {1, 15}}));
-    fs::remove_all(dir);
 }
 
 TEST(Includes, DiagnosticsInAnIncludedFileAreItsOwn) {
-    namespace fs = std::filesystem;
-    const fs::path dir = fs::temp_directory_path() / ("f2_lsp_diag_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    std::ofstream(dir / "part.f2") << "# \xD0\xBF\n/sphere ball 1 0 0 0\n/key 0 bal\n";
-    const Analysis a = analyze(uriFromPath((dir / "main.f2").string()),
+    const TempDir dir("f2_lsp_diag_");
+    const std::string part = dir.write("part.f2", "# \xD0\xBF\n/sphere ball 1 0 0 0\n/key 0 bal\n");
+    const Analysis a = analyze(uriFromPath((dir.path / "main.f2").string()),
                                TextDocument("/amb_light 1\n/include part.f2\n/key 1 ball\n", 1));
     const Json published = publishDiagnostics(a);
     ASSERT_EQ(published.size(), 2u) << published.dump();
@@ -328,23 +337,19 @@ TEST(Includes, DiagnosticsInAnIncludedFileAreItsOwn) {
     EXPECT_EQ(summary["message"],
               "in the included file part.f2:3:8: unknown name 'bal' (did you mean 'ball'?)");
     EXPECT_EQ(summary["relatedInformation"][0]["location"],
-              location(uriFromPath((dir / "part.f2").string()), Range{{2, 7}, {2, 10}}));
-    EXPECT_EQ(published[1]["uri"], uriFromPath((dir / "part.f2").string()));
+              location(uriFromPath(part), Range{{2, 7}, {2, 10}}));
+    EXPECT_EQ(published[1]["uri"], uriFromPath(part));
     ASSERT_EQ(published[1]["diagnostics"].size(), 1u);
     EXPECT_EQ(published[1]["diagnostics"][0]["range"], toJson(Range{{2, 7}, {2, 10}}));
     // The object created in the included file: definition goes there.
-    EXPECT_EQ(definition(a, {2, 8}),
-              location(uriFromPath((dir / "part.f2").string()), Range{{1, 8}, {1, 12}}));
-    fs::remove_all(dir);
+    EXPECT_EQ(definition(a, {2, 8}), location(uriFromPath(part), Range{{1, 8}, {1, 12}}));
 }
 
 TEST(Includes, FixedIncludeErrorsAreClearedOnSave) {
-    namespace fs = std::filesystem;
-    const fs::path dir = fs::temp_directory_path() / ("f2_lsp_clear_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    std::ofstream(dir / "part.f2") << "/fps x\n";
-    const std::string mainUri = uriFromPath((dir / "main.f2").string());
-    const std::string partUri = uriFromPath((dir / "part.f2").string());
+    const TempDir dir("f2_lsp_clear_");
+    const std::string part = dir.write("part.f2", "/fps x\n");
+    const std::string mainUri = uriFromPath((dir.path / "main.f2").string());
+    const std::string partUri = uriFromPath(part);
     Server server;
     server.handle(R"({"id":1,"method":"initialize"})");
     auto diagnosticsOf = [](const std::vector<std::string>& out, const std::string& uri) {
@@ -361,18 +366,17 @@ TEST(Includes, FixedIncludeErrorsAreClearedOnSave) {
                {{"textDocument", {{"uri", mainUri}, {"version", 1}, {"text", "/include part.f2\n"}}}}}})
             .dump());
     EXPECT_EQ(diagnosticsOf(opened, partUri).size(), 1u);
-    std::ofstream(dir / "part.f2") << "/fps 24\n";
+    dir.write("part.f2", "/fps 24\n");
     const auto saved = server.handle(
         Json({{"method", "textDocument/didSave"}, {"params", {{"textDocument", {{"uri", partUri}}}}}})
             .dump());
     EXPECT_EQ(diagnosticsOf(saved, partUri), Json::array());
-    fs::remove_all(dir);
 }
 
 /// A scene in a temporary directory: main.f2 includes parts/stage.f2, which
 /// defines a variable and an object main.f2 uses, and uses one of main.f2's.
 struct IncludedScene {
-    std::filesystem::path dir;
+    TempDir dir;
     std::string main, stage;
     static constexpr const char* kMain =
         "/let w 40\n"                       // 0
@@ -388,15 +392,11 @@ struct IncludedScene {
         "/box prop 10 (w) 10 0 0 0\n"        // 2
         "/camera 320 240 0.5 0 100 -500\n";  // 3
 
-    explicit IncludedScene(const std::string& name) {
-        dir = std::filesystem::temp_directory_path() / (name + std::to_string(::getpid()));
-        std::filesystem::create_directories(dir / "parts");
-        main = (dir / "main.f2").string();
-        stage = (dir / "parts" / "stage.f2").string();
-        std::ofstream(main) << kMain;
-        std::ofstream(stage) << kStage;
+    explicit IncludedScene(const std::string& name) : dir(name) {
+        std::filesystem::create_directories(dir.path / "parts");
+        main = dir.write("main.f2", kMain);
+        stage = dir.write("parts/stage.f2", kStage);
     }
-    ~IncludedScene() { std::filesystem::remove_all(dir); }
 };
 
 TEST(Includes, VariablesAndObjectsFollowedBothWays) {
@@ -432,16 +432,14 @@ TEST(Includes, VariablesAndObjectsFollowedBothWays) {
 }
 
 TEST(Includes, ParserReadsOpenTextsBeforeTheDisk) {
-    namespace fs = std::filesystem;
-    const fs::path dir = fs::temp_directory_path() / ("f2_lsp_overlay_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    std::ofstream(dir / "part.f2") << "/fps x\n";  // broken on disk, fixed in the editor
-    std::ofstream(dir / "main.f2") << "";
-    const std::string main = (dir / "main.f2").string(), part = (dir / "part.f2").string();
-    const std::string ghost = (dir / "ghost.f2").string();  // open, never saved
+    const TempDir dir("f2_lsp_overlay_");
+    const std::string part = dir.write("part.f2", "/fps x\n");  // broken on disk, fixed in the editor
+    const std::string main = dir.write("main.f2", "");
+    const std::string ghost = (dir.path / "ghost.f2").string();  // open, never saved
     const SourceOverlay open{{part, "/fps 30\n"}, {ghost, "/amb_light 1\n/include ghost.f2\n"}};
     SymbolIndex index;
-    const ParseResult fixed = parseScene("/include part.f2\n/amb_light 1\n", main, ParseLimits{}, index, open);
+    const ParseResult fixed =
+        parseScene("/include part.f2\n/amb_light 1\n", main, ParseLimits{}, index, open);
     EXPECT_TRUE(fixed.ok());
     EXPECT_EQ(fixed.scene->fps, 30);
     // An unsaved file that includes itself: a cycle, not an endless read.
@@ -454,23 +452,19 @@ TEST(Includes, ParserReadsOpenTextsBeforeTheDisk) {
     ASSERT_EQ(self.diagnostics.size(), 1u);
     EXPECT_EQ(self.diagnostics[0].loc.file, main);
     EXPECT_EQ(self.diagnostics[0].loc.line, 1);
-    fs::remove_all(dir);
 }
 
 TEST(Includes, ScanSurvivesCyclesMissingFilesAndDiamonds) {
-    namespace fs = std::filesystem;
-    const fs::path dir = fs::temp_directory_path() / ("f2_lsp_scan_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    std::ofstream(dir / "a.f2") << "/let a 1\n/include b.f2\n/include missing.f2\n/include \"{x}.f2\"\n";
-    std::ofstream(dir / "b.f2") << "/let b 2\n/include a.f2\n";
+    const TempDir dir("f2_lsp_scan_");
+    const std::string a =
+        dir.write("a.f2", "/let a 1\n/include b.f2\n/include missing.f2\n/include \"{x}.f2\"\n");
+    dir.write("b.f2", "/let b 2\n/include a.f2\n");
     // 17 levels, each including the next twice: 2^17 readings without the line budget.
     for (int i = 0; i < 17; ++i) {
         const std::string next = "d" + std::to_string(i + 1) + ".f2";
-        std::ofstream(dir / ("d" + std::to_string(i) + ".f2"))
-            << "/include " << next << "\n/include " << next << "\n";
+        dir.write("d" + std::to_string(i) + ".f2", "/include " + next + "\n/include " + next + "\n");
     }
-    std::ofstream(dir / "d17.f2") << "/let deep 1\n";
-    const std::string a = (dir / "a.f2").string();
+    dir.write("d17.f2", "/let deep 1\n");
     const SceneSources cyc =
         scanScene(a, TextDocument("/let a 1\n/include b.f2\n/include missing.f2\n", 1), {});
     ASSERT_EQ(cyc.files.size(), 2u);
@@ -478,10 +472,9 @@ TEST(Includes, ScanSurvivesCyclesMissingFilesAndDiamonds) {
     EXPECT_TRUE(cyc.reaches(1, 0));
     EXPECT_EQ(cyc.variables.size(), 2u);  // b.f2's include of a.f2 is not followed again
     const SceneSources deep =
-        scanScene((dir / "d0.f2").string(), TextDocument("/include d1.f2\n/include d1.f2\n", 1), {});
+        scanScene((dir.path / "d0.f2").string(), TextDocument("/include d1.f2\n/include d1.f2\n", 1), {});
     EXPECT_EQ(deep.files.size(), 18u);    // d0 … d17 read; d17 is 17 deep, beyond 16: not followed
     EXPECT_TRUE(deep.variables.empty());  // so its /let is not seen
-    fs::remove_all(dir);
 }
 
 TEST(Includes, OpenDocumentsThatIncludeEachOtherOrThemselves) {

@@ -514,7 +514,7 @@ void EditorTest::captureLinesGoNextToTheirTarget() {
     QVERIFY(camera.replace);
     QCOMPARE(camera.text, QStringLiteral("/camera 800 600 (1/2) 1.5 0 2 0 90 0   # wide"));
     // A part without keys: after the robot's creating line.
-    const TextEdit head = keyEdit(text, "r.head", 3, pose, creatingLine(text, "r"));
+    const TextEdit head = keyEdit(text, "r.head", 3, pose, 2);
     QCOMPARE(head.line, 3);
     QVERIFY(!head.replace);
     QCOMPARE(head.text, QStringLiteral("/key 3 r.head 1.5 0 2 0 90 0"));

@@ -15,8 +15,10 @@
 #include <QSlider>
 #include <QSpinBox>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTextBlock>
 #include <QTimer>
 #include <QWheelEvent>
 #include <atomic>
@@ -78,6 +80,7 @@ class ViewerTest : public QObject {
     void exportWritesVideo();
     void cancelledVideoExportLeavesNoFile();
     void loopPointsDrivePlaybackAndExport();
+    void pickNamesTheLineALoopOrIncludeMadeItBy();
 };
 
 namespace {
@@ -844,6 +847,58 @@ void ViewerTest::loopPointsDrivePlaybackAndExport() {
     const ExportJob all = w.exportJob(scene, nullptr, "all");
     QCOMPARE(all.firstFrame, 0);
     QCOMPARE(all.lastFrame, 10);
+}
+
+void ViewerTest::pickNamesTheLineALoopOrIncludeMadeItBy() {
+    // Three balls made by one line of a /repeat loop, and a crate from an included file.
+    QTemporaryDir dir;
+    writeFile(dir.filePath("parts.f2"), "# parts\n/box crate 1.5 1.5 1.5 0 2.5 8\n");
+    const QByteArray text =
+        "/camera 96 72 0.6 0 0 -10\n/background 20 30 40\n/amb_light 0.3\n/dir_light 0.8 0.3 -0.5 1\n"
+        "/repeat i 0 2\n  /sphere ball{i} 1 (i*3-3) 0 8\n/end\n/include parts.f2\n";
+    writeFile(dir.filePath("loops.f2"), text);
+    auto window = windowOn(dir.filePath("loops.f2"), 0);
+    QVERIFY(window);
+    MainWindow& w = *window;
+    w.editorDock()->hide();
+    w.setRenderScale(RenderScale::SceneSize);
+    QVERIFY(waitForShownFrame(w, 0));
+    const Camera camera = Camera::fromDesc(w.document()->scene()->camera);
+    auto clickAt = [&](Vec3 world) {
+        float px = 0, py = 0;
+        QVERIFY(camera.project(world, px, py));
+        const QRectF onScreen = w.viewport()->imageRect();
+        QTest::mouseClick(w.viewport(), Qt::LeftButton, {},
+                          QPoint(int(onScreen.left() + px * onScreen.width() / 96),
+                                 int(onScreen.top() + py * onScreen.height() / 72)));
+    };
+
+    // ball2 is selected at the loop's line, and the status bar says a loop made it.
+    clickAt({3, 0, 8});
+    QVERIFY(w.selection());
+    QCOMPARE(w.selection()->target(), QStringLiteral("ball2"));
+    QCOMPARE(w.editor()->textCursor().selectedText(), QStringLiteral("  /sphere ball{i} 1 (i*3-3) 0 8"));
+    QCOMPARE(w.editor()->textCursor().blockNumber(), 5);
+    QVERIFY2(w.statusBar()->currentMessage().contains("ball2 is made by line 6, one of 3 objects"),
+             qPrintable(w.statusBar()->currentMessage()));
+
+    // Its first key goes to the end, not into the loop (where every pass would read it).
+    QVERIFY(w.keySelectionHere());
+    QTextDocument* doc = w.editor()->document();
+    QCOMPARE(doc->findBlockByNumber(8).text(), QStringLiteral("/key 0 ball2 3 0 8 0 0 0"));
+    QCOMPARE(doc->findBlockByNumber(7).text(), QStringLiteral("/include parts.f2"));
+    w.editor()->undo();
+    QCOMPARE(w.editor()->toPlainText(), QString::fromUtf8(text));
+
+    // The crate is made in parts.f2: nothing in the editor is selected, the status bar names the place.
+    w.editor()->moveCursor(QTextCursor::Start);
+    clickAt({0, 2.5f, 8});
+    QVERIFY(w.selection());
+    QCOMPARE(w.selection()->target(), QStringLiteral("crate"));
+    QVERIFY(!w.editor()->textCursor().hasSelection());
+    QVERIFY2(w.statusBar()->currentMessage().contains("crate is made in an included file") &&
+                 w.statusBar()->currentMessage().contains("parts.f2:2"),
+             qPrintable(w.statusBar()->currentMessage()));
 }
 
 QTEST_MAIN(ViewerTest)

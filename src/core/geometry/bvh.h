@@ -36,12 +36,22 @@ class Bvh {
     /// This frame's tree: refits the last tree to the moved primitives (same
     /// count, any motion: the result is always correct), and rebuilds when
     /// there is none or refitting has let its SAH cost grow by kRebuildGrowth.
-    /// Returns true when it rebuilt.
+    /// Otherwise the subtrees whose own SAH cost has grown by kSubtreeRebuildGrowth
+    /// since they were built are rebuilt, the worst first, up to 1/kSubtreeBudget
+    /// of the primitives per call: playback then pays for its rebuilds a little
+    /// every frame instead of all at once now and then.
+    /// Returns true when it rebuilt the whole tree.
     bool update(std::span<const Primitive> primitives, ThreadPool* pool = nullptr);
     static constexpr float kRebuildGrowth = 1.3f;
+    static constexpr float kSubtreeRebuildGrowth = 1.1f;
+    static constexpr std::uint32_t kSubtreeBudget = 16;
+    /// Subtrees rebuilt by the last update() (0 after a full rebuild).
+    std::uint32_t subtreesRebuilt() const { return subtreesRebuilt_; }
 
     /// Expected cost of a ray under the SAH model, relative to the root's area.
     float sahCost() const;
+    /// Nodes reachable from the root (nodes().size() also counts slots freed by subtree rebuilds).
+    std::size_t liveNodeCount() const;
 
     static constexpr std::uint32_t kNoPrimitive = 0xFFFFFFFFu;
     /// Closest hit within (tMin, tMax) on a primitive other than `skip` (mirrored
@@ -119,11 +129,19 @@ class Bvh {
     /// are refitted in parallel, then the few nodes above them in turn.
     struct Subtree {
         std::uint32_t root, begin, end;  ///< its descendants: refitOrder_[begin, end), in pre-order
+        std::uint32_t firstPrimitive, endPrimitive;  ///< its leaves' range of ordered_
     };
     std::vector<Subtree> subtrees_;
     std::vector<std::uint32_t> refitOrder_;
-    std::vector<std::uint32_t> topNodes_;  ///< nodes above the subtrees, children before parents
-    std::vector<float> subtreeCost_;       ///< each subtree's share of the SAH sum, per refit
+    std::vector<std::uint32_t> topNodes_;      ///< nodes above the subtrees, children before parents
+    std::vector<float> subtreeCost_;           ///< each subtree's share of the SAH sum, per refit
+    std::vector<float> subtreeCostAtBuild_;    ///< the same right after the subtree was (re)built
+    std::vector<std::uint32_t> freePairs_;     ///< child-pair slots of nodes_ that rebuilds left unused
+    std::vector<std::uint32_t> rebuildList_;   ///< subtrees chosen by the last update()
+    std::vector<std::uint32_t> rebuildSlots_;  ///< placeSubtree() scratch
+    std::vector<Subtree> subtreesBefore_;      ///< rebuildDegradedSubtrees() scratch
+    std::vector<float> costAtBuildBefore_;     ///< rebuildDegradedSubtrees() scratch
+    std::uint32_t subtreesRebuilt_ = 0;
     struct PlanItem {
         std::uint32_t node, depth;
     };
@@ -135,6 +153,13 @@ class Bvh {
 
     /// Recomputes every node's bounds from `primitives` (same count as built); returns sahCost().
     float refit(std::span<const Primitive> primitives, ThreadPool* pool);
+    /// SAH sum (unnormalised) of subtree k's nodes, its root included.
+    float subtreeSahSum(std::size_t k) const;
+    /// Rebuilds the degraded subtrees (see update()), on the pool's threads.
+    void rebuildDegradedSubtrees(std::span<const Primitive> primitives, ThreadPool* pool);
+    /// Moves subtree k's freshly built nodes (`local`, root first, then child
+    /// pairs) into nodes_: its old child-pair slots first, then freed ones, then new.
+    void placeSubtree(const Subtree& subtree, const std::vector<Node>& local);
 };
 
 }  // namespace f2
