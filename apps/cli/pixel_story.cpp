@@ -96,16 +96,22 @@ int printPixelStory(const LoadedScene& loaded, const Camera& camera, double t, i
         out << "shadow rays from " << str(r.surface.shadowOrigin)
             << (r.surface.skip == Bvh::kNoPrimitive ? "" : ", skipping the primitive itself") << "\n";
         for (const PixelReport::Light& l : r.lights) {
-            const LightSample& light = frame.lights[l.term.light];
-            out << "light " << l.term.light + 1 << "  intensity " << light.intensity << " toward "
+            const bool local = l.term.light >= frame.lights.size();
+            out << "light " << l.term.light + 1 << (local ? " (point or spot)" : "") << "  toward "
                 << str(l.toLight) << ", N.L = " << l.term.nDotL << ": ";
             if (l.term.nDotL <= 0)
                 out << "faces away (no shadow ray)\n";
-            else if (l.term.shadowed)
+            else if (local && l.term.intensity <= 0)
+                out << "outside the spot's cone (no shadow ray)\n";
+            else if (l.term.shadowed && l.occluder != Bvh::kNoPrimitive)
                 out << "in shadow of #" << l.occluder << " " << name(l.occluder) << " at t = " << l.occluderT
                     << "\n";
+            else if (l.term.shadowed)
+                out << "in shadow (every shadow sample is blocked)\n";
             else
-                out << "lit, diffuse " << l.term.diffuse << ", specular " << l.term.specular << "\n";
+                out << "lit, intensity " << l.term.intensity
+                    << (l.term.visible < 1 ? " x " + std::to_string(l.term.visible) + " unshadowed" : "")
+                    << ", diffuse " << l.term.diffuse << ", specular " << l.term.specular << "\n";
         }
     }
     if (r.hit && r.material.reflection > 0)

@@ -22,6 +22,7 @@
 #include <QStatusBar>
 #include <QTextBlock>
 #include <QVBoxLayout>
+#include <QWindow>
 
 #include "animation_exporter.h"
 #include "autosave.h"
@@ -56,6 +57,7 @@ constexpr int kLineRole = Qt::UserRole + 1;
 constexpr int kColumnRole = Qt::UserRole + 2;
 const char* const kRecentKey = "recentFiles";
 const char* const kScaleKey = "renderScale";
+const char* const kPlaybackAntialiasKey = "playbackAntialias";
 }  // namespace
 
 MainWindow::MainWindow(QWidget* parent)
@@ -99,8 +101,9 @@ MainWindow::MainWindow(QWidget* parent)
     selectionStatus_ = new QLabel(this);
     refineStatus_ = new QLabel(this);
     viewStatus_ = new QLabel(this);
-    for (QLabel* label :
-         {selectionStatus_, viewStatus_, refineStatus_, frameStatus_, timeStatus_, fpsStatus_, sizeStatus_})
+    playbackAntialiasStatus_ = new QLabel(this);
+    for (QLabel* label : {selectionStatus_, viewStatus_, refineStatus_, playbackAntialiasStatus_,
+                          frameStatus_, timeStatus_, fpsStatus_, sizeStatus_})
         statusBar()->addPermanentWidget(label);
 
     frameTimer_.setSingleShot(true);
@@ -237,6 +240,23 @@ void MainWindow::createActions() {
     QAction* refineAction = view->addAction(tr("&Refine When Paused"), this, &MainWindow::setRefinement);
     refineAction->setCheckable(true);
     refineAction->setChecked(refinement_);
+    QMenu* playbackAa = view->addMenu(tr("Playback &Anti-aliasing"));
+    playbackAntialiasActions_ = new QActionGroup(this);
+    const std::pair<QString, PlaybackAntialiasMode> modes[] = {
+        {tr("&Off (1 sample)"), PlaybackAntialiasMode::Off},
+        {tr("&Auto (as many samples as the frame budget allows)"), PlaybackAntialiasMode::Auto},
+        {tr("O&n (2×2 samples)"), PlaybackAntialiasMode::On}};
+    for (const auto& [label, mode] : modes) {
+        QAction* a = playbackAa->addAction(label, this, [this, m = mode] { setPlaybackAntialias(m); });
+        a->setCheckable(true);
+        a->setData(int(mode));
+        playbackAntialiasActions_->addAction(a);
+    }
+    const int savedMode = QSettings().value(kPlaybackAntialiasKey, int(PlaybackAntialiasMode::Auto)).toInt();
+    setPlaybackAntialias(savedMode >= int(PlaybackAntialiasMode::Off) &&
+                                 savedMode <= int(PlaybackAntialiasMode::On)
+                             ? PlaybackAntialiasMode(savedMode)
+                             : PlaybackAntialiasMode::Auto);
     view->addSeparator();
     view->addAction(editorDock_->toggleViewAction());
     view->addAction(diagnosticsDock_->toggleViewAction());
@@ -265,6 +285,15 @@ void MainWindow::resizeForViewport(QSize viewportSize) {
     if (const QScreen* s = screen()) wanted = wanted.boundedTo(s->availableGeometry().size());
     resize(wanted);
 }
+
+void MainWindow::setPlaybackAntialias(PlaybackAntialiasMode mode) {
+    QSettings().setValue(kPlaybackAntialiasKey, int(mode));
+    playbackAntialias_.setMode(mode);
+    for (QAction* a : playbackAntialiasActions_->actions()) a->setChecked(a->data().toInt() == int(mode));
+    updateStatus();
+}
+
+QString MainWindow::playbackAntialiasStatus() const { return playbackAntialiasStatus_->text(); }
 
 void MainWindow::setRenderScale(RenderScale scale) {
     QSettings().setValue(kScaleKey, int(scale));
@@ -423,6 +452,9 @@ void MainWindow::onSceneChanged(bool newDocument) {
     const auto scene = document_->scene();
     playback_->setRange(scene->lastFrame(), scene->fps);
     timeline_->setRange(scene->lastFrame(), scene->fps);
+    // A playing frame may take one tick of the clock; another scene's cost is not known yet.
+    playbackAntialias_.setBudgetMs(playback_->tickIntervalMs());
+    if (newDocument) playbackAntialias_.reset();
     if (newDocument) {
         playback_->clearLoop();
         playback_->seek(0);
@@ -493,7 +525,10 @@ void MainWindow::requestFrame() {
     RenderOptions options;
     options.view = viewModes_->mode();
     lastRequest_ = {std::move(scene), time, viewport_->viewCamera(), options};
-    controller_->request(lastRequest_);
+    RenderRequest request = lastRequest_;
+    if (playback_->isPlaying() && options.view == ViewMode::Shaded)
+        request.options.antialias = playbackAntialias_.level();
+    controller_->request(request);
 }
 
 void MainWindow::setRefinement(bool on) {
@@ -509,6 +544,12 @@ bool MainWindow::isRefining() const {
            shownFrame_.view == ViewMode::Shaded && shownFrame_.antialias < kRefinedAntialias;
 }
 
+bool MainWindow::isPictureComplete() const {
+    return isVisible() && windowHandle() && windowHandle()->isExposed() && shownFrame_.serial != 0 &&
+           shownFrame_.size == viewport_->renderSize() && !controller_->hasPendingFrames() &&
+           !frameTimer_.isActive() && !isRefining();
+}
+
 void MainWindow::refine() {
     // Only the latest view, only when nothing newer is on its way: any change
     // (time, camera, size, scene) makes a new one-sample request, which
@@ -521,6 +562,7 @@ void MainWindow::refine() {
 }
 
 void MainWindow::onFrameReady(const QImage& image, const FrameInfo& info) {
+    playbackAntialias_.observe(info.antialias, info.timings);
     shownFrame_ = info;
     viewport_->setImage(image);
     updateSelectionView();
@@ -673,6 +715,11 @@ void MainWindow::updateStatus() {
                                ? QString()
                            : isRefining() ? tr("refining: %1×%1 samples…").arg(n)
                                           : tr("refined: %1×%1 samples").arg(n));
+    const char* const modeNames[] = {"off", "auto", "on"};
+    playbackAntialiasStatus_->setText(
+        shownFrame_.serial != 0 && playback_->isPlaying() && shownFrame_.view == ViewMode::Shaded
+            ? tr("playing: %1×%1 samples (%2)").arg(n).arg(tr(modeNames[int(playbackAntialias_.mode())]))
+            : QString());
 }
 
 void MainWindow::openDialog() {

@@ -10,10 +10,12 @@
 
 #include "animation_exporter.h"
 #include "core/render/image.h"
+#include "playback_antialias.h"
 #include "render_controller.h"
 #include "scene_locations.h"
 #include "selection.h"
 
+class QActionGroup;
 class QLabel;
 class QListWidget;
 class QListWidgetItem;
@@ -119,6 +121,12 @@ class MainWindow : public QMainWindow {
     bool isRefining() const;
     /// The last step of refinement: what `f2 render --aa 4` computes.
     static constexpr int kRefinedAntialias = 4;
+    /// View › Playback Anti-aliasing: the samples of frames rendered while playing (saved in the settings).
+    void setPlaybackAntialias(PlaybackAntialiasMode mode);
+    /// Its policy: the mode, the frame budget, the estimates (tests inject a cost model).
+    PlaybackAntialias& playbackAntialias() { return playbackAntialias_; }
+    /// The status bar's text about the samples of playing frames (empty while paused).
+    QString playbackAntialiasStatus() const;
     /// The export of `scene` into `sink` from the current view: the loop's
     /// frames when loop points are set, else frames 0..last, at the scene's
     /// /camera size. `destination` names the output in messages.
@@ -126,6 +134,9 @@ class MainWindow : public QMainWindow {
                         const QString& destination) const;
     /// The status bar's text about the selection.
     QString selectionStatus() const;
+    /// The window is on screen and so is a finished picture: the latest
+    /// request, at the picture area's render size, refined when paused.
+    bool isPictureComplete() const;
     /// The frame on screen (time, timings, size); serial 0 before the first.
     const FrameInfo& shownFrame() const { return shownFrame_; }
 
@@ -202,7 +213,10 @@ class MainWindow : public QMainWindow {
     QLabel* viewStatus_ = nullptr;  ///< the view mode of the picture on screen
     ViewModeMenu* viewModes_ = nullptr;
     bool refinement_ = true;
-    RenderRequest lastRequest_;  // the view the latest request showed, at 1 sample
+    QLabel* playbackAntialiasStatus_ = nullptr;
+    QActionGroup* playbackAntialiasActions_ = nullptr;
+    PlaybackAntialias playbackAntialias_;
+    RenderRequest lastRequest_;  // the view the latest request showed, at 1 sample (paused)
     QTimer frameTimer_;          // coalesces scheduleFrame() calls
     QTimer statusTimer_;         // lets the FPS readout fall to 0 when nothing renders
     FrameInfo shownFrame_;

@@ -32,6 +32,8 @@ class Playback : public QObject {
     int frame() const;
     bool isPlaying() const { return timer_.isActive(); }
     double speed() const { return speed_; }
+    /// Milliseconds between the clock's ticks while playing: one scene frame, at most 60 a second.
+    int tickIntervalMs() const { return timer_.interval(); }
     /// The loop in/out points, if set: playing loops over these frames (the
     /// out frame shown for one frame's duration, like every frame).
     std::optional<FrameRange> loopRange() const { return loop_; }

@@ -9,6 +9,7 @@
 
 #include "core/anim/camera_motion.h"
 #include "core/anim/track.h"
+#include "core/parse/expression.h"
 #include "core/parse/lexer.h"
 #include "core/scene/models.h"
 #include "lsp/command_docs.h"
@@ -103,13 +104,47 @@ std::string partHover(const Analysis& a, std::size_t index, int part) {
     return text;
 }
 
+/// The first argument after a `/let` or `/repeat` variable: a number, a word or a `( … )`.
+std::string_view valueText(std::string_view line, std::size_t nameEnd) {
+    std::size_t b = line.find_first_not_of(" \t", nameEnd);
+    if (b == std::string_view::npos) return {};
+    if (line[b] != '(') return line.substr(b, line.find_first_of(" \t#", b) - b);
+    int depth = 0;
+    for (std::size_t i = b; i < line.size(); ++i) {
+        if (line[i] == '(') ++depth;
+        if (line[i] == ')' && --depth == 0) return line.substr(b, i + 1 - b);
+    }
+    return {};
+}
+
+/// The value a definition gives when the `/let` and `/repeat` lines before it
+/// run in reading order, each loop at its first pass; nullopt when one fails.
+std::optional<double> definedValue(const Analysis& a, const VariableOccurrence& def) {
+    Variables values;
+    for (const VariableOccurrence& v : a.sources.variables) {
+        if (!v.definition) continue;
+        const std::string_view text =
+            valueText(a.sources.files[static_cast<std::size_t>(v.file)].document.line(v.line), v.end);
+        const ExpressionResult r =
+            text.starts_with('(') ? evaluateParenthesized(text, values) : evaluateExpression(text, values);
+        if (r.ok) values.set(v.name, r.value);
+        if (v.file == def.file && v.line == def.line && v.order == def.order) return values.find(def.name);
+    }
+    return std::nullopt;
+}
+
 std::string variableHover(const Analysis& a, const std::string& name, int line) {
     const auto def = definitionOf(a.sources.variables, name, a.sources.orderOf(a.self, line));
     if (!def) return "**variable** `" + name + "`: not defined in this scene";
     const SceneFile& file = a.sources.files[static_cast<std::size_t>(def->file)];
     const SourceLoc loc{file.path, def->line + 1, 1};
-    return "**" + std::string(def->loop ? "loop variable" : "variable") + "** `" + name + "`, defined at " +
-           placeText(a, loc) + ":\n```f2\n" + std::string(file.document.line(def->line)) + "\n```";
+    std::string text = "**" + std::string(def->loop ? "loop variable" : "variable") + "** `" + name + "`";
+    if (const auto value = definedValue(a, *def)) {
+        text +=
+            def->loop ? " = " + formatNumber(*value) + " on the first pass" : " = " + formatNumber(*value);
+    }
+    return text + ", defined at " + placeText(a, loc) + ":\n```f2\n" +
+           std::string(file.document.line(def->line)) + "\n```";
 }
 
 /// The first line of the scene's files whose command is `command` (and, if

@@ -291,7 +291,13 @@ TEST(Variables, DefinitionReferencesRenameHoverCompletion) {
     EXPECT_THROW(rename(a, {2, 13}, "n"), RequestError);
     EXPECT_EQ(prepareRename(a, {5, 6})["placeholder"], "n");
     const std::string text = hover(a, {2, 13})["contents"]["value"];
-    EXPECT_EQ(text, "**loop variable** `i`, defined at line 2:\n```f2\n/repeat i 1 (n)  # (ignored) \n```");
+    EXPECT_EQ(text,
+              "**loop variable** `i` = 1 on the first pass, defined at line 2:\n```f2\n/repeat i 1 (n)  # "
+              "(ignored) "
+              "\n```");
+    // The value where it is used: /let n (n + 1) after /let n 3.
+    EXPECT_EQ(hover(a, {5, 6})["contents"]["value"],
+              "**variable** `n` = 4, defined at line 5:\n```f2\n/let n (n + 1)\n```");
     // In an expression: the variables defined so far, pi and the functions.
     const Json items = completion(a, {2, 20});
     ASSERT_GE(items.size(), 3u);
@@ -424,7 +430,8 @@ TEST(Includes, VariablesAndObjectsFollowedBothWays) {
     EXPECT_EQ(definition(s, {2, 14}), location(mainUri, Range{{0, 5}, {0, 6}}));
     EXPECT_EQ(references(s, {2, 6}, false).size(), 3u);  // the uses in main.f2
     const std::string hoverW = hover(s, {2, 14})["contents"]["value"];
-    EXPECT_EQ(hoverW, "**variable** `w`, defined at line 1 of " + scene.main + ":\n```f2\n/let w 40\n```");
+    EXPECT_EQ(hoverW,
+              "**variable** `w` = 40, defined at line 1 of " + scene.main + ":\n```f2\n/let w 40\n```");
     // Alone, stage.f2 does not know w.
     const Analysis alone = analyze(stageUri, TextDocument(IncludedScene::kStage, 1));
     EXPECT_FALSE(alone.result.ok());

@@ -149,7 +149,7 @@ def included_session(f2):
         expect("included: hover on h", reply["result"], {
             "range": rng(2, 20, 21),
             "contents": {"kind": "markdown", "value":
-                         "**variable** `h`, defined at line 2 of %s:\n```f2\n/let h 25\n```" % stage_path}})
+                         "**variable** `h` = 25, defined at line 2 of %s:\n```f2\n/let h 25\n```" % stage_path}})
         reply = client.request("textDocument/completion", at(main_uri, 4, 16))
         expect("included: variables offered in an expression", [i["label"] for i in reply["result"][:3]],
                ["w", "h", "pi"])

@@ -39,6 +39,7 @@
 #include "main_window.h"
 #include "orbit_camera.h"
 #include "playback.h"
+#include "playback_antialias.h"
 #include "render_controller.h"
 #include "scene_document.h"
 #include "scene_editor.h"
@@ -67,6 +68,8 @@ class ViewerTest : public QObject {
     void helpMenuListsShortcutsAndReference();
     void clickSelectsWhatIsDrawn();
     void pausedPictureRefinesToAa4();
+    void playbackAntialiasFitsTheBudget();
+    void playingUsesTheChosenAntialias();
     void stepGoesFromTheFrameShown();
     void viewFollowsTheMovingCamera();
     void renderScaleFollowsWindow();
@@ -395,10 +398,19 @@ void ViewerTest::pausedPictureRefinesToAa4() {
     QVERIFY(fromQImage(w.viewport()->image()) == coreRender(*w.document()->scene(), 5, 96, 72, 4));
     QVERIFY(fromQImage(w.viewport()->image()) != coreRender(*w.document()->scene(), 5, 96, 72, 1));
 
-    // A change restarts it: one sample first, then 2x2, then 4x4, all of frame 6.
+    // The picture is complete (what --screenshot waits for): refined, at the window's size.
+    QVERIFY(w.isPictureComplete());
+
+    // A change restarts it: one sample first, then 2x2, then 4x4, all of frame 6;
+    // only the last is a complete picture.
     QSignalSpy frames(w.renderController(), &RenderController::frameReady);
+    QList<bool> complete;
+    connect(w.renderController(), &RenderController::frameReady, this,
+            [&] { complete << w.isPictureComplete(); });
     w.playback()->seek(6);
+    QVERIFY(!w.isPictureComplete());
     QVERIFY(waitForShownFrame(w, 6));
+    disconnect(w.renderController(), &RenderController::frameReady, this, nullptr);
     QList<int> steps;
     for (const auto& args : frames) {
         const auto info = args.at(1).value<FrameInfo>();
@@ -406,6 +418,7 @@ void ViewerTest::pausedPictureRefinesToAa4() {
         steps << info.antialias;
     }
     QCOMPARE(steps, (QList<int>{1, 2, 4}));
+    QCOMPARE(complete, (QList<bool>{false, false, true}));
     QVERIFY(fromQImage(w.viewport()->image()) == coreRender(*w.document()->scene(), 6, 96, 72, 4));
 
     // Playing shows one sample per frame; switched off, paused frames stay at one sample.
@@ -413,6 +426,98 @@ void ViewerTest::pausedPictureRefinesToAa4() {
     w.playback()->seek(7);
     QVERIFY(waitForShownFrame(w, 7));
     QCOMPARE(w.shownFrame().antialias, 1);
+}
+
+void ViewerTest::playbackAntialiasFitsTheBudget() {
+    // Scripted costs, no clock: a frame at N x N takes 2 ms + 3 ms per sample.
+    PlaybackAntialias aa;
+    aa.setCostModel([](int n) { return PlaybackAntialias::Cost{2, 3.0 * n * n}; });
+    aa.setBudgetMs(1000.0 / 24);  // may take 75 %: 31.3 ms; steps up to what fits in 80 % of that, 25 ms
+    QCOMPARE(aa.level(), 1);      // nothing measured yet
+    aa.observe(1, {});
+    QCOMPARE(aa.level(), 2);  // 2x2: 14 ms fits; 3x3: 29 ms would fit but not with the margin
+    aa.observe(2, {});
+    QCOMPARE(aa.level(), 2);
+    aa.setBudgetMs(1000.0 / 60);  // 12.5 ms allowed: 2x2 (14 ms) no longer fits
+    aa.observe(2, {});
+    QCOMPARE(aa.level(), 1);
+    aa.setMode(PlaybackAntialiasMode::On);
+    QCOMPARE(aa.level(), PlaybackAntialias::kOnLevel);
+    aa.setMode(PlaybackAntialiasMode::Off);
+    QCOMPARE(aa.level(), 1);
+
+    // A cheaper scene: the estimates follow over a few frames (smoothed), up to
+    // the refined picture's 4x4, not beyond.
+    aa.setMode(PlaybackAntialiasMode::Auto);
+    aa.setCostModel([](int n) { return PlaybackAntialias::Cost{0.5, 0.25 * n * n}; });
+    aa.observe(1, {});
+    QCOMPARE(aa.level(), 1);  // 2x2 predicted at 10.25 ms: more than 80 % of 12.5 ms
+    for (int frame = 0; frame < 10; ++frame) aa.observe(aa.level(), {});
+    QCOMPARE(aa.level(), PlaybackAntialias::kMaxAutoLevel);
+
+    // Without a model the frame's own timings are the measurement: evaluate + build
+    // is the fixed part, the trace is per sample (12 ms at 2x2 = 3 ms a sample).
+    PlaybackAntialias measured;
+    measured.setBudgetMs(1000.0 / 24);
+    FrameTimings timings;
+    timings.evaluateMs = 1;
+    timings.buildMs = 1;
+    timings.traceMs = 12;
+    measured.observe(2, timings);
+    QCOMPARE(measured.level(), 2);
+    // One slow frame (a hiccup) is smoothed, not followed: 30 % of the way.
+    timings.traceMs = 40;
+    measured.observe(2, timings);
+    QCOMPARE(measured.level(), 2);  // estimate 5.1 ms a sample: 2x2 = 22 ms still fits
+    measured.reset();
+    QCOMPARE(measured.level(), 1);
+}
+
+void ViewerTest::playingUsesTheChosenAntialias() {
+    QTemporaryDir dir;
+    auto window = windowOn(smallSceneFile(dir), 0);
+    QVERIFY(window);
+    MainWindow& w = *window;
+    QCOMPARE(w.playbackAntialias().budgetMs(), double(1000 / 24));  // the clock's tick at /fps 24
+    // From here on, every frame's cost is the model's (the estimates so far came from real timings).
+    w.playbackAntialias().setCostModel([](int n) { return PlaybackAntialias::Cost{2, 3.0 * n * n}; });
+    w.playbackAntialias().reset();
+    QVERIFY(w.playbackAntialiasStatus().isEmpty());  // paused: the refinement's status speaks
+
+    // Frames asked for before a change may still arrive after it: a few frames later the
+    // picture on screen is one the new choice made.
+    quint64 since = 0;
+    auto playingAt = [&w, &since](int n) {
+        return w.playback()->isPlaying() && w.renderController()->framesDelivered() >= since + 3 &&
+               w.shownFrame().antialias == n;
+    };
+    auto change = [&w, &since](PlaybackAntialiasMode mode) {
+        since = w.renderController()->framesDelivered();
+        w.setPlaybackAntialias(mode);
+    };
+    change(PlaybackAntialiasMode::Auto);
+    w.playback()->play();
+    QTRY_VERIFY_WITH_TIMEOUT(playingAt(2), kWaitMs);
+    QTRY_COMPARE_WITH_TIMEOUT(w.playbackAntialiasStatus(), QString("playing: 2×2 samples (auto)"), kWaitMs);
+    expectViewportMatchesCore(w, w.shownFrame().time);  // what `f2 render --aa 2` gives
+
+    change(PlaybackAntialiasMode::Off);
+    QTRY_VERIFY_WITH_TIMEOUT(playingAt(1), kWaitMs);
+    QTRY_COMPARE_WITH_TIMEOUT(w.playbackAntialiasStatus(), QString("playing: 1×1 samples (off)"), kWaitMs);
+
+    // A cost that 2x2 does not fit: Auto plays with one sample.
+    w.playbackAntialias().setCostModel([](int n) { return PlaybackAntialias::Cost{10, 10.0 * n * n}; });
+    change(PlaybackAntialiasMode::Auto);
+    QTRY_VERIFY_WITH_TIMEOUT(playingAt(1), kWaitMs);
+    QCOMPARE(w.playbackAntialias().level(), 1);
+    QCOMPARE(w.playbackAntialiasStatus(), QString("playing: 1×1 samples (auto)"));
+    change(PlaybackAntialiasMode::On);
+    QTRY_VERIFY_WITH_TIMEOUT(playingAt(2), kWaitMs);
+
+    w.playback()->pause();
+    QVERIFY(waitForShownFrame(w, w.playback()->time()));
+    QVERIFY(w.playbackAntialiasStatus().isEmpty());
+    w.setPlaybackAntialias(PlaybackAntialiasMode::Auto);  // the settings are shared with other tests
 }
 
 void ViewerTest::stepGoesFromTheFrameShown() {

@@ -83,6 +83,10 @@ class Bvh {
     /// entryNodes() for the parallel rays that leave any point of `origins`
     /// along `direction`: the shadow rays of one tile toward one light.
     std::size_t beamEntryNodes(const Bounds& origins, Vec3 direction, std::span<std::uint32_t> out) const;
+    /// The same for rays along any of `directions` (the samples of a soft
+    /// sun): a node is left out only when no direction reaches it.
+    std::size_t beamEntryNodes(const Bounds& origins, std::span<const Vec3> directions,
+                               std::span<std::uint32_t> out) const;
 
     /// The tree, for the packet traversal (bvh_packet.h) and tests.
     std::span<const Node> nodes() const { return nodes_; }

@@ -47,7 +47,7 @@ struct ParseLimits {
     std::size_t maxObjects = 1'000'000;  ///< a robot or human counts as one
     int maxKeyFrame = kMaxKeyFrame;
     std::size_t maxKeyLines = 10'000'000;
-    std::size_t maxLights = 1000;  ///< ambient and directional together
+    std::size_t maxLights = 1000;  ///< light commands of every kind together
     int maxFps = 1000;
     std::size_t maxLineBytes = std::size_t{1} << 20;     ///< 1 MiB
     std::size_t maxSceneBytes = std::size_t{256} << 20;  ///< 256 MiB, all included files together

@@ -9,7 +9,7 @@ namespace f2 {
 
 RayProbe probeRay(const FrameScene& frame, const Ray& ray, bool lights) {
     RayProbe probe;
-    probe.lights = int(frame.lights.size());
+    probe.lights = int(frame.lights.size() + frame.localLights.size());
     HitRecord hit;
     if (!frame.bvh.intersect(ray, primaryRayStart(ray.origin), kInfinity, hit, probe.cost)) return probe;
     probe.hit = true;
@@ -21,9 +21,9 @@ RayProbe probeRay(const FrameScene& frame, const Ray& ray, bool lights) {
     shadeHit(
         frame, ray, hit,
         [&](const LightTerm& term) {
-            if (term.nDotL <= 0) return;
-            ++probe.shadowRays;
-            ++(term.shadowed ? probe.blocked : probe.lit);
+            if (term.rays == 0) return;  // faces away, or outside a spot's cone
+            probe.shadowRays += term.rays;
+            ++(term.shadowed ? probe.blocked : probe.lit);  // a soft light partly seen counts as lit
         },
         probe.cost);
     return probe;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/math/vec3.h"
+#include "core/scene/light_desc.h"
 
 namespace f2 {
 
@@ -131,12 +132,14 @@ struct CameraDesc {
 struct DirectionalLight {
     float intensity = 0;
     Vec3 direction;  ///< the direction the light travels, as written
+    SoftShadow sun;  ///< `angle`: the sun's angular radius (degrees) and samples per side
 };
 
 struct SceneDesc {
     CameraDesc camera;
     float ambient = 0;  ///< sum of all /amb_light
     std::vector<DirectionalLight> lights;
+    std::vector<LocalLight> localLights;  ///< `/point_light` and `/spot_light`, in file order
     Color8 background{0, 0, 0};
     int fps = 24;
     std::vector<SceneObject> objects;
