@@ -215,8 +215,8 @@ void printBench(std::ostream& out, const BenchResult& r) {
         << "  CPU time    median " << fixed(r.cpuMsMedian, 3) << " ms per frame, all threads (max "
         << fixed(r.cpuMsMax, 3) << ")\n"
         << "  rays        " << r.rays.primary << " primary + " << r.rays.shadow << " shadow + "
-        << r.rays.reflected << " mirrored per frame: " << fixed(r.mraysPerSecond(), 1) << " Mrays/s over the frame, "
-        << fixed(r.mraysPerSecondTrace(), 1) << " over trace\n"
+        << r.rays.reflected << " mirrored per frame: " << fixed(r.mraysPerSecond(), 1)
+        << " Mrays/s over the frame, " << fixed(r.mraysPerSecondTrace(), 1) << " over trace\n"
         << "  peak RSS    " << fixed(r.peakRssMb, 1) << " MB\n";
 }
 
