@@ -115,7 +115,8 @@ median() { sort -g | awk '{ v[NR] = $1 } END { if (NR == 0) print "n/a"; else if
 # scene_file SCENE: the scene as a file export can read ("" = the default scene)
 scene_file() {
   case $1 in
-    default) echo "" ;;
+    # The peers draw first-edition shading (no checker, no mirrors): the first edition's default scene.
+    default) echo "$ROOT/tests/cli/data/demo_first_edition.f2" ;;
     robots:*|spheres:*)
       local file="$WORK/${1/:/_}.f2"
       "$F2" bench --scene "$1" --size "$SIZE" --write-scene "$file" 2>/dev/null
@@ -127,7 +128,8 @@ scene_file() {
 # f2_bench SCENE: JSON of f2 bench on it
 f2_bench() {
   case $1 in
-    default) "$F2" bench --frame "$FRAME" --size "$SIZE" --threads "$THREADS" --seconds "$SECONDS_PER_RUN" --json ;;
+    default) "$F2" bench "$(scene_file default)" --frame "$FRAME" --size "$SIZE" --threads "$THREADS" \
+               --seconds "$SECONDS_PER_RUN" --json ;;
     robots:*|spheres:*) "$F2" bench --scene "$1" --frame "$FRAME" --size "$SIZE" --threads "$THREADS" \
                           --seconds "$SECONDS_PER_RUN" --json ;;
     *) "$F2" bench "$1" --frame "$FRAME" --size "$SIZE" --threads "$THREADS" --seconds "$SECONDS_PER_RUN" --json ;;

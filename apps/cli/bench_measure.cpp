@@ -193,7 +193,8 @@ std::string benchJson(const BenchResult& r) {
       << ", \"ms_eval\": " << fixed(r.msEval, 4) << ", \"ms_build\": " << fixed(r.msBuild, 4)
       << ", \"ms_trace\": " << fixed(r.msTrace, 4) << ", \"cpu_ms\": " << fixed(r.cpuMsMedian, 4)
       << ", \"cpu_ms_max\": " << fixed(r.cpuMsMax, 4) << ", \"primary_rays\": " << r.rays.primary
-      << ", \"shadow_rays\": " << r.rays.shadow << ", \"mrays_per_s\": " << fixed(r.mraysPerSecond(), 3)
+      << ", \"shadow_rays\": " << r.rays.shadow << ", \"reflected_rays\": " << r.rays.reflected
+      << ", \"mrays_per_s\": " << fixed(r.mraysPerSecond(), 3)
       << ", \"mrays_per_s_trace\": " << fixed(r.mraysPerSecondTrace(), 3)
       << ", \"peak_rss_mb\": " << fixed(r.peakRssMb, 2) << "}";
     return j.str();
@@ -213,9 +214,9 @@ void printBench(std::ostream& out, const BenchResult& r) {
         << " ms, trace " << fixed(r.msTrace, 3) << " ms  (medians)\n"
         << "  CPU time    median " << fixed(r.cpuMsMedian, 3) << " ms per frame, all threads (max "
         << fixed(r.cpuMsMax, 3) << ")\n"
-        << "  rays        " << r.rays.primary << " primary + " << r.rays.shadow
-        << " shadow per frame: " << fixed(r.mraysPerSecond(), 1) << " Mrays/s over the frame, "
-        << fixed(r.mraysPerSecondTrace(), 1) << " over trace\n"
+        << "  rays        " << r.rays.primary << " primary + " << r.rays.shadow << " shadow + "
+        << r.rays.reflected << " mirrored per frame: " << fixed(r.mraysPerSecond(), 1)
+        << " Mrays/s over the frame, " << fixed(r.mraysPerSecondTrace(), 1) << " over trace\n"
         << "  peak RSS    " << fixed(r.peakRssMb, 1) << " MB\n";
 }
 

@@ -7,6 +7,7 @@
 
 #include "core/render/diagnostic_view.h"
 #include "core/render/pixel_report.h"
+#include "core/render/reflection.h"
 #include "core/render/renderer.h"
 
 namespace f2::cli {
@@ -113,6 +114,9 @@ int printPixelStory(const LoadedScene& loaded, const Camera& camera, double t, i
                     << ", diffuse " << l.term.diffuse << ", specular " << l.term.specular << "\n";
         }
     }
+    if (r.hit && r.material.reflection > 0)
+        out << "mirror   own colour " << str(r.ownColor) << " + reflection " << r.material.reflection
+            << " x what the mirrored ray sees, to trace level " << kMaxTraceLevel << "\n";
     out << "colour   " << str(r.color) << " -> pixel " << int(r.pixel.r) << " " << int(r.pixel.g) << " "
         << int(r.pixel.b) << "\n";
     const Rgb8 rendered = image.at(x, y);

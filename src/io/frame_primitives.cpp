@@ -27,7 +27,7 @@ std::vector<PlacedPrimitive> framePrimitives(const SceneDesc& scene, double t) {
         if (!isModel(object.kind)) {
             const Appearance& look = object.appearance[0];
             out.push_back({object.name, shapeKindOf(object.kind), object.size, worldFromObject, look.color,
-                           look.material});
+                           look.material, look.checker});
             continue;
         }
         auto worldFromPart = modelPartFrames(object, worldFromObject, t);
@@ -36,7 +36,8 @@ std::vector<PlacedPrimitive> framePrimitives(const SceneDesc& scene, double t) {
             Transform partFromShape{Mat3{}, shape.centre};
             out.push_back({shapeLabel(object, shape), shape.kind, shape.size,
                            worldFromPart[int(shape.part)] * partFromShape,
-                           shape.ownColor ? shape.color : look.color, look.material});
+                           shape.ownColor ? shape.color : look.color, look.material,
+                           shape.ownColor ? Checker{} : look.checker});
         }
     }
     return out;

@@ -18,6 +18,7 @@ struct PlacedPrimitive {
     Transform worldFromLocal;  ///< canonical frame: centred, cylinder axis local y
     Color8 color;
     Material material;
+    Checker checker;  ///< size 0: plain `color`
 };
 
 /// Every primitive at time `t` (frames): objects as created, a robot as body,

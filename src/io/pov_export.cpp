@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/anim/light_frame.h"
+#include "core/render/reflection.h"
 #include "io/frame_primitives.h"
 
 namespace f2 {
@@ -70,6 +71,14 @@ std::string areaLight(Vec3 axisA, Vec3 axisB, int n, bool orient) {
                  orient ? " orient" : "", " adaptive 10"});
 }
 
+/// The colour, or the checker pattern in the primitive's own frame: written
+/// before the `matrix`, the pigment moves with the shape, as f2's does.
+std::string pigment(const PlacedPrimitive& p) {
+    if (!(p.checker.size > 0)) return join({"pigment { rgb ", color(p.color), " }"});
+    return join({"pigment { checker rgb ", color(p.color), ", rgb ", color(p.checker.color), " scale ",
+                 formatNumber(p.checker.size), " }"});
+}
+
 /// Radius of a sphere around the primitive's centre that holds it.
 float boundingRadius(const PlacedPrimitive& p) {
     switch (p.kind) {
@@ -96,7 +105,10 @@ std::string povScene(const SceneDesc& scene, double t, const Camera& camera, con
         // srgb working gamma = POV-Ray's default sRGB output gamma: colours go out
         // as computed, like f2's (it shades in display values, no gamma step).
         // Ambient light 1: each finish carries ka * (the scene's ambient).
-        << "global_settings { assumed_gamma srgb ambient_light rgb <1, 1, 1> max_trace_level 1 }\n\n"
+        // Mirrors: f2's trace levels (reflection.h), and no adaptive depth
+        // control, which f2 does not have (it would cut faint reflections).
+        << "global_settings { assumed_gamma srgb ambient_light rgb <1, 1, 1> max_trace_level "
+        << kMaxTraceLevel << " adc_bailout 0 }\n\n"
         << "background { rgb " << color(scene.background) << " }\n\n";
 
     // SPEC 2: the ray of image point (x, y) in [-1/2, 1/2] x [-h/2w, h/2w] is
@@ -153,11 +165,11 @@ std::string povScene(const SceneDesc& scene, double t, const Camera& camera, con
     for (const PlacedPrimitive& p : prims) {
         const Material& m = p.material;
         out << "// " << p.label << "\n"
-            << shape(p) << "\n  " << matrix(p.worldFromLocal) << "\n  pigment { rgb " << color(p.color)
-            << " }\n"
+            << shape(p) << "\n  " << pigment(p) << "\n  " << matrix(p.worldFromLocal) << "\n"
             << "  finish { ambient " << formatNumber(m.ka * scene.ambient) << " diffuse "
-            << formatNumber(m.kd) << " phong " << formatNumber(m.ks) << " phong_size " << formatNumber(m.n)
-            << " }\n}\n";
+            << formatNumber(m.kd) << " phong " << formatNumber(m.ks) << " phong_size " << formatNumber(m.n);
+        if (m.reflection > 0) out << " reflection " << formatNumber(m.reflection);
+        out << " }\n}\n";
     }
     return out.str();
 }

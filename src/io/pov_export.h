@@ -4,9 +4,11 @@
 ///
 /// Exact: the camera (SPEC 2, as right/up/direction vectors; POV-Ray is
 /// left-handed too), every primitive's transform (`matrix`), colours, the
-/// background; colour arithmetic in display space (`assumed_gamma srgb`,
-/// which with POV-Ray's default sRGB file gamma means no gamma conversion),
-/// as f2 shades. Approximate: POV-Ray's Phong and shadow details.
+/// background; checker patterns (`pigment { checker }` in the shape's frame)
+/// and mirrors (`reflection`, f2's trace levels, no adaptive depth control);
+/// colour arithmetic in display space (`assumed_gamma srgb`, which with
+/// POV-Ray's default sRGB file gamma means no gamma conversion), as f2
+/// shades. Approximate: POV-Ray's Phong and shadow details.
 #include <string>
 
 #include "core/render/camera.h"

@@ -53,10 +53,11 @@ constexpr std::array kDocs = {
     CommandDoc{"/background", "/background <r> <g> <b>", "/background ${1:0} ${2:0} ${3:0}",
                "Colour of rays that hit nothing, integers 0..255 (default black). At most one per scene.",
                kNumbers},
-    CommandDoc{"/material", "/material <target> <ka> <kd> <ks> <n>",
+    CommandDoc{"/material", "/material <target> <ka> <kd> <ks> <n> [<reflection>]",
                "/material ${1:target} ${2:1} ${3:1} ${4:0.3} ${5:32}",
-               "Phong coefficients of an object or part (default `1 1 0.3 32`): `ka, kd, ks ≥ 0`, `n > 0`. "
-               "On a robot or human it applies to every part.",
+               "Phong coefficients of an object or part (default `1 1 0.3 32`): `ka, kd, ks ≥ 0`, `n > 0`; "
+               "an optional mirror `reflection ≥ 0` (default 0) adds that share of what the surface "
+               "reflects, as POV-Ray's `reflection`. On a robot or human it applies to every part.",
                kTargetThenNumbers},
     CommandDoc{"/sphere", "/sphere <name> <r> <px> <py> <pz> [<rx> <ry> <rz>]",
                "/sphere ${1:name} ${2:r} ${3:0} ${4:0} ${5:0}", "A sphere of radius `r > 0` centred at `p`.",
@@ -71,6 +72,12 @@ constexpr std::array kDocs = {
     CommandDoc{"/paint", "/paint <target> <r> <g> <b>", "/paint ${1:target} ${2:200} ${3:200} ${4:200}",
                "Colour of an object, a whole model or one part (`name.head`), integers 0..255. Applied in "
                "file order.",
+               kTargetThenNumbers},
+    CommandDoc{"/checker", "/checker <target> <r> <g> <b> <size>",
+               "/checker ${1:target} ${2:40} ${3:40} ${4:40} ${5:100}",
+               "A checker pattern: cells of side `size > 0` in the primitive's own frame alternate between "
+               "the `/paint` colour and this second colour (0..255), as POV-Ray's `checker`. Same targets "
+               "and file order as `/paint`.",
                kTargetThenNumbers},
     CommandDoc{"/robot", "/robot <name> <px> <py> <pz> [<rx> <ry> <rz>]",
                "/robot ${1:name} ${2:0} ${3:0} ${4:0} ${5:0} ${6:180} ${7:0}",

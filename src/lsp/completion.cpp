@@ -197,7 +197,8 @@ Json completion(const Analysis& a, Position p) {
                                      replace, o->object.name));
             }
             if (language.cameraTarget && std::string_view("camera").starts_with(typing->partial) &&
-                doc->name != "/paint" && doc->name != "/material" && doc->name != "/look_at") {
+                doc->name != "/paint" && doc->name != "/material" && doc->name != "/checker" &&
+                doc->name != "/look_at") {
                 items.push_back(item("camera", kCompletionKeyword, "the scene camera", replace, "camera"));
             }
             break;

@@ -622,7 +622,7 @@ TEST(ParserError, WrongArgumentCountPointsAtTheCommand) {
     expectError("/background 1 2\n", 1, 1, "'/background' takes 3 arguments, got 2");
     expectError("/fps 1 2\n", 1, 1, "'/fps' takes 1 argument, got 2");
     expectError("/sphere s 1 0 0 0\n/paint s 1 2\n", 2, 1, "'/paint' takes 4 arguments, got 3");
-    expectError("/sphere s 1 0 0 0\n/material s 1 1 1\n", 2, 1, "'/material' takes 5 arguments, got 4");
+    expectError("/sphere s 1 0 0 0\n/material s 1 1 1\n", 2, 1, "'/material' takes 5 or 6 arguments, got 4");
     expectError("/anim\n", 1, 1, "'/anim' takes 1 or 2 arguments, got 0");
     expectError("/interp s\n", 1, 1, "'/interp' takes 2 arguments, got 1");
     // Many tokens are counted even beyond the ones the lexer keeps.

@@ -16,6 +16,8 @@ namespace f2 {
 struct Surface {
     Vec3 color;  ///< 0..1
     Material material;
+    Vec3 checkerColor;         ///< 0..1, the second colour of `/checker`
+    float checkerSize = 0.0f;  ///< the cells' side in the primitive's frame; 0: plain `color`
 };
 
 /// A directional light at this frame.

@@ -11,6 +11,10 @@ namespace f2 {
 namespace {
 Vec3 toUnitColor(Color8 c) { return Vec3{float(c.r), float(c.g), float(c.b)} / 255.0f; }
 
+Surface surfaceOf(const Appearance& look) {
+    return {toUnitColor(look.color), look.material, toUnitColor(look.checker.color), look.checker.size};
+}
+
 }  // namespace
 
 Transform objectFrame(const SceneObject& object, double t) {
@@ -81,8 +85,7 @@ void evaluateObject(const SceneObject& object, const Transform& worldFromObject,
                     Surface* surfaces) {
     if (!isModel(object.kind)) {
         *prims = makePrimitive(shapeKindOf(object.kind), object.size, worldFromObject);
-        const Appearance& look = object.appearance[0];
-        *surfaces = {toUnitColor(look.color), look.material};
+        *surfaces = surfaceOf(object.appearance[0]);
         return;
     }
     auto worldFromPart = modelPartFrames(object, worldFromObject, t);
@@ -90,7 +93,9 @@ void evaluateObject(const SceneObject& object, const Transform& worldFromObject,
         const Transform& partFrame = worldFromPart[int(shape.part)];
         *prims++ = makePrimitive(shape.kind, shape.size, partFrame.translated(shape.centre));
         const Appearance& look = object.appearance[int(shape.part)];
-        *surfaces++ = {toUnitColor(shape.ownColor ? shape.color : look.color), look.material};
+        // The eyes keep their own plain colour, painted or chequered head alike.
+        *surfaces++ =
+            shape.ownColor ? Surface{toUnitColor(shape.color), look.material, Vec3{}, 0.0f} : surfaceOf(look);
     }
 }
 

@@ -451,13 +451,13 @@ void Bvh::placeSubtree(const Subtree& subtree, const std::vector<Node>& local) {
     }
 }
 
-bool Bvh::intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit) const {
+bool Bvh::intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit, std::uint32_t skip) const {
     NoTraversalCount none;
-    return intersectCounted(ray, tMin, tMax, hit, none);
+    return intersectCounted(ray, tMin, tMax, hit, skip, none);
 }
 
 bool Bvh::intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit, TraversalCount& count) const {
-    return intersectCounted(ray, tMin, tMax, hit, count);
+    return intersectCounted(ray, tMin, tMax, hit, kNoPrimitive, count);
 }
 
 bool Bvh::occluded(const Ray& ray, float tMin, float tMax, std::uint32_t skip) const {
@@ -470,7 +470,8 @@ bool Bvh::occluded(const Ray& ray, float tMin, float tMax, std::uint32_t skip, T
 }
 
 template <class Count>
-bool Bvh::intersectCounted(const Ray& ray, float tMin, float tMax, HitRecord& hit, Count& count) const {
+bool Bvh::intersectCounted(const Ray& ray, float tMin, float tMax, HitRecord& hit, std::uint32_t skip,
+                           Count& count) const {
     if (nodes_.empty()) return false;
     Vec3 invDir = inverseDirection(ray.direction);
     std::uint32_t stack[kStackSize];
@@ -490,7 +491,7 @@ bool Bvh::intersectCounted(const Ray& ray, float tMin, float tMax, HitRecord& hi
                 float t;
                 Face face;
                 count.primitive();
-                if (intersectPrimitive(ordered_[i], ray, tMin, bound, t, face) &&
+                if (original_[i] != skip && intersectPrimitive(ordered_[i], ray, tMin, bound, t, face) &&
                     (!found || t < tMax || original_[i] < hit.primitive)) {
                     tMax = t;
                     bound = nextUp(t);

@@ -53,9 +53,12 @@ class Bvh {
     /// Nodes reachable from the root (nodes().size() also counts slots freed by subtree rebuilds).
     std::size_t liveNodeCount() const;
 
-    /// Closest hit within (tMin, tMax); of hits at the same distance, the
-    /// primitive first in the frame (lowest index), whatever the tree's shape.
-    bool intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit) const;
+    static constexpr std::uint32_t kNoPrimitive = 0xFFFFFFFFu;
+    /// Closest hit within (tMin, tMax) on a primitive other than `skip` (mirrored
+    /// rays skip the convex primitive they leave); of hits at the same distance,
+    /// the primitive first in the frame (lowest index), whatever the tree's shape.
+    bool intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit,
+                   std::uint32_t skip = kNoPrimitive) const;
     /// The same traversal, adding the boxes and primitives it tests to `count`.
     bool intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit, TraversalCount& count) const;
     bool intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit, NoTraversalCount&) const {
@@ -64,7 +67,6 @@ class Bvh {
     /// Any hit within (tMin, tMax) on a primitive other than `skip`: shadow rays
     /// stop at the first occluder. A convex primitive cannot shadow its own lit
     /// side, so shadow rays skip the primitive they start on.
-    static constexpr std::uint32_t kNoPrimitive = 0xFFFFFFFFu;
     bool occluded(const Ray& ray, float tMin, float tMax, std::uint32_t skip = kNoPrimitive) const;
     /// The same traversal, adding the boxes and primitives it tests to `count`.
     bool occluded(const Ray& ray, float tMin, float tMax, std::uint32_t skip, TraversalCount& count) const;
@@ -95,7 +97,8 @@ class Bvh {
    private:
     /// The single-ray traversals, over a counting policy (traversal_count.h).
     template <class Count>
-    bool intersectCounted(const Ray& ray, float tMin, float tMax, HitRecord& hit, Count& count) const;
+    bool intersectCounted(const Ray& ray, float tMin, float tMax, HitRecord& hit, std::uint32_t skip,
+                          Count& count) const;
     template <class Count>
     bool occludedCounted(const Ray& ray, float tMin, float tMax, std::uint32_t skip, Count& count) const;
 

@@ -66,8 +66,12 @@ void intersectPacket(const Bvh& bvh, const EyeRays& rays, Mask active, Float tMi
     intersectPacket(bvh, rays, active, tMin, hit, {&root, 1});
 }
 
-void intersectPacket(const Bvh& bvh, const EyeRays& rays, Mask active, Float tMin, PacketHit& hit,
-                     std::span<const std::uint32_t> roots) {
+namespace {
+/// The nearest-hit traversal of intersectPacket(); with `kSkips`, a lane does
+/// not test its `skip` primitive (leaf order).
+template <bool kSkips, class Origin, class Direction>
+void nearestHits(const Bvh& bvh, const Rays<Origin, Direction>& rays, Mask active, Float tMin, PacketHit& hit,
+                 std::span<const std::uint32_t> roots, Int skip) {
     const std::span<const Bvh::Node> nodes = bvh.nodes();
     const std::span<const Primitive> ordered = bvh.orderedPrimitives();
     const std::span<const std::uint32_t> original = bvh.originalIndices();
@@ -90,11 +94,16 @@ void intersectPacket(const Bvh& bvh, const EyeRays& rays, Mask active, Float tMi
                 continue;
             }
             for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
+                Mask test = lanes;
+                if constexpr (kSkips) {
+                    test = simd::andNot(lanes, skip == Int(std::int32_t(i)));
+                    if (simd::none(test)) continue;
+                }
                 // As in Bvh::intersect(const Ray&): a hit at exactly a lane's
                 // distance takes it when its frame index is lower.
                 Float t = hit.t;
                 Int face = hit.face;
-                Mask found = intersectPrimitiveP(ordered[i], rays, lanes, tMin, bound, t, face);
+                Mask found = intersectPrimitiveP(ordered[i], rays, test, tMin, bound, t, face);
                 if (simd::none(found)) continue;
                 Int frameIndex(static_cast<std::int32_t>(original[i]));
                 Mask take = found & ((t < hit.t) | (frameIndex < hit.frameIndex));
@@ -108,6 +117,18 @@ void intersectPacket(const Bvh& bvh, const EyeRays& rays, Mask active, Float tMi
         if (top == 0) return;
         current = stack[--top];
     }
+}
+}  // namespace
+
+void intersectPacket(const Bvh& bvh, const EyeRays& rays, Mask active, Float tMin, PacketHit& hit,
+                     std::span<const std::uint32_t> roots) {
+    nearestHits<false>(bvh, rays, active, tMin, hit, roots, Int(-1));
+}
+
+void intersectPacket(const Bvh& bvh, const FreeRays& rays, Mask active, Float tMin, PacketHit& hit,
+                     Int skip) {
+    const std::uint32_t root = 0;
+    nearestHits<true>(bvh, rays, active, tMin, hit, {&root, 1}, skip);
 }
 
 Mask occludedPacket(const Bvh& bvh, const ParallelRays& rays, Mask active, Float tMin, Float tMax, Int skip) {

@@ -20,6 +20,10 @@ void intersectPacket(const Bvh& bvh, const EyeRays& rays, Mask active, Float tMi
 void intersectPacket(const Bvh& bvh, const EyeRays& rays, Mask active, Float tMin, PacketHit& hit,
                      std::span<const std::uint32_t> roots);
 
+/// Nearest hits, as above, of rays that share nothing (mirrored rays), from the
+/// root, on primitives other than each lane's `skip` (leaf order).
+void intersectPacket(const Bvh& bvh, const FreeRays& rays, Mask active, Float tMin, PacketHit& hit, Int skip);
+
 /// Lanes of `active` that hit something within (tMin, tMax) other than their
 /// `skip` primitive (leaf order).
 Mask occludedPacket(const Bvh& bvh, const ParallelRays& rays, Mask active, Float tMin, Float tMax, Int skip);

@@ -46,6 +46,7 @@ enum class Command {
     Fps,
     LookAt,
     Attach,
+    Checker,
 };
 
 struct CommandName {
@@ -53,7 +54,7 @@ struct CommandName {
     Command command;
 };
 
-constexpr std::array<CommandName, 19> kCommands = {{
+constexpr std::array<CommandName, 20> kCommands = {{
     {"/camera", Command::Camera},
     {"/amb_light", Command::AmbLight},
     {"/dir_light", Command::DirLight},
@@ -73,6 +74,7 @@ constexpr std::array<CommandName, 19> kCommands = {{
     {"/fps", Command::Fps},
     {"/look_at", Command::LookAt},
     {"/attach", Command::Attach},
+    {"/checker", Command::Checker},
 }};
 
 /// The name of the scene camera as a target (SPEC 9.1); no object may take it.
@@ -388,6 +390,8 @@ class Parser : private ExpansionSink {
                 return parseLookAt();
             case Command::Attach:
                 return parseAttach();
+            case Command::Checker:
+                return parseChecker();
         }
     }
 
@@ -936,24 +940,31 @@ class Parser : private ExpansionSink {
         }
     }
 
+    /// The appearances a `/paint`-like command on `t` sets (SPEC 3): one part's,
+    /// every part's of a model (the eyes follow the head), or a primitive's.
+    template <class Set>
+    void setAppearance(const Target& t, Set&& set) {
+        SceneObject& o = scene_.objects[t.object];
+        if (t.part >= 0) {
+            set(o.appearance[static_cast<std::size_t>(t.part)]);
+        } else if (isModel(o.kind)) {
+            for (Appearance& a : o.appearance) set(a);
+        } else {
+            set(o.appearance[0]);
+        }
+    }
+
     void parsePaint() {
         if (!expectArgs({4})) return;
         bool ok = true;
         const std::optional<Target> t = target(0);
         const Color8 c = color(1, ok);
         if (!t || !ok) return;
-        SceneObject& o = scene_.objects[t->object];
-        if (t->part >= 0) {
-            o.appearance[static_cast<std::size_t>(t->part)].color = c;
-        } else if (isModel(o.kind)) {
-            for (Appearance& a : o.appearance) a.color = c;
-        } else {
-            o.appearance[0].color = c;
-        }
+        setAppearance(*t, [&](Appearance& a) { a.color = c; });
     }
 
     void parseMaterial() {
-        if (!expectArgs({5})) return;
+        if (!expectArgs({5, 6})) return;
         bool ok = true;
         const std::optional<Target> t = target(0);
         Material m;
@@ -961,15 +972,22 @@ class Parser : private ExpansionSink {
         m.kd = nonNegative(2, "kd", ok);
         m.ks = nonNegative(3, "ks", ok);
         m.n = positive(4, "n", ok);
+        if (argCount() == 6) m.reflection = nonNegative(5, "reflection", ok);
         if (!t || !ok) return;
-        SceneObject& o = scene_.objects[t->object];
-        if (t->part >= 0) {
-            o.appearance[static_cast<std::size_t>(t->part)].material = m;
-        } else if (isModel(o.kind)) {
-            for (Appearance& a : o.appearance) a.material = m;  // the eyes use the head's
-        } else {
-            o.appearance[0].material = m;
-        }
+        setAppearance(*t, [&](Appearance& a) { a.material = m; });
+    }
+
+    /// `/checker <target> <r> <g> <b> <size>`: the second colour and cell size
+    /// of a checker pattern (docs/rendering.md).
+    void parseChecker() {
+        if (!expectArgs({5})) return;
+        bool ok = true;
+        const std::optional<Target> t = target(0);
+        Checker checker;
+        checker.color = color(1, ok);
+        checker.size = positive(4, "cell size", ok);
+        if (!t || !ok) return;
+        setAppearance(*t, [&](Appearance& a) { a.checker = checker; });
     }
 
     void parseAnim() {

@@ -5,6 +5,7 @@
 /// (SIMD types).
 #include "core/geometry/bvh_packet.h"
 #include "core/render/frame_scene.h"
+#include "core/render/packet_checker.h"
 #include "core/render/packet_light_sampling.h"
 #include "core/render/ray_counts.h"
 #include "core/render/shading.h"
@@ -24,16 +25,15 @@ struct PacketSurface {
     Vec3P shadowOrigin;  ///< the hit point lifted off the surface (kShadowBias)
     Vec3P color;
     Float ka, kd, ks, shininess;
-    Int skip;  ///< primitive (leaf order) the lane's shadow rays skip; -1 when seen from inside
+    Float reflection;  ///< Material::reflection
+    Int skip;          ///< primitive (leaf order) the lane's shadow rays skip; -1 when seen from inside
 };
 
-/// Nearest surfaces of the `active` lanes of a packet of primary rays, all
-/// inside the frustum whose Bvh::entryNodes() are `entry`.
-inline PacketSurface findSurfaces(const FrameScene& frame, const EyeRays& rays, Mask active,
-                                  std::span<const std::uint32_t> entry, RayCounts& counts) {
-    counts.primary += std::uint64_t(__builtin_popcount(simd::bits(active)));
-    PacketHit hit;
-    intersectPacket(frame.bvh, rays, active, Float(primaryRayStart(rays.origin)), hit, entry);
+/// The surfaces that `rays` met at `hit` in the `active` lanes (shadingPoint()
+/// and the surface's values, lane by lane).
+template <class Origin>
+inline PacketSurface surfacesAt(const FrameScene& frame, const Rays<Origin, Vec3P>& rays,
+                                const PacketHit& hit, Mask active) {
     PacketSurface s;
     s.hitLanes = active & (hit.t < Float(kInfinity));
     if (simd::none(s.hitLanes)) return s;
@@ -44,6 +44,9 @@ inline PacketSurface findSurfaces(const FrameScene& frame, const EyeRays& rays, 
     const std::span<const Primitive> leafPrimitives = frame.bvh.orderedPrimitives();
     const std::span<const std::uint32_t> frameIndex = frame.bvh.originalIndices();
     Vec3P p = rays.origin + rays.direction * hit.t;
+    // Where shadow rays start, and how far inside a checker pattern is read.
+    Float offset = Float(kShadowBias) *
+                   (Float(1.0f) + simd::max(simd::max(simd::abs(p.x), simd::abs(p.y)), simd::abs(p.z)));
     Vec3P n;
     alignas(64) std::int32_t primIds[simd::kWidth];
     simd::store(primIds, hit.primitive);
@@ -52,22 +55,32 @@ inline PacketSurface findSurfaces(const FrameScene& frame, const EyeRays& rays, 
         Mask same = todo & (hit.primitive == Int(id));
         todo = simd::andNot(todo, same);
         const Surface& surface = frame.surfaces[frameIndex[std::size_t(id)]];
-        n = select(same, primitiveNormalP(leafPrimitives[std::size_t(id)], p, hit.face), n);
-        s.color = select(same, Vec3P(surface.color), s.color);
+        const Primitive& prim = leafPrimitives[std::size_t(id)];
+        n = select(same, primitiveNormalP(prim, p, hit.face), n);
+        s.color = select(same, surfaceColorAtP(surface, prim, p, n, offset), s.color);
         s.ka = simd::select(same, Float(surface.material.ka), s.ka);
         s.kd = simd::select(same, Float(surface.material.kd), s.kd);
         s.ks = simd::select(same, Float(surface.material.ks), s.ks);
         s.shininess = simd::select(same, Float(surface.material.n), s.shininess);
+        s.reflection = simd::select(same, Float(surface.material.reflection), s.reflection);
     }
     Mask inside = dot(n, rays.direction) > Float(0.0f);  // seen from within the primitive
     s.normal = select(inside, -n, n);                    // face the viewer
     // As in shadeHit(): shadow rays skip their own primitive only from its outside.
     s.skip = simd::select(inside, Int(-1), hit.primitive);
     s.toEye = -rays.direction;
-    Float offset = Float(kShadowBias) *
-                   (Float(1.0f) + simd::max(simd::max(simd::abs(p.x), simd::abs(p.y)), simd::abs(p.z)));
     s.shadowOrigin = p + s.normal * offset;
     return s;
+}
+
+/// Nearest surfaces of the `active` lanes of a packet of primary rays, all
+/// inside the frustum whose Bvh::entryNodes() are `entry`.
+inline PacketSurface findSurfaces(const FrameScene& frame, const EyeRays& rays, Mask active,
+                                  std::span<const std::uint32_t> entry, RayCounts& counts) {
+    counts.primary += std::uint64_t(__builtin_popcount(simd::bits(active)));
+    PacketHit hit;
+    intersectPacket(frame.bvh, rays, active, Float(primaryRayStart(rays.origin)), hit, entry);
+    return surfacesAt(frame, rays, hit, active);
 }
 
 /// addPhong() for the `lit` lanes, each with its own light direction and the

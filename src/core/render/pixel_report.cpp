@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <tuple>
 
+#include "core/render/reflection.h"
 #include "core/scene/models.h"
 
 namespace f2 {
@@ -39,7 +40,9 @@ PixelReport tracePixel(const FrameScene& frame, const Camera& camera, int x, int
     } else {
         const Surface& surface = frame.surfaces[r.chosen.primitive];
         r.surface = shadingPoint(frame, r.ray, r.chosen);
-        r.surfaceColor = surface.color;
+        r.surfaceColor = surfaceColorAt(surface, frame.primitives[r.chosen.primitive], r.surface.position,
+                                        r.surface.inside ? -r.surface.normal : r.surface.normal,
+                                        shadowOffset(r.surface.position));
         r.material = surface.material;
         r.ambientTerm = surface.material.ka * frame.ambient;
         r.color = shadeHit(frame, r.ray, r.chosen, [&](const LightTerm& term) {
@@ -56,6 +59,8 @@ PixelReport tracePixel(const FrameScene& frame, const Camera& camera, int x, int
             r.lights.push_back(light);
         });
     }
+    r.ownColor = r.color;
+    if (r.hit && r.material.reflection > 0) r.color = shadeWithReflections(frame, r.ray, r.chosen, 1);
     r.pixel = {toByte(r.color.x), toByte(r.color.y), toByte(r.color.z)};
     return r;
 }

@@ -29,7 +29,7 @@ struct PixelReport {
     bool hit = false;  ///< false: the background
     HitRecord chosen;  ///< the reference path's nearest hit (Bvh::intersect)
     ShadingPoint surface;
-    Vec3 surfaceColor;  ///< the primitive's colour, 0..1
+    Vec3 surfaceColor;  ///< the primitive's colour at the hit (its checker's cell), 0..1
     Material material;
     float ambientTerm = 0;  ///< ka * ambient
 
@@ -42,6 +42,9 @@ struct PixelReport {
     };
     std::vector<Light> lights;
 
+    /// A mirror's own shading, before it adds `material.reflection` times what
+    /// its mirrored rays see (`color` - `ownColor`, reflection.h).
+    Vec3 ownColor;
     Vec3 color;  ///< unclamped, as shaded
     Rgb8 pixel;  ///< what the reference path writes
 };

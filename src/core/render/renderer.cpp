@@ -5,7 +5,9 @@
 
 #include "core/anim/frame_builder.h"
 #include "core/render/diagnostic_view.h"
+#include "core/render/packet_reflection.h"
 #include "core/render/packet_shading.h"
+#include "core/render/reflection.h"
 #include "core/render/shading.h"
 #include "core/render/view_legend.h"
 
@@ -127,6 +129,7 @@ class TileRenderer {
                 ShadowEntries shadowEntry(frame_, lo, hi);
                 for (int k = 0; k < blocks; ++k) {
                     ColorP c = shadeSurfaces(frame_, surfaces_[k], shadowEntry.perLight(), counts_);
+                    c = withReflections(frame_, surfaces_[k], c, counts_);
                     if (aa_ > 1) c = clamped(c);  // the average of displayed values
                     sum_[k] =
                         sx == 0 && sy == 0 ? c : ColorP{sum_[k].r + c.r, sum_[k].g + c.g, sum_[k].b + c.b};
@@ -216,7 +219,7 @@ bool forEachTile(ThreadPool& pool, const Camera& camera, RayCounts* rays, Render
     const int tilesX = (camera.width + kTileSize - 1) / kTileSize;
     const int tilesY = (camera.height + kTileSize - 1) / kTileSize;
     std::atomic<bool> cancelled{false};
-    std::atomic<std::uint64_t> primaryRays{0}, shadowRays{0};
+    std::atomic<std::uint64_t> primaryRays{0}, shadowRays{0}, reflectedRays{0};
 
     pool.parallelFor(std::uint32_t(tilesX * tilesY), [&](std::uint32_t tile) {
         const int x0 = int(tile % std::uint32_t(tilesX)) * kTileSize;
@@ -230,8 +233,9 @@ bool forEachTile(ThreadPool& pool, const Camera& camera, RayCounts* rays, Render
         }
         primaryRays.fetch_add(tileRays.primary, std::memory_order_relaxed);
         shadowRays.fetch_add(tileRays.shadow, std::memory_order_relaxed);
+        reflectedRays.fetch_add(tileRays.reflected, std::memory_order_relaxed);
     });
-    if (rays) *rays = {primaryRays.load(), shadowRays.load()};
+    if (rays) *rays = {primaryRays.load(), shadowRays.load(), reflectedRays.load()};
     return !cancelled.load();
 }
 }  // namespace

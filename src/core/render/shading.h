@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/render/checker.h"
 #include "core/render/frame_scene.h"
 #include "core/render/light_sampling.h"
 
@@ -145,7 +146,10 @@ inline Vec3 shadeHit(const FrameScene& frame, const Ray& ray, const HitRecord& h
         }
         onLight(term);
     }
-    return surface.color * std::min(diffuse, kMaxLight) + Vec3{specular, specular, specular};
+    const Vec3 outward = s.inside ? -n : n;
+    const Vec3 color = surfaceColorAt(surface, frame.primitives[hit.primitive], s.position, outward,
+                                      shadowOffset(s.position));
+    return color * std::min(diffuse, kMaxLight) + Vec3{specular, specular, specular};
 }
 
 template <class OnLight>
@@ -156,13 +160,6 @@ inline Vec3 shadeHit(const FrameScene& frame, const Ray& ray, const HitRecord& h
 
 inline Vec3 shadeHit(const FrameScene& frame, const Ray& ray, const HitRecord& hit) {
     return shadeHit(frame, ray, hit, [](const LightTerm&) {});
-}
-
-/// Colour of a primary ray from the eye: the shaded nearest hit or the background.
-inline Vec3 traceRay(const FrameScene& frame, const Ray& ray) {
-    HitRecord hit;
-    if (!frame.bvh.intersect(ray, primaryRayStart(ray.origin), kInfinity, hit)) return frame.background;
-    return shadeHit(frame, ray, hit);
 }
 
 /// floor(255 * clamp(v) + 0.5)

@@ -26,15 +26,27 @@ struct Color8 {
     friend bool operator==(const Color8&, const Color8&) = default;
 };
 
-/// Phong coefficients (SPEC 3), default `1 1 0.3 32`.
+/// Phong coefficients (SPEC 3), default `1 1 0.3 32`, and the mirror
+/// reflection coefficient of `/material`'s optional sixth argument (default 0:
+/// no reflected ray; docs/rendering.md).
 struct Material {
     float ka = 1.0f, kd = 1.0f, ks = 0.3f, n = 32.0f;
+    float reflection = 0.0f;
     friend bool operator==(const Material&, const Material&) = default;
+};
+
+/// `/checker`: the second colour of a checker pattern and its cell size in
+/// the primitive's own frame; size 0 = a plain colour (docs/rendering.md).
+struct Checker {
+    Color8 color{0, 0, 0};
+    float size = 0.0f;
+    friend bool operator==(const Checker&, const Checker&) = default;
 };
 
 struct Appearance {
     Color8 color;
     Material material;
+    Checker checker;
 };
 
 /// How a target moves from one key to the next (SPEC 6 and 9.3).
