@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/anim/track.h"
 #include "core/geometry/primitive.h"
 #include "core/math/transform.h"
 #include "core/scene/scene_desc.h"
@@ -35,6 +36,9 @@ struct EvaluatedFrame {
     Vec3 background;  ///< 0..1
     /// World root frames of attached objects (SPEC 9.2), indexed by object.
     std::vector<Transform> attachedRoots;
+    /// Where the time falls in each key layout of the scene's animation
+    /// (AnimationProgram::segmentsAt): scratch of the evaluation.
+    std::vector<TrackSegment> segments;
 };
 
 }  // namespace f2
