@@ -107,6 +107,7 @@ std::shared_ptr<const AnimationProgram> AnimationProgram::compile(const SceneDes
     p.partSource.resize(count);
     p.firstSurface.resize(count);
     p.firstPrimitive.resize(count + 1);
+    p.still.resize(count);
     Compiler compiler(p);
     std::uint32_t primitives = 0;
     for (std::size_t i = 0; i < count; ++i) {
@@ -125,13 +126,16 @@ std::shared_ptr<const AnimationProgram> AnimationProgram::compile(const SceneDes
             p.rootSource[i] = kConstantRoot;
             p.constantRoots[i] = Transform::fromPose(pose.position, pose.rotation);
         }
+        bool still = p.rootSource[i] == kConstantRoot;
         if (isModel(object.kind)) {
             for (int part = 0; part < kPartCount; ++part) {
                 const Track& track = object.partTracks[std::size_t(part)];
                 const std::uint32_t animated = compiler.animatedTrack(track);
                 p.partSource[i][std::size_t(part)] = animated ? animated : compiler.constantMotion(track);
+                still = still && !animated;
             }
         }
+        p.still[i] = still;
         p.firstSurface[i] = compiler.surfaces(object);
     }
     p.firstPrimitive[count] = primitives;
@@ -150,8 +154,9 @@ void AnimationProgram::segmentsAt(double t, std::vector<TrackSegment>& segments)
 }
 
 void AnimationProgram::evaluateObjects(std::size_t begin, std::size_t end, const TrackSegment* segments,
-                                       EvaluatedFrame& frame) const {
+                                       bool refill, EvaluatedFrame& frame) const {
     for (std::size_t i = begin; i < end; ++i) {
+        if (refill && still[i]) continue;
         // The object's root frame.
         const std::uint32_t root = rootSource[i];
         Transform worldFromRoot;
@@ -170,7 +175,7 @@ void AnimationProgram::evaluateObjects(std::size_t begin, std::size_t end, const
         const ObjectKind kind = kinds[i];
         if (!isModel(kind)) {
             *prims = makePrimitive(shapeKindOf(kind), sizes[i], worldFromRoot);
-            frame.surfaces[first] = *look;
+            if (!refill) frame.surfaces[first] = *look;
             continue;
         }
 
@@ -194,7 +199,7 @@ void AnimationProgram::evaluateObjects(std::size_t begin, std::size_t end, const
         for (const ModelShape& shape : model.shapes)
             *prims++ = makePrimitive(shape.kind, shape.size,
                                      worldFromPart[int(shape.part)].translated(shape.centre));
-        std::memcpy(&frame.surfaces[first], look, model.shapes.size() * sizeof(Surface));
+        if (!refill) std::memcpy(&frame.surfaces[first], look, model.shapes.size() * sizeof(Surface));
     }
 }
 

@@ -63,6 +63,7 @@ struct AnimationProgram {
         partSource;                             ///< models: kAnimated | track, or a constant
     std::vector<std::uint32_t> firstSurface;    ///< the object's surfaces in `surfaces`, one per primitive
     std::vector<std::uint32_t> firstPrimitive;  ///< as EvaluatedFrame::firstPrimitive (objects + 1)
+    std::vector<std::uint8_t> still;            ///< 1: neither the object nor a part of it ever moves
 
     // Shared tables.
     std::vector<AnimatedTrack> tracks;
@@ -88,8 +89,10 @@ struct AnimationProgram {
 
     /// Writes the primitives and surfaces of objects [begin, end) into `frame`
     /// (sized by the caller), with this frame's `segments` and, for attached
-    /// objects, `frame.attachedRoots`.
-    void evaluateObjects(std::size_t begin, std::size_t end, const TrackSegment* segments,
+    /// objects, `frame.attachedRoots`. `refill`: the frame already holds this
+    /// program's surfaces and still objects (EvaluatedFrame::filledBy), which
+    /// are then not written again.
+    void evaluateObjects(std::size_t begin, std::size_t end, const TrackSegment* segments, bool refill,
                          EvaluatedFrame& frame) const;
 };
 

@@ -4,6 +4,7 @@
 /// (FrameScene). Refilled in place each frame; its vectors keep their
 /// capacity so steady-state frames do not allocate.
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "core/anim/track.h"
@@ -12,6 +13,8 @@
 #include "core/scene/scene_desc.h"
 
 namespace f2 {
+
+struct AnimationProgram;  // animation_program.h
 
 /// Shading inputs of one primitive.
 struct Surface {
@@ -39,6 +42,9 @@ struct EvaluatedFrame {
     /// Where the time falls in each key layout of the scene's animation
     /// (AnimationProgram::segmentsAt): scratch of the evaluation.
     std::vector<TrackSegment> segments;
+    /// The program that filled this frame last: when it fills it again, the
+    /// surfaces and the primitives of objects that never move are in place.
+    std::shared_ptr<const AnimationProgram> filledBy;
 };
 
 }  // namespace f2

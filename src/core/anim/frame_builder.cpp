@@ -81,7 +81,9 @@ void evaluateFrame(const SceneDesc& scene, double t, EvaluatedFrame& frame, Thre
 
     // Each object owns a fixed run of primitive slots, so objects can be
     // evaluated in any order, in parallel, straight into place.
-    const std::shared_ptr<const AnimationProgram> program = animationProgramOf(scene);
+    std::shared_ptr<const AnimationProgram> program = animationProgramOf(scene);
+    const bool refill = frame.filledBy == program;
+    frame.filledBy = nullptr;  // until the frame is whole again
     frame.firstPrimitive = program->firstPrimitive;
     const std::size_t total = program->firstPrimitive.back();
     frame.primitives.resize(total);
@@ -95,7 +97,7 @@ void evaluateFrame(const SceneDesc& scene, double t, EvaluatedFrame& frame, Thre
     auto evaluateChunk = [&](std::uint32_t chunk) {
         const std::size_t begin = chunk * kObjectsPerChunk;
         program->evaluateObjects(begin, std::min(objectCount, begin + kObjectsPerChunk),
-                                 frame.segments.data(), frame);
+                                 frame.segments.data(), refill, frame);
     };
     std::uint32_t chunks = std::uint32_t((objectCount + kObjectsPerChunk - 1) / kObjectsPerChunk);
     if (pool) {
@@ -103,6 +105,7 @@ void evaluateFrame(const SceneDesc& scene, double t, EvaluatedFrame& frame, Thre
     } else {
         for (std::uint32_t c = 0; c < chunks; ++c) evaluateChunk(c);
     }
+    frame.filledBy = std::move(program);
 }
 
 }  // namespace f2
