@@ -3,10 +3,11 @@
 //  - even: the rest is a byte stream of JSON-RPC frames (random, truncated,
 //    with bad headers), cut into chunks and fed to the framing reader; every
 //    body goes to an initialized server;
-//  - odd: the rest is a scene (up to the first NUL byte) opened as a
-//    document, then each of up to 8 following byte pairs is a position at which every
-//    feature is asked (completion, hover, definition, references, rename,
-//    symbols, folding, formatting) and an edit is applied there.
+//  - odd: the rest is a scene (up to the first NUL byte) opened as two
+//    documents (scene.f2 and part.f2, so includes between open documents
+//    and include cycles are exercised), then each of up to 8 following byte pairs is a position at which
+//    every feature is asked (completion, hover, definition, references, rename, symbols, folding, formatting)
+//    and an edit is applied there.
 //
 // Invariants checked (a violation aborts, so libFuzzer keeps the input):
 //  - Server::handle never throws;
@@ -96,8 +97,13 @@ void documentMode(f2::lsp::Server& server, std::string_view bytes) {
         Json(std::string(bytes.substr(0, nul))).dump(-1, ' ', false, Json::error_handler_t::replace);
     const Json textJson = Json::parse(text);
     const std::string uri = "file:///fuzz/scene.f2";
-    notify(server, "textDocument/didOpen",
-           {{"textDocument", {{"uri", uri}, {"languageId", "f2"}, {"version", 1}, {"text", textJson}}}});
+    // The same text open a second time as part.f2 (not on disk): `/include
+    // part.f2` then reads an open document, which includes itself (a cycle
+    // through the server's open texts) and makes scene.f2 its scene.
+    for (const char* name : {"file:///fuzz/part.f2", "file:///fuzz/scene.f2"}) {
+        notify(server, "textDocument/didOpen",
+               {{"textDocument", {{"uri", name}, {"languageId", "f2"}, {"version", 1}, {"text", textJson}}}});
+    }
     if (nul == std::string_view::npos) return;
     const std::string_view positions = bytes.substr(nul + 1);
     long long id = 10;

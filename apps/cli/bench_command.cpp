@@ -1,7 +1,10 @@
 // f2 bench: frames per second of the whole frame (evaluate + build + trace).
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <thread>
+#include <vector>
 
 #include "bench_measure.h"
 #include "bench_study.h"
@@ -22,6 +25,8 @@ struct BenchArgs {
     bool study = false;
     std::string csvOut = "bench_study.csv";
     std::string plotOut = "bench_study.png";
+    std::string peer;         ///< f2_embree_peer for --study, or empty
+    std::vector<int> counts;  ///< --study's N, or empty for StudySettings' own
     std::string writeScene;
 };
 
@@ -83,6 +88,15 @@ int runBenchCommand(BenchArgs args) {
         study.height = height;
         study.csvOut = args.csvOut;
         study.plotOut = args.plotOut;
+        if (!args.counts.empty()) study.counts = args.counts;
+        if (!args.peer.empty()) {
+            PeerSettings peer;
+            peer.program = args.peer;
+            peer.threads = args.settings.threads > 0 ? args.settings.threads
+                                                     : int(std::max(1u, std::thread::hardware_concurrency()));
+            peer.seconds = study.bench.seconds;
+            study.peer = peer;
+        }
         return runStudy(study);
     }
 
@@ -134,6 +148,10 @@ Command addBenchCommand(CLI::App& app) {
     sub->add_option("--seconds", args->seconds,
                     "Timed seconds, at least 3 frames (default 3; 1 per point with --study)")
         ->check(finiteNumberIn(0.0, 3600.0, "a duration"));
+    sub->add_option("--frames", args->settings.frames,
+                    "Time exactly this many frames instead of --seconds (e.g. 240 with --step 1: the "
+                    "slowest frame of a playback)")
+        ->check(wholeNumberIn(1, 1000000));
     sub->add_option("--warmup", args->settings.warmupSeconds,
                     "Untimed warm-up seconds, at least 1 frame (default 0.5)")
         ->check(finiteNumberIn(0.0, 600.0, "a duration"));
@@ -146,13 +164,23 @@ Command addBenchCommand(CLI::App& app) {
     auto* study =
         sub->add_flag("--study", args->study,
                       "Tables 4.1/4.2: FPS of robots:N and spheres:N for N = 1, 10, 100, 1000, 10000, "
-                      "as Markdown on stdout, CSV and a PNG plot");
+                      "100000, as Markdown on stdout, CSV and a PNG plot");
     study->excludes(file)->excludes(generated)->excludes(json);
     sub->add_option("--csv-out", args->csvOut, "With --study: CSV file (default bench_study.csv)")
         ->needs(study);
     sub->add_option("--plot-out", args->plotOut,
                     "With --study: PNG plot of FPS against N via gnuplot (default "
                     "bench_study.png; empty = no plot)")
+        ->needs(study);
+    sub->add_option("--counts", args->counts,
+                    "With --study: the values of N, comma-separated (default 1,10,100,1000,10000,100000)")
+        ->delimiter(',')
+        ->check(CLI::Range(1, kMaxBenchObjects))
+        ->needs(study);
+    sub->add_option("--peer", args->peer,
+                    "With --study: also run the Embree peer (the f2_embree_peer program, bench/embree_peer) "
+                    "on each point's frame, best of its BVH update modes, in the tables, CSV and plot")
+        ->check(CLI::ExistingFile)
         ->needs(study);
     sub->add_option(
            "--write-scene", args->writeScene,

@@ -1,6 +1,7 @@
 #include "bench_measure.h"
 
 #include <sys/resource.h>
+#include <time.h>
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif
@@ -22,6 +23,13 @@ namespace f2::cli {
 
 namespace {
 using Clock = std::chrono::steady_clock;
+
+/// CPU time used by every thread of this process so far, in ms.
+double processCpuMs() {
+    timespec ts{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) * 1e3 + double(ts.tv_nsec) / 1e6;
+}
 
 double msBetween(Clock::time_point a, Clock::time_point b) {
     return std::chrono::duration<double, std::milli>(b - a).count();
@@ -135,22 +143,28 @@ BenchResult runBench(const SceneDesc& scene, const std::string& name, int width,
         ++result.warmupFrames;
     } while (msBetween(warmStart, Clock::now()) < settings.warmupSeconds * 1e3);
 
-    std::vector<double> total, eval, build, trace;
+    std::vector<double> total, eval, build, trace, cpu;
     const auto start = Clock::now();
     for (;;) {
+        const double cpuBefore = processCpuMs();
         const auto before = Clock::now();
         FrameTimings t = renderAt(nextTime());
         const auto after = Clock::now();
+        cpu.push_back(processCpuMs() - cpuBefore);
         total.push_back(msBetween(before, after));
         eval.push_back(t.evaluateMs);
         build.push_back(t.buildMs);
         trace.push_back(t.traceMs);
         result.rays = t.rays;  // counted by the renderer as it casts them
-        if (total.size() >= std::size_t(kMinTimedFrames) && msBetween(start, after) >= settings.seconds * 1e3)
+        if (settings.frames > 0 ? total.size() >= std::size_t(settings.frames)
+                                : total.size() >= std::size_t(kMinTimedFrames) &&
+                                      msBetween(start, after) >= settings.seconds * 1e3)
             break;
     }
     result.seconds = msBetween(start, Clock::now()) / 1e3;
     result.frames = int(total.size());
+    result.cpuMsMedian = median(cpu);
+    result.cpuMsMax = *std::max_element(cpu.begin(), cpu.end());
     std::sort(total.begin(), total.end());
     result.msMedian = quantile(total, 0.5);
     result.msMin = total.front();
@@ -177,7 +191,8 @@ std::string benchJson(const BenchResult& r) {
       << ", \"ms_min\": " << fixed(r.msMin, 4) << ", \"ms_max\": " << fixed(r.msMax, 4)
       << ", \"ms_p10\": " << fixed(r.msP10, 4) << ", \"ms_p90\": " << fixed(r.msP90, 4)
       << ", \"ms_eval\": " << fixed(r.msEval, 4) << ", \"ms_build\": " << fixed(r.msBuild, 4)
-      << ", \"ms_trace\": " << fixed(r.msTrace, 4) << ", \"primary_rays\": " << r.rays.primary
+      << ", \"ms_trace\": " << fixed(r.msTrace, 4) << ", \"cpu_ms\": " << fixed(r.cpuMsMedian, 4)
+      << ", \"cpu_ms_max\": " << fixed(r.cpuMsMax, 4) << ", \"primary_rays\": " << r.rays.primary
       << ", \"shadow_rays\": " << r.rays.shadow << ", \"mrays_per_s\": " << fixed(r.mraysPerSecond(), 3)
       << ", \"mrays_per_s_trace\": " << fixed(r.mraysPerSecondTrace(), 3)
       << ", \"peak_rss_mb\": " << fixed(r.peakRssMb, 2) << "}";
@@ -196,6 +211,8 @@ void printBench(std::ostream& out, const BenchResult& r) {
         << "  FPS         " << fixed(r.fps(), 1) << "  (1000 / median frame time)\n"
         << "  split       evaluate " << fixed(r.msEval, 3) << " ms, build " << fixed(r.msBuild, 3)
         << " ms, trace " << fixed(r.msTrace, 3) << " ms  (medians)\n"
+        << "  CPU time    median " << fixed(r.cpuMsMedian, 3) << " ms per frame, all threads (max "
+        << fixed(r.cpuMsMax, 3) << ")\n"
         << "  rays        " << r.rays.primary << " primary + " << r.rays.shadow
         << " shadow per frame: " << fixed(r.mraysPerSecond(), 1) << " Mrays/s over the frame, "
         << fixed(r.mraysPerSecondTrace(), 1) << " over trace\n"

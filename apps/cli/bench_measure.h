@@ -23,6 +23,7 @@ struct BenchSettings {
     int threads = 0;             ///< 0 = every core
     double seconds = 3.0;        ///< timed duration (at least kMinTimedFrames frames)
     double warmupSeconds = 0.5;  ///< untimed frames first (at least one frame)
+    int frames = 0;              ///< > 0: exactly this many timed frames, whatever `seconds` says
     int antialias = 1;
 };
 
@@ -40,6 +41,10 @@ struct BenchResult {
     double msMedian = 0, msMin = 0, msMax = 0, msP10 = 0, msP90 = 0;
     /// Medians of the split Renderer::render reports (ms).
     double msEval = 0, msBuild = 0, msTrace = 0;
+    /// CPU time of the whole process (every thread) per timed frame, in ms:
+    /// median and slowest. On a shared machine these vary far less than wall
+    /// time, since the time spent waiting for a core is not counted.
+    double cpuMsMedian = 0, cpuMsMax = 0;
     RayCounts rays;  ///< of the last timed frame
     double peakRssMb = 0;
 

@@ -13,6 +13,7 @@ struct StudyPoint {
     BenchShape shape;
     int count;
     BenchResult result;
+    std::optional<PeerResult> peer;
 };
 
 std::string fixed(double v, int digits) {
@@ -24,19 +25,24 @@ std::string fixed(double v, int digits) {
 const char* shapeName(BenchShape shape) { return shape == BenchShape::Robots ? "robots" : "spheres"; }
 
 void printTable(std::ostream& out, const std::string& title, const char* column, BenchShape shape,
-                const std::vector<StudyPoint>& points) {
+                const std::vector<StudyPoint>& points, bool withPeer) {
     out << "\n### " << title << "\n\n"
         << "| " << column
         << " | Primitives | FPS | Frame, ms (median) | min..max, ms | Evaluate, ms | Build, ms "
-        << "| Trace, ms | Mrays/s | Peak RSS, MB |\n"
-        << "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+        << "| Trace, ms | Mrays/s | Peak RSS, MB |"
+        << (withPeer ? " Embree peer FPS (mode) | f2 / peer |" : "")
+        << "\n|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|" << (withPeer ? "---:|---:|" : "") << "\n";
     for (const StudyPoint& p : points) {
         if (p.shape != shape) continue;
         const BenchResult& r = p.result;
         out << "| " << p.count << " | " << r.primitives << " | " << fixed(r.fps(), 1) << " | "
             << fixed(r.msMedian, 2) << " | " << fixed(r.msMin, 2) << ".." << fixed(r.msMax, 2) << " | "
             << fixed(r.msEval, 2) << " | " << fixed(r.msBuild, 2) << " | " << fixed(r.msTrace, 2) << " | "
-            << fixed(r.mraysPerSecond(), 1) << " | " << fixed(r.peakRssMb, 1) << " |\n";
+            << fixed(r.mraysPerSecond(), 1) << " | " << fixed(r.peakRssMb, 1) << " |";
+        if (withPeer && p.peer)
+            out << ' ' << fixed(p.peer->fps, 1) << " (" << p.peer->mode << ") | "
+                << fixed(r.fps() / p.peer->fps, 2) << " |";
+        out << '\n';
     }
 }
 
@@ -44,7 +50,7 @@ bool writeCsv(const std::string& path, const std::vector<StudyPoint>& points) {
     std::ofstream csv(path);
     csv << "shape,count,primitives,width,height,threads,frame,frames,fps,ms_median,ms_min,ms_max,ms_p10,ms_"
            "p90,"
-           "ms_eval,ms_build,ms_trace,primary_rays,shadow_rays,mrays_per_s,peak_rss_mb\n";
+           "ms_eval,ms_build,ms_trace,primary_rays,shadow_rays,mrays_per_s,peak_rss_mb,peer_fps,peer_mode\n";
     for (const StudyPoint& p : points) {
         const BenchResult& r = p.result;
         csv << shapeName(p.shape) << ',' << p.count << ',' << r.primitives << ',' << r.width << ','
@@ -52,7 +58,8 @@ bool writeCsv(const std::string& path, const std::vector<StudyPoint>& points) {
             << ',' << fixed(r.msMedian, 4) << ',' << fixed(r.msMin, 4) << ',' << fixed(r.msMax, 4) << ','
             << fixed(r.msP10, 4) << ',' << fixed(r.msP90, 4) << ',' << fixed(r.msEval, 4) << ','
             << fixed(r.msBuild, 4) << ',' << fixed(r.msTrace, 4) << ',' << r.rays.primary << ','
-            << r.rays.shadow << ',' << fixed(r.mraysPerSecond(), 3) << ',' << fixed(r.peakRssMb, 2) << '\n';
+            << r.rays.shadow << ',' << fixed(r.mraysPerSecond(), 3) << ',' << fixed(r.peakRssMb, 2) << ','
+            << (p.peer ? fixed(p.peer->fps, 3) : "") << ',' << (p.peer ? p.peer->mode : "") << '\n';
     }
     csv.flush();
     return bool(csv);
@@ -76,26 +83,37 @@ bool hasPngCairo() {
     return text.find("pngcairo") != std::string::npos;
 }
 
-bool writePlot(const std::string& path, const std::vector<StudyPoint>& points) {
+bool writePlot(const std::string& path, const std::vector<StudyPoint>& points,
+               const StudySettings& settings) {
     const BenchResult& any = points.front().result;
     std::ostringstream script;
     script << "set terminal " << (hasPngCairo() ? "pngcairo size 900,600" : "png size 900,600") << '\n'
            << "set output " << gnuplotQuoted(path) << '\n'
            << "set title "
-           << gnuplotQuoted("f2 bench --study: whole frame (evaluate + build + trace), " +
-                            std::to_string(any.width) + "x" + std::to_string(any.height) + ", " +
-                            std::to_string(any.threads) + " threads")
+           << gnuplotQuoted(std::string(settings.peer ? "f2 and the Embree peer" : "f2 bench --study") +
+                            ": whole frame (evaluate + build + trace), " + std::to_string(any.width) + "x" +
+                            std::to_string(any.height) + ", " + std::to_string(any.threads) + " threads")
            << '\n'
-           << "set logscale x\nset xlabel 'N (robots or spheres)'\nset ylabel 'frames per second (median)'\n"
-           << "set yrange [0:*]\nset grid\nset key top right\n";
+           << "set logscale xy\nset xlabel 'N (robots or spheres)'\nset ylabel 'frames per second (median)'\n"
+           << "set grid\nset key bottom left\n";
+    bool withPeer = false;
     for (BenchShape shape : {BenchShape::Robots, BenchShape::Spheres}) {
+        // Columns: N, f2 FPS, peer FPS ("NaN" where the peer did not run: gnuplot leaves a gap).
         script << '$' << shapeName(shape) << " << EOD\n";
-        for (const StudyPoint& p : points)
-            if (p.shape == shape) script << p.count << ' ' << fixed(p.result.fps(), 3) << '\n';
+        for (const StudyPoint& p : points) {
+            if (p.shape != shape) continue;
+            script << p.count << ' ' << fixed(p.result.fps(), 3) << ' '
+                   << (p.peer ? fixed(p.peer->fps, 3) : std::string("NaN")) << '\n';
+            withPeer = withPeer || p.peer;
+        }
         script << "EOD\n";
     }
-    script << "plot $robots using 1:2 with linespoints lw 2 pt 7 title 'robots (table 4.1)', "
-              "$spheres using 1:2 with linespoints lw 2 pt 5 title 'spheres (table 4.2)'\n";
+    script << "plot $robots using 1:2 with linespoints lw 2 pt 7 lc 1 title 'f2, robots (table 4.1)', "
+              "$spheres using 1:2 with linespoints lw 2 pt 5 lc 2 title 'f2, spheres (table 4.2)'";
+    if (withPeer)
+        script << ", $robots using 1:3 with linespoints lw 2 dt 2 pt 6 lc 1 title 'Embree peer, robots', "
+                  "$spheres using 1:3 with linespoints lw 2 dt 2 pt 4 lc 2 title 'Embree peer, spheres'";
+    script << '\n';
     FILE* pipe = popen("gnuplot", "w");
     if (!pipe) return false;
     std::string text = script.str();
@@ -118,7 +136,20 @@ int runStudy(const StudySettings& settings) {
                 runBench(loaded->scene, loaded->name, camera.width, camera.height, settings.bench);
             std::cerr << "f2 bench --study: " << result.scene << ": " << fixed(result.fps(), 1) << " FPS ("
                       << fixed(result.msMedian, 2) << " ms, " << result.frames << " frames)\n";
-            points.push_back({shape, count, std::move(result)});
+            std::optional<PeerResult> peer;
+            if (settings.peer) {
+                // After f2's measurement, so that the exported text is not part of f2's peak RSS.
+                std::string error;
+                peer = runPeer(*settings.peer, loaded->scene, settings.bench.frame,
+                               cameraAt(loaded->scene, settings.bench.frame), loaded->name, error);
+                if (!peer) {
+                    std::cerr << "f2 bench: Embree peer: " << error << '\n';
+                    return 1;
+                }
+                std::cerr << "f2 bench --study: " << result.scene << ": Embree peer " << fixed(peer->fps, 1)
+                          << " FPS (--rebuild " << peer->mode << ")\n";
+            }
+            points.push_back({shape, count, std::move(result), peer});
         }
     }
     const BenchResult& first = points.front().result;
@@ -126,10 +157,18 @@ int runStudy(const StudySettings& settings) {
               << "Whole frame (evaluate + build + trace + shade), " << first.width << "x" << first.height
               << ", shadows on, " << first.threads << " threads, frame " << first.frame
               << ", median of >= " << settings.bench.seconds << " s per point.\n";
+    const bool withPeer = settings.peer.has_value();
+    if (withPeer)
+        std::cout << "Embree peer: " << settings.peer->program
+                  << " on the same frames (`f2 export --prims`), "
+                  << "whole frame, best of --rebuild";
+    if (withPeer)
+        for (const std::string& mode : settings.peer->modes) std::cout << ' ' << mode;
+    if (withPeer) std::cout << ".\n";
     printTable(std::cout, "Table 4.1. Frame rate with robots (robots:N)", "Robots", BenchShape::Robots,
-               points);
+               points, withPeer);
     printTable(std::cout, "Table 4.2. Frame rate with spheres (spheres:N)", "Spheres", BenchShape::Spheres,
-               points);
+               points, withPeer);
 
     int code = 0;
     if (!writeCsv(settings.csvOut, points)) {
@@ -139,7 +178,7 @@ int runStudy(const StudySettings& settings) {
         std::cerr << "f2 bench: wrote " << settings.csvOut << '\n';
     }
     if (!settings.plotOut.empty()) {
-        if (writePlot(settings.plotOut, points)) {
+        if (writePlot(settings.plotOut, points, settings)) {
             std::cerr << "f2 bench: wrote " << settings.plotOut << '\n';
         } else {
             std::cerr << "f2 bench: gnuplot could not write " << settings.plotOut

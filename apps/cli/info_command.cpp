@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <sstream>
 
 #include "commands.h"
 #include "core/scene/models.h"
@@ -61,6 +62,32 @@ void printCamera(const SceneDesc& s) {
     }
 }
 
+/// Softness of a light's shadows, as its option is written ("size 20 4").
+std::string shadowText(const char* word, const SoftShadow& shadow) {
+    if (!shadow.soft()) return "hard shadows";
+    std::ostringstream text;
+    text << "soft shadows: " << word << ' ' << shadow.size << ' ' << shadow.samplesPerSide << " ("
+         << shadow.samplesPerSide * shadow.samplesPerSide << " samples)";
+    return text.str();
+}
+
+/// One line per directional, point and spot light.
+void printLights(const SceneDesc& s) {
+    for (const DirectionalLight& l : s.lights)
+        std::cout << "  dir_light " << l.intensity << " along " << l.direction.x << ' ' << l.direction.y
+                  << ' ' << l.direction.z << ", " << shadowText("angle", l.sun) << '\n';
+    for (const LocalLight& l : s.localLights) {
+        const bool spot = l.kind == LocalLightKind::Spot;
+        std::cout << (spot ? "  spot_light " : "  point_light ") << l.intensity << " at " << l.position.x
+                  << ' ' << l.position.y << ' ' << l.position.z;
+        if (spot)
+            std::cout << " along " << l.direction.x << ' ' << l.direction.y << ' ' << l.direction.z
+                      << ", radius " << l.radius << " falloff " << l.falloff << " tightness " << l.tightness;
+        if (l.fade.fades()) std::cout << ", fade " << l.fade.distance << ' ' << l.fade.power;
+        std::cout << ", " << shadowText("size", l.area) << '\n';
+    }
+}
+
 /// "241 frames, 10.00 s from the first to the last (10.04 s played as a video)":
 /// N frames span N-1 intervals, but a video shows each for 1/fps.
 std::string describeLength(int lastFrame, int fps) {
@@ -82,12 +109,14 @@ int runInfo(const std::string& path) {
               << '\n'
               << "  frames:     0.." << last << " at " << s.fps << " fps: " << describeLength(last, s.fps)
               << '\n'
-              << "  lights:     ambient " << s.ambient << ", " << s.lights.size() << " directional\n"
+              << "  lights:     ambient " << s.ambient << ", " << s.lights.size() << " directional, "
+              << s.localLights.size() << " point or spot\n"
               << "  objects:    " << s.objects.size() << " (" << s.primitiveCount() << " primitives)\n"
               << "  source:     " << loaded->files.size()
               << (loaded->files.size() == 1 ? " file, " : " files, ") << loaded->linesInFiles << " lines, "
               << loaded->linesRead << " read with /repeat and /include expanded\n";
     printCamera(s);
+    printLights(s);
     for (const SceneObject& o : s.objects) {
         std::cout << "  " << objectKindName(o.kind) << ' ' << o.name << '\n';
         if (o.attachedTo) std::cout << "    rides on " << refName(s, *o.attachedTo) << '\n';

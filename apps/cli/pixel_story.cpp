@@ -5,6 +5,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "core/render/diagnostic_view.h"
 #include "core/render/pixel_report.h"
 #include "core/render/renderer.h"
 
@@ -94,16 +95,22 @@ int printPixelStory(const LoadedScene& loaded, const Camera& camera, double t, i
         out << "shadow rays from " << str(r.surface.shadowOrigin)
             << (r.surface.skip == Bvh::kNoPrimitive ? "" : ", skipping the primitive itself") << "\n";
         for (const PixelReport::Light& l : r.lights) {
-            const LightSample& light = frame.lights[l.term.light];
-            out << "light " << l.term.light + 1 << "  intensity " << light.intensity << " toward "
+            const bool local = l.term.light >= frame.lights.size();
+            out << "light " << l.term.light + 1 << (local ? " (point or spot)" : "") << "  toward "
                 << str(l.toLight) << ", N.L = " << l.term.nDotL << ": ";
             if (l.term.nDotL <= 0)
                 out << "faces away (no shadow ray)\n";
-            else if (l.term.shadowed)
+            else if (local && l.term.intensity <= 0)
+                out << "outside the spot's cone (no shadow ray)\n";
+            else if (l.term.shadowed && l.occluder != Bvh::kNoPrimitive)
                 out << "in shadow of #" << l.occluder << " " << name(l.occluder) << " at t = " << l.occluderT
                     << "\n";
+            else if (l.term.shadowed)
+                out << "in shadow (every shadow sample is blocked)\n";
             else
-                out << "lit, diffuse " << l.term.diffuse << ", specular " << l.term.specular << "\n";
+                out << "lit, intensity " << l.term.intensity
+                    << (l.term.visible < 1 ? " x " + std::to_string(l.term.visible) + " unshadowed" : "")
+                    << ", diffuse " << l.term.diffuse << ", specular " << l.term.specular << "\n";
         }
     }
     out << "colour   " << str(r.color) << " -> pixel " << int(r.pixel.r) << " " << int(r.pixel.g) << " "
@@ -112,6 +119,11 @@ int printPixelStory(const LoadedScene& loaded, const Camera& camera, double t, i
     out << "image    " << int(rendered.r) << " " << int(rendered.g) << " " << int(rendered.b)
         << " (the packet path" << (antialias > 1 ? ", --aa " + std::to_string(antialias) + " samples" : "")
         << ")\n";
+    // What --view cost shows for this pixel, counted by the same traversals.
+    const RayProbe probe = probeRay(frame, r.ray);
+    out << "cost     " << probe.cost.total() << " = " << probe.cost.nodes << " BVH node boxes + "
+        << probe.cost.primitives << " primitives tested, by the primary ray and " << probe.shadowRays
+        << " shadow ray" << (probe.shadowRays == 1 ? "" : "s") << " (--view cost)\n";
     return 0;
 }
 

@@ -29,9 +29,9 @@ double Progress::framesPerSecond() const {
     return s > 0 && rendered > 0 ? rendered / s : 0;
 }
 
-void Progress::update(int done) {
+void Progress::update(int done, double partial) {
     done_ = done;
-    pauseForTestAfter(done);  // every finished frame passes here
+    if (partial == 0) pauseForTestAfter(done);  // every finished frame passes here, once
     if (!live_) return;
     auto now = Clock::now();
     // At most ~10 redraws a second: a terminal is slower than a small frame.
@@ -39,11 +39,13 @@ void Progress::update(int done) {
     lastDraw_ = now;
 
     constexpr int kBarWidth = 24;
-    int filled = total_ > 0 ? int(std::lround(double(kBarWidth) * done / total_)) : kBarWidth;
+    const double progressed = done + partial;
+    int filled = total_ > 0 ? int(std::lround(double(kBarWidth) * progressed / total_)) : kBarWidth;
     std::string bar(std::size_t(filled), '#');
     bar.resize(kBarWidth, '-');
     double fps = framesPerSecond();
-    std::string left = fps > 0 ? formatDuration((total_ - done) / fps) + " left" : "";
+    const double rate = elapsedSeconds() > 0 ? (progressed - skipped_) / elapsedSeconds() : 0;
+    std::string left = rate > 0 ? formatDuration((total_ - progressed) / rate) + " left" : "";
     char line[160];
     int n = std::snprintf(line, sizeof line, "\r[%s] %d/%d frames  %.1f fps  %s", bar.c_str(), done, total_,
                           fps, left.c_str());

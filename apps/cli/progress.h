@@ -1,7 +1,7 @@
 #pragma once
 /// Progress of a multi-frame render on stderr: a live bar (frames done, frames
-/// per second, time left) when stderr is a terminal; otherwise nothing until
-/// the one-line summary, so logs of farm jobs stay short.
+/// per second, time left; a motion-blurred frame fills it sub-frame by sub-frame) when stderr is a terminal;
+/// otherwise nothing until the one-line summary, so logs of farm jobs stay short.
 #include <chrono>
 #include <string>
 
@@ -12,8 +12,10 @@ class Progress {
     /// `total` frames to render; `live` = draw the bar (see isInteractive()).
     Progress(int total, bool live);
 
-    /// `done` frames are finished (rendered or skipped).
-    void update(int done);
+    /// `done` frames are finished (rendered or skipped), and `partial` (0..1)
+    /// of the next one (its motion-blur sub-frames): the bar and the time left
+    /// move during a long frame.
+    void update(int done, double partial = 0);
     /// Clears the bar's line so the next message starts on a clean line.
     void clear();
 

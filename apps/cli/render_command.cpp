@@ -19,6 +19,7 @@
 #include "pixel_story.h"
 #include "progress.h"
 #include "scene_source.h"
+#include "view_option.h"
 
 namespace f2::cli {
 
@@ -35,7 +36,10 @@ struct RenderArgs {
     std::string shard;
     bool resume = false;
     std::string pixel;  ///< "X,Y": print that pixel's story instead of writing an image
+    ViewMode view = ViewMode::Shaded;
+    MotionBlur motionBlur;
     const CLI::Option* frameOption = nullptr;
+    const CLI::Option* motionBlurOption = nullptr;
 };
 
 /// Everything an animation render needs, resolved from the arguments.
@@ -45,6 +49,8 @@ struct AnimationJob {
     AnimationRange range;
     int antialias;
     int threads;
+    ViewMode viewMode;
+    MotionBlur motionBlur;
 };
 
 int interruptedExit() { return 128 + (interruptSignal() ? interruptSignal() : 2); }
@@ -55,20 +61,25 @@ std::string describe(const AnimationJob& job) {
     if (job.range.step > 1) s << " every " << job.range.step;
     if (job.range.shardCount > 1) s << " shard " << job.range.shardIndex << "/" << job.range.shardCount;
     s << " (" << job.view.width << "x" << job.view.height << ", " << job.range.outputFps << " fps, aa "
-      << job.antialias << ")";
+      << job.antialias;
+    if (job.viewMode != ViewMode::Shaded) s << ", view " << viewModeName(job.viewMode);
+    if (job.motionBlur.enabled())
+        s << ", motion blur " << job.motionBlur.shutter << " x " << job.motionBlur.samples;
+    s << ")";
     return s.str();
 }
 
 /// f2::renderAnimation with the live progress bar and Ctrl+C.
 AnimationResult renderWithProgress(const AnimationJob& job, FrameSink& sink, Progress& progress) {
     std::int64_t skipped = 0;
-    AnimationResult result = renderAnimation(job.loaded->scene, job.range, job.view, sink, &interruptFlag(),
-                                             [&](const AnimationProgress& p) {
-                                                 progress.skipped(int(p.skipped - skipped));
-                                                 skipped = p.skipped;
-                                                 progress.update(int(p.done));
-                                             },
-                                             {job.threads, {job.antialias}});
+    AnimationResult result =
+        renderAnimation(job.loaded->scene, job.range, job.view, sink, &interruptFlag(),
+                        [&](const AnimationProgress& p) {
+                            progress.skipped(int(p.skipped - skipped));
+                            skipped = p.skipped;
+                            progress.update(int(p.done), double(p.subFramesDone) / p.subFramesPerFrame);
+                        },
+                        {job.threads, {job.antialias, job.viewMode}, job.motionBlur});
     progress.clear();
     return result;
 }
@@ -132,7 +143,7 @@ int renderImage(const RenderArgs& args, const LoadedScene& loaded, const FrameVi
     const std::string where = toStdout ? "standard output" : args.output;
     const AnimationResult result =
         renderAnimation(loaded.scene, AnimationRange::still(t, loaded.scene.fps), view, sink,
-                        &interruptFlag(), {}, {args.threads, {args.antialias}});
+                        &interruptFlag(), {}, {args.threads, {args.antialias, args.view}, args.motionBlur});
     switch (result.outcome) {
         case AnimationResult::Outcome::Failed:
             std::cerr << "f2 render: " << result.error << '\n';
@@ -144,8 +155,11 @@ int renderImage(const RenderArgs& args, const LoadedScene& loaded, const FrameVi
             break;
     }
     std::cerr << "f2 render: " << loaded.name << " frame " << t << " -> " << where << " (" << view.width
-              << "x" << view.height << ", " << result.threads << " threads, "
-              << formatMilliseconds(result.renderMs) << ")\n";
+              << "x" << view.height << ", "
+              << (args.view != ViewMode::Shaded ? "view " + std::string(viewModeName(args.view)) + ", " : "");
+    if (args.motionBlur.enabled())
+        std::cerr << "motion blur " << args.motionBlur.shutter << " x " << args.motionBlur.samples << ", ";
+    std::cerr << result.threads << " threads, " << formatMilliseconds(result.renderMs) << ")\n";
     return 0;
 }
 
@@ -179,6 +193,13 @@ std::string outputMismatch(const RenderArgs& args, const OutputKind& output) {
 }
 
 int runRender(const RenderArgs& args) {
+    if (args.motionBlur.shutter == 0 && args.motionBlurOption->count() > 0)
+        return usageError(
+            "--motion-blur: the shutter must be more than 0 (a fraction of a frame, up to 1); leave the "
+            "option out for sharp frames");
+    if (args.motionBlur.enabled() && args.view != ViewMode::Shaded)
+        return usageError("--view " + std::string(viewModeName(args.view)) +
+                          " shows one instant; --motion-blur averages the shaded picture over many");
     std::string error;
     auto output = classifyOutput(args.output, error);
     if (!output) return usageError(error);
@@ -210,10 +231,17 @@ int runRender(const RenderArgs& args) {
                                 0,           shard.index, shard.count,       range.step};
     if (frames.lastRendered() > lastFrame)
         std::cerr << "f2 render: warning: " << pastTheEndWarning(frames, lastFrame) << '\n';
-    AnimationJob job{&*loaded, FrameView::sceneCamera(width, height), frames, args.antialias, args.threads};
+    AnimationJob job{&*loaded,       FrameView::sceneCamera(width, height),
+                     frames,         args.antialias,
+                     args.threads,   args.view,
+                     args.motionBlur};
     if (!args.pixel.empty()) {
         if (!args.frames.empty() || !args.shard.empty() || args.resume)
             return usageError("--pixel traces one pixel of one frame: choose the frame with --frame");
+        if (args.motionBlur.enabled())
+            return usageError(
+                "--pixel traces one pixel at one time; --motion-blur averages many: leave it out, or "
+                "trace a sub-frame's time with --frame");
         int x = 0, y = 0;
         if (!parsePixel(args.pixel, width, height, x, y, error)) return usageError(error);
         return printPixelStory(*loaded, job.view.at(loaded->scene, args.frame), args.frame, x, y,
@@ -280,11 +308,28 @@ Command addRenderCommand(CLI::App& app) {
                     "(round-robin); sequences only")
         ->type_name("K/N");
     sub->add_flag("--resume", args->resume, "Sequence: skip frames whose file already exists");
+    CLI::Option* motionBlur =
+        sub->add_option(
+               "--motion-blur", args->motionBlur.shutter,
+               "Motion blur: the shutter is open for S of each frame, 0 < S <= 1, centred on the "
+               "frame's time; the frame is the mean of --motion-samples sub-frames at the centres of "
+               "equal slices of that time (a moving camera blurs too)")
+            ->type_name("S")
+            ->check(finiteNumberIn(0.0, 1.0, "a shutter"));
+    args->motionBlurOption = motionBlur;
+    sub->add_option("--motion-samples", args->motionBlur.samples,
+                    "Sub-frames averaged per frame with --motion-blur, 1.." +
+                        std::to_string(MotionBlur::kMaxSamples) + " (default " +
+                        std::to_string(MotionBlur::kDefaultSamples) + ")")
+        ->type_name("N")
+        ->check(wholeNumberIn(1, MotionBlur::kMaxSamples))
+        ->needs(motionBlur);
     sub->add_option(
            "--pixel", args->pixel,
            "Print the story of one pixel (its ray, every primitive along it, the hit, the normal, each "
            "light's term and shadow, the colour) instead of writing an image")
         ->type_name("X,Y");
+    addViewOption(*sub, args->view);
     return {sub, [args] { return runRender(*args); }};
 }
 

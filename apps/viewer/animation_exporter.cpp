@@ -74,7 +74,8 @@ void exportWithProgress(QWidget* parent, ExportJob job,
                         std::function<void(bool ok, bool cancelled, const QString& message)> done) {
     const int total = job.lastFrame - job.firstFrame + 1;
     auto* dialog =
-        new QProgressDialog(QObject::tr("Rendering frames…"), QObject::tr("Cancel"), 0, total, parent);
+        new QProgressDialog(QObject::tr("Rendering frames %1–%2…").arg(job.firstFrame).arg(job.lastFrame),
+                            QObject::tr("Cancel"), 0, total, parent);
     dialog->setWindowModality(Qt::WindowModal);
     dialog->setMinimumDuration(0);
     dialog->setAutoClose(false);

@@ -22,12 +22,13 @@
 #include <QStatusBar>
 #include <QTextBlock>
 #include <QVBoxLayout>
+#include <QWindow>
 
 #include "animation_exporter.h"
 #include "autosave.h"
+#include "capture_pose.h"
 #include "core/anim/frame_builder.h"
 #include "core/anim/frame_time.h"
-#include "core/anim/track.h"
 #include "core/render/pick.h"
 #include "core/render/renderer.h"
 #include "editor_dock.h"
@@ -42,6 +43,7 @@
 #include "scene_editor.h"
 #include "text_capture.h"
 #include "timeline_widget.h"
+#include "view_mode_menu.h"
 #include "viewport_widget.h"
 
 namespace f2::viewer {
@@ -55,6 +57,7 @@ constexpr int kLineRole = Qt::UserRole + 1;
 constexpr int kColumnRole = Qt::UserRole + 2;
 const char* const kRecentKey = "recentFiles";
 const char* const kScaleKey = "renderScale";
+const char* const kPlaybackAntialiasKey = "playbackAntialias";
 }  // namespace
 
 MainWindow::MainWindow(QWidget* parent)
@@ -97,8 +100,10 @@ MainWindow::MainWindow(QWidget* parent)
     sizeStatus_ = new QLabel(this);
     selectionStatus_ = new QLabel(this);
     refineStatus_ = new QLabel(this);
-    for (QLabel* label :
-         {selectionStatus_, refineStatus_, frameStatus_, timeStatus_, fpsStatus_, sizeStatus_})
+    viewStatus_ = new QLabel(this);
+    playbackAntialiasStatus_ = new QLabel(this);
+    for (QLabel* label : {selectionStatus_, viewStatus_, refineStatus_, playbackAntialiasStatus_,
+                          frameStatus_, timeStatus_, fpsStatus_, sizeStatus_})
         statusBar()->addPermanentWidget(label);
 
     frameTimer_.setSingleShot(true);
@@ -130,6 +135,13 @@ MainWindow::MainWindow(QWidget* parent)
     connect(timeline_, &TimelineWidget::scrubStarted, playback_, &Playback::beginScrub);
     connect(timeline_, &TimelineWidget::scrubFinished, playback_, &Playback::endScrub);
     connect(timeline_, &TimelineWidget::speedChanged, playback_, &Playback::setSpeed);
+    connect(timeline_, &TimelineWidget::loopInRequested, playback_, &Playback::setLoopIn);
+    connect(timeline_, &TimelineWidget::loopOutRequested, playback_, &Playback::setLoopOut);
+    connect(timeline_, &TimelineWidget::loopClearRequested, playback_, &Playback::clearLoop);
+    connect(playback_, &Playback::loopRangeChanged, this, [this] {
+        const auto loop = playback_->loopRange();
+        timeline_->setLoop(loop ? std::optional(std::pair(loop->first, loop->last)) : std::nullopt);
+    });
 
     createActions();
     setAcceptDrops(true);
@@ -199,6 +211,12 @@ void MainWindow::createActions() {
         play->addAction(tr("F&irst Frame"), QKeySequence(Qt::Key_Home), playback_, &Playback::seekToStart));
     stageShortcut(
         play->addAction(tr("&Last Frame"), QKeySequence(Qt::Key_End), playback_, &Playback::seekToEnd));
+    play->addSeparator();
+    stageShortcut(play->addAction(tr("Set Loop &In Here"), QKeySequence(Qt::Key_I), this,
+                                  [this] { playback_->setLoopIn(playback_->frame()); }));
+    stageShortcut(play->addAction(tr("Set Loop &Out Here"), QKeySequence(Qt::Key_O), this,
+                                  [this] { playback_->setLoopOut(playback_->frame()); }));
+    play->addAction(tr("&Clear Loop"), QKeySequence(Qt::ALT | Qt::Key_X), playback_, &Playback::clearLoop);
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     stageShortcut(
@@ -217,9 +235,28 @@ void MainWindow::createActions() {
         scales->addAction(a);
         if (int(scale) == saved) viewport_->setRenderScale(scale);
     }
+    viewModes_ = new ViewModeMenu(view);
+    connect(viewModes_, &ViewModeMenu::modeChanged, this, &MainWindow::scheduleFrame);
     QAction* refineAction = view->addAction(tr("&Refine When Paused"), this, &MainWindow::setRefinement);
     refineAction->setCheckable(true);
     refineAction->setChecked(refinement_);
+    QMenu* playbackAa = view->addMenu(tr("Playback &Anti-aliasing"));
+    playbackAntialiasActions_ = new QActionGroup(this);
+    const std::pair<QString, PlaybackAntialiasMode> modes[] = {
+        {tr("&Off (1 sample)"), PlaybackAntialiasMode::Off},
+        {tr("&Auto (as many samples as the frame budget allows)"), PlaybackAntialiasMode::Auto},
+        {tr("O&n (2×2 samples)"), PlaybackAntialiasMode::On}};
+    for (const auto& [label, mode] : modes) {
+        QAction* a = playbackAa->addAction(label, this, [this, m = mode] { setPlaybackAntialias(m); });
+        a->setCheckable(true);
+        a->setData(int(mode));
+        playbackAntialiasActions_->addAction(a);
+    }
+    const int savedMode = QSettings().value(kPlaybackAntialiasKey, int(PlaybackAntialiasMode::Auto)).toInt();
+    setPlaybackAntialias(savedMode >= int(PlaybackAntialiasMode::Off) &&
+                                 savedMode <= int(PlaybackAntialiasMode::On)
+                             ? PlaybackAntialiasMode(savedMode)
+                             : PlaybackAntialiasMode::Auto);
     view->addSeparator();
     view->addAction(editorDock_->toggleViewAction());
     view->addAction(diagnosticsDock_->toggleViewAction());
@@ -227,6 +264,8 @@ void MainWindow::createActions() {
     QMenu* capture = menuBar()->addMenu(tr("&Capture"));
     capture->addAction(tr("Set &Camera from View"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_C), this,
                        &MainWindow::setCameraFromView);
+    capture->addAction(tr("Key C&amera Here"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_K), this,
+                       &MainWindow::keyCameraHere);
     capture->addAction(tr("&Key Selection Here"), QKeySequence(Qt::CTRL | Qt::Key_K), this,
                        &MainWindow::keySelectionHere);
 
@@ -246,6 +285,15 @@ void MainWindow::resizeForViewport(QSize viewportSize) {
     if (const QScreen* s = screen()) wanted = wanted.boundedTo(s->availableGeometry().size());
     resize(wanted);
 }
+
+void MainWindow::setPlaybackAntialias(PlaybackAntialiasMode mode) {
+    QSettings().setValue(kPlaybackAntialiasKey, int(mode));
+    playbackAntialias_.setMode(mode);
+    for (QAction* a : playbackAntialiasActions_->actions()) a->setChecked(a->data().toInt() == int(mode));
+    updateStatus();
+}
+
+QString MainWindow::playbackAntialiasStatus() const { return playbackAntialiasStatus_->text(); }
 
 void MainWindow::setRenderScale(RenderScale scale) {
     QSettings().setValue(kScaleKey, int(scale));
@@ -404,7 +452,13 @@ void MainWindow::onSceneChanged(bool newDocument) {
     const auto scene = document_->scene();
     playback_->setRange(scene->lastFrame(), scene->fps);
     timeline_->setRange(scene->lastFrame(), scene->fps);
-    if (newDocument) playback_->seek(0);
+    // A playing frame may take one tick of the clock; another scene's cost is not known yet.
+    playbackAntialias_.setBudgetMs(playback_->tickIntervalMs());
+    if (newDocument) playbackAntialias_.reset();
+    if (newDocument) {
+        playback_->clearLoop();
+        playback_->seek(0);
+    }
     timeline_->setTime(playback_->time());
     const Camera camera = cameraAt(*scene, playback_->time());
     // A reload of the same file keeps the user's look-around; a new file starts at its camera.
@@ -468,8 +522,13 @@ void MainWindow::requestFrame() {
     if (!scene) return;
     const double time = playback_->time();
     viewport_->followSceneCamera(cameraAt(*scene, time));
-    lastRequest_ = {std::move(scene), time, viewport_->viewCamera(), {}};
-    controller_->request(lastRequest_);
+    RenderOptions options;
+    options.view = viewModes_->mode();
+    lastRequest_ = {std::move(scene), time, viewport_->viewCamera(), options};
+    RenderRequest request = lastRequest_;
+    if (playback_->isPlaying() && options.view == ViewMode::Shaded)
+        request.options.antialias = playbackAntialias_.level();
+    controller_->request(request);
 }
 
 void MainWindow::setRefinement(bool on) {
@@ -482,7 +541,13 @@ void MainWindow::setRefinement(bool on) {
 
 bool MainWindow::isRefining() const {
     return refinement_ && !playback_->isPlaying() && shownFrame_.serial != 0 &&
-           shownFrame_.antialias < kRefinedAntialias;
+           shownFrame_.view == ViewMode::Shaded && shownFrame_.antialias < kRefinedAntialias;
+}
+
+bool MainWindow::isPictureComplete() const {
+    return isVisible() && windowHandle() && windowHandle()->isExposed() && shownFrame_.serial != 0 &&
+           shownFrame_.size == viewport_->renderSize() && !controller_->hasPendingFrames() &&
+           !frameTimer_.isActive() && !isRefining();
 }
 
 void MainWindow::refine() {
@@ -497,6 +562,7 @@ void MainWindow::refine() {
 }
 
 void MainWindow::onFrameReady(const QImage& image, const FrameInfo& info) {
+    playbackAntialias_.observe(info.antialias, info.timings);
     shownFrame_ = info;
     viewport_->setImage(image);
     updateSelectionView();
@@ -513,13 +579,46 @@ void MainWindow::selectAt(QPointF imagePoint) {
     const Camera camera = viewport_->viewCamera(image.size());
     const auto hit = pickPixel(*scene, shownFrame_.time, camera, int(imagePoint.x()), int(imagePoint.y()));
     setSelection(hit ? std::optional(selectionOf(*scene, *hit)) : std::nullopt);
-    if (!selection_) return;
-    if (const int line = creatingLine(editor()->toPlainText(), selection_->object)) {
+    if (selection_) showCreatingLine();
+}
+
+int MainWindow::editorLineOf(const CreatedAt& created, ObjectKind kind) const {
+    if (created.loc.file != document_->sourceName()) return 0;
+    const QTextBlock block = editor()->document()->findBlockByNumber(created.loc.line - 1);
+    if (!block.isValid()) return 0;
+    // The text may have changed since the scene parsed: the line must still hold the command.
+    const std::string_view name = objectKindName(kind);
+    const QString command = u'/' + QString::fromLatin1(name.data(), qsizetype(name.size()));
+    return block.text().mid(created.loc.column - 1).startsWith(command) ? created.loc.line : 0;
+}
+
+void MainWindow::showCreatingLine() {
+    const auto scene = document_->scene();
+    const auto object = findObject(*scene, *selection_);
+    const CreatedAt* created = document_->locations()->object(selection_->object);
+    if (!object || !created) return;
+    const QString target = selection_->target();
+    // Several objects from one line: a loop made them (or an include read more than once).
+    const QString loop =
+        created->sameLine > 1 ? tr(", one of %1 objects that line makes").arg(created->sameLine) : QString();
+    if (const int line = editorLineOf(*created, scene->objects[*object].kind)) {
         QTextCursor cursor(editor()->document()->findBlockByNumber(line - 1));
         cursor.movePosition(QTextCursor::EndOfBlock, QTextCursor::KeepAnchor);
         editor()->setTextCursor(cursor);
         editor()->centerCursor();
+        if (!loop.isEmpty())
+            statusBar()->showMessage(tr("%1 is made by line %2%3").arg(target).arg(line).arg(loop));
+        return;
     }
+    // Another file (an /include), or text that changed since: name the place, open nothing.
+    const QString place =
+        QStringLiteral("%1:%2").arg(QString::fromStdString(created->loc.file)).arg(created->loc.line);
+    statusBar()->showMessage(created->loc.file == document_->sourceName()
+                                 ? tr("%1 was made by line %2 before the latest edits%3")
+                                       .arg(target)
+                                       .arg(created->loc.line)
+                                       .arg(loop)
+                                 : tr("%1 is made in an included file, %2%3").arg(target, place, loop));
 }
 
 void MainWindow::setSelection(std::optional<Selection> selection) {
@@ -570,14 +669,29 @@ bool MainWindow::keySelectionHere() {
         statusBar()->showMessage(tr("Select an object or part first (click it in the picture)."), 5000);
         return false;
     }
-    const SceneObject& target = scene->objects[*object];
     const int frame = playback_->frame();
-    // An object's key is its absolute pose; a part's, its offset and rotation.
-    const Pose pose = selection_->part
-                          ? evaluateTrack(target.partTracks[std::size_t(*selection_->part)], frame, Pose{})
-                          : evaluateTrack(target.track, frame, target.rest);
-    applyEdit(editor(), keyEdit(editor()->toPlainText(), selection_->target(), frame, pose));
+    const Pose pose = selectionKeyPose(*scene, *object, selection_->part, frame);
+    // A new target's first key goes after its creating line, unless a loop
+    // made it (inside the loop it would be read on every pass) or it is in
+    // another file: then at the end.
+    const CreatedAt* created = document_->locations()->object(selection_->object);
+    const int createdAt =
+        created && created->sameLine == 1 ? editorLineOf(*created, scene->objects[*object].kind) : 0;
+    applyEdit(editor(), keyEdit(editor()->toPlainText(), selection_->target(), frame, pose, createdAt));
     return true;
+}
+
+void MainWindow::keyCameraHere() {
+    const auto scene = document_->scene();
+    const int frame = playback_->frame();
+    // What the user sees: the look-around if there is one, else the scene camera.
+    const auto& orbit = viewport_->orbit();
+    const Pose pose = cameraKeyPose(*scene, frame, orbit ? std::optional(orbit->pose()) : std::nullopt);
+    const QString text = editor()->toPlainText();
+    applyEdit(editor(), keyEdit(text, QStringLiteral("camera"), frame, pose, cameraLine(text)));
+    if (orbit && scene->camera.lookAt)
+        statusBar()->showMessage(
+            tr("The camera's /look_at turns it: the key moves the eye, not where it looks."), 8000);
 }
 
 QString MainWindow::selectionStatus() const { return selectionStatus_->text(); }
@@ -594,10 +708,18 @@ void MainWindow::updateStatus() {
         sizeStatus_->setText(tr("%1×%2").arg(shownFrame_.size.width()).arg(shownFrame_.size.height()));
     }
     fpsStatus_->setText(tr("%1 fps").arg(controller_->achievedFps(), 0, 'f', 1));
+    viewStatus_->setText(tr("view: %1").arg(ViewModeMenu::label(shownFrame_.view)));
     const int n = shownFrame_.antialias;
-    refineStatus_->setText(shownFrame_.serial == 0 || playback_->isPlaying() || !refinement_ ? QString()
+    refineStatus_->setText(shownFrame_.serial == 0 || playback_->isPlaying() || !refinement_ ||
+                                   shownFrame_.view != ViewMode::Shaded
+                               ? QString()
                            : isRefining() ? tr("refining: %1×%1 samples…").arg(n)
                                           : tr("refined: %1×%1 samples").arg(n));
+    const char* const modeNames[] = {"off", "auto", "on"};
+    playbackAntialiasStatus_->setText(
+        shownFrame_.serial != 0 && playback_->isPlaying() && shownFrame_.view == ViewMode::Shaded
+            ? tr("playing: %1×%1 samples (%2)").arg(n).arg(tr(modeNames[int(playbackAntialias_.mode())]))
+            : QString());
 }
 
 void MainWindow::openDialog() {
@@ -638,7 +760,9 @@ Image MainWindow::frameToSave() const {
     const QSize size = viewport_->renderSize();
     Renderer renderer;
     Image image;
-    renderer.render(*document_->scene(), playback_->time(), viewport_->viewCamera(size), image);
+    RenderOptions options;
+    options.view = viewModes_->mode();  // what the picture shows
+    renderer.render(*document_->scene(), playback_->time(), viewport_->viewCamera(size), image, options);
     return image;
 }
 
@@ -664,7 +788,7 @@ void MainWindow::exportPngSequence() {
         QFileDialog::getExistingDirectory(this, tr("Export PNG Sequence to Folder"), outputFolder());
     if (dir.isEmpty()) return;
     const QString stem = exportStem();
-    const FramePattern pattern = exportSequencePattern(dir, stem, scene->lastFrame() + 1);
+    const FramePattern pattern = exportSequencePattern(dir, stem, playback_->playRange().last + 1);
     runExport(std::move(scene), std::make_unique<PngSequenceSink>(pattern),
               QDir(dir).filePath(stem + "_*.png"));
 }
@@ -690,8 +814,8 @@ void MainWindow::exportVideo() {
     runExport(std::move(scene), std::make_unique<VideoSink>(file, *format, Rgb8{bg.r, bg.g, bg.b}), path);
 }
 
-void MainWindow::runExport(std::shared_ptr<const SceneDesc> scene, std::unique_ptr<FrameSink> sink,
-                           const QString& destination) {
+ExportJob MainWindow::exportJob(std::shared_ptr<const SceneDesc> scene, std::unique_ptr<FrameSink> sink,
+                                const QString& destination) const {
     ExportJob job;
     // Like `f2 render`: the scene's /camera size, seen from the current view.
     // The scene's moving camera, unless the user is looking around.
@@ -699,9 +823,18 @@ void MainWindow::runExport(std::shared_ptr<const SceneDesc> scene, std::unique_p
     job.view = viewport_->isOrbiting() ? FrameView::fixedCamera(viewport_->viewCamera(size))
                                        : FrameView::sceneCamera(size.width(), size.height());
     job.scene = std::move(scene);
-    job.lastFrame = job.scene->lastFrame();
+    // The loop's frames when it is set, else the whole scene.
+    const FrameRange frames = playback_->playRange();
+    job.firstFrame = frames.first;
+    job.lastFrame = frames.last;
     job.sink = std::move(sink);
     job.destination = destination;
+    return job;
+}
+
+void MainWindow::runExport(std::shared_ptr<const SceneDesc> scene, std::unique_ptr<FrameSink> sink,
+                           const QString& destination) {
+    ExportJob job = exportJob(std::move(scene), std::move(sink), destination);
     exportWithProgress(this, std::move(job), [this](bool ok, bool cancelled, const QString& message) {
         if (ok || cancelled)
             statusBar()->showMessage(message, 10000);

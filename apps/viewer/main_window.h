@@ -8,10 +8,14 @@
 #include <functional>
 #include <memory>
 
+#include "animation_exporter.h"
 #include "core/render/image.h"
+#include "playback_antialias.h"
 #include "render_controller.h"
+#include "scene_locations.h"
 #include "selection.h"
 
+class QActionGroup;
 class QLabel;
 class QListWidget;
 class QListWidgetItem;
@@ -31,6 +35,7 @@ class SceneEditor;
 class SceneDocument;
 class TimelineWidget;
 class ViewportWidget;
+class ViewModeMenu;
 enum class RenderScale;
 
 class MainWindow : public QMainWindow {
@@ -77,6 +82,8 @@ class MainWindow : public QMainWindow {
     TimelineWidget* timeline() const { return timeline_; }
     ViewportWidget* viewport() const { return viewport_; }
     RenderController* renderController() const { return controller_.get(); }
+    /// View › Mode: what the picture shows (shaded or a diagnostic view).
+    ViewModeMenu* viewModes() const { return viewModes_; }
     QListWidget* problemsList() const { return problemsList_; }
     QDockWidget* diagnosticsDock() const { return diagnosticsDock_; }
     EditorDock* editorDock() const { return editorDock_; }
@@ -101,15 +108,35 @@ class MainWindow : public QMainWindow {
     /// Writes the selection's pose at the current frame as its `/key` line
     /// there (replacing one at that frame). One undo step. False without a selection.
     bool keySelectionHere();
+    /// Writes the camera's `/key` line at the current frame (replacing one at
+    /// that frame) with the pose that shows the view on screen: the
+    /// look-around's eye and rotation while orbiting, else the scene camera's
+    /// own pose there (capture_pose.h). One undo step.
+    void keyCameraHere();
     /// While paused, the picture refines: the same frame again with 2x2, then
     /// kRefinedAntialias x kRefinedAntialias samples (View › Refine When Paused).
+    /// Only the shaded view refines: the diagnostic views trace pixel centres.
     void setRefinement(bool on);
     /// The picture on screen is still to be refined.
     bool isRefining() const;
     /// The last step of refinement: what `f2 render --aa 4` computes.
     static constexpr int kRefinedAntialias = 4;
+    /// View › Playback Anti-aliasing: the samples of frames rendered while playing (saved in the settings).
+    void setPlaybackAntialias(PlaybackAntialiasMode mode);
+    /// Its policy: the mode, the frame budget, the estimates (tests inject a cost model).
+    PlaybackAntialias& playbackAntialias() { return playbackAntialias_; }
+    /// The status bar's text about the samples of playing frames (empty while paused).
+    QString playbackAntialiasStatus() const;
+    /// The export of `scene` into `sink` from the current view: the loop's
+    /// frames when loop points are set, else frames 0..last, at the scene's
+    /// /camera size. `destination` names the output in messages.
+    ExportJob exportJob(std::shared_ptr<const SceneDesc> scene, std::unique_ptr<FrameSink> sink,
+                        const QString& destination) const;
     /// The status bar's text about the selection.
     QString selectionStatus() const;
+    /// The window is on screen and so is a finished picture: the latest
+    /// request, at the picture area's render size, refined when paused.
+    bool isPictureComplete() const;
     /// The frame on screen (time, timings, size); serial 0 before the first.
     const FrameInfo& shownFrame() const { return shownFrame_; }
 
@@ -146,6 +173,12 @@ class MainWindow : public QMainWindow {
     void updateStatus();
     /// Outline and status of the selection for the frame on screen.
     void updateSelectionView();
+    /// Selects the selection's creating line in the editor; says in the status
+    /// bar when a loop made it or it is in another file.
+    void showCreatingLine();
+    /// The editor's line of `created` (an object of `kind`), or 0 when it is
+    /// in another file or the text has changed there since the scene parsed.
+    int editorLineOf(const CreatedAt& created, ObjectKind kind) const;
     void openDialog();
     void saveFrame();
     void exportPngSequence();
@@ -154,9 +187,8 @@ class MainWindow : public QMainWindow {
     QString exportStem() const;
     /// True (after saying so) if `path` is the scene file, which the viewer never writes.
     bool refuseSceneFile(const QString& path, const QString& title);
-    /// The export flow shared by both: renders frames 0..last of `scene` at its
-    /// /camera size from the current view into `sink`, with progress; errors
-    /// go to a message box. `destination` names the output in messages.
+    /// The export flow shared by both: runs exportJob() with progress; errors
+    /// go to a message box.
     void runExport(std::shared_ptr<const SceneDesc> scene, std::unique_ptr<FrameSink> sink,
                    const QString& destination);
     void addRecentFile(const QString& path);
@@ -178,8 +210,13 @@ class MainWindow : public QMainWindow {
     QLabel* selectionStatus_ = nullptr;
     std::optional<Selection> selection_;
     QLabel* refineStatus_ = nullptr;
+    QLabel* viewStatus_ = nullptr;  ///< the view mode of the picture on screen
+    ViewModeMenu* viewModes_ = nullptr;
     bool refinement_ = true;
-    RenderRequest lastRequest_;  // the view the latest request showed, at 1 sample
+    QLabel* playbackAntialiasStatus_ = nullptr;
+    QActionGroup* playbackAntialiasActions_ = nullptr;
+    PlaybackAntialias playbackAntialias_;
+    RenderRequest lastRequest_;  // the view the latest request showed, at 1 sample (paused)
     QTimer frameTimer_;          // coalesces scheduleFrame() calls
     QTimer statusTimer_;         // lets the FPS readout fall to 0 when nothing renders
     FrameInfo shownFrame_;

@@ -22,6 +22,7 @@ void Playback::setRange(int lastFrame, int fps) {
     // One tick per scene frame: playback shows the scene at its own rate.
     timer_.setInterval(1000 / std::min(fps_, kMaxTickHz));
     setTime(std::clamp(time_, 0.0, double(lastFrame_)));
+    if (loop_) setLoop(FrameRange{std::min(loop_->first, lastFrame_), std::min(loop_->last, lastFrame_)});
     restartClock();
 }
 
@@ -60,6 +61,27 @@ void Playback::setSpeed(double speed) {
     restartClock();  // the new speed applies from now, without a jump
 }
 
+void Playback::setLoopIn(int frame) {
+    frame = std::clamp(frame, 0, lastFrame_);
+    const int out = loop_ ? loop_->last : lastFrame_;
+    setLoop(FrameRange{frame, std::max(frame, out)});
+}
+
+void Playback::setLoopOut(int frame) {
+    frame = std::clamp(frame, 0, lastFrame_);
+    const int in = loop_ ? loop_->first : 0;
+    setLoop(FrameRange{std::min(frame, in), frame});
+}
+
+void Playback::clearLoop() { setLoop(std::nullopt); }
+
+void Playback::setLoop(std::optional<FrameRange> loop) {
+    if (loop == loop_) return;
+    loop_ = loop;
+    restartClock();
+    emit loopRangeChanged();
+}
+
 void Playback::beginScrub() {
     resumeAfterScrub_ = resumeAfterScrub_ || isPlaying();
     pause();
@@ -75,10 +97,17 @@ void Playback::tick() {
     // Time follows the wall clock, not the tick count, so a late tick or a
     // slow frame does not slow the animation down: frames get skipped instead.
     const double elapsed = double(clock_.nsecsElapsed()) * 1e-9;
-    // Loop over [0, lastFrame + 1): the last frame is shown for one frame's duration too.
-    const double period = double(lastFrame_ + 1);
-    double t = std::fmod(clockBase_ + elapsed * fps_ * speed_, period);
-    setTime(std::min(t, double(lastFrame_) + 0.999));
+    // Loop over [first, last + 1): the last frame is shown for one frame's
+    // duration too. Playing from outside the loop starts at its in point.
+    const FrameRange range = playRange();
+    if (time_ < range.first || time_ >= range.last + 1.0) {
+        setTime(range.first);
+        restartClock();
+        return;
+    }
+    const double period = double(range.last - range.first + 1);
+    const double t = range.first + std::fmod(clockBase_ + elapsed * fps_ * speed_ - range.first, period);
+    setTime(std::min(t, double(range.last) + 0.999));
 }
 
 void Playback::restartClock() {

@@ -73,6 +73,7 @@ void RenderController::workerLoop(int threads) {
         info.time = request.time;
         info.serial = serial;
         info.antialias = request.options.antialias;
+        info.view = request.options.view;
         info.timings =
             renderer.render(*request.scene, request.time, request.camera, image, request.options, &cancel_);
         info.size = QSize(image.width, image.height);

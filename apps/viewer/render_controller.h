@@ -27,7 +27,7 @@ struct RenderRequest {
     std::shared_ptr<const SceneDesc> scene;
     double time = 0;        ///< in frames, may be fractional
     Camera camera;          ///< already at the render size
-    RenderOptions options;  ///< anti-aliasing, as `f2 render --aa`
+    RenderOptions options;  ///< anti-aliasing and view mode, as `f2 render --aa --view`
 };
 
 /// What came back with a frame.
@@ -35,8 +35,9 @@ struct FrameInfo {
     double time = 0;
     FrameTimings timings;
     QSize size;
-    int antialias = 1;   ///< N of the N x N samples per pixel it was rendered with
-    quint64 serial = 0;  ///< request number, increasing
+    int antialias = 1;                 ///< N of the N x N samples per pixel it was rendered with
+    ViewMode view = ViewMode::Shaded;  ///< what its pixels show
+    quint64 serial = 0;                ///< request number, increasing
 };
 
 class RenderController : public QObject {

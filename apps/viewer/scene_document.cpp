@@ -4,6 +4,7 @@
 #include <QFileInfo>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include "core/parse/symbol_index.h"
 #include "core/scene/default_scene.h"
 
 namespace f2::viewer {
@@ -23,6 +24,7 @@ QString editorText(const QByteArray& bytes) {
 
 SceneDocument::SceneDocument(QObject* parent) : QObject(parent) {
     scene_ = std::make_shared<const SceneDesc>();
+    locations_ = std::make_shared<const SceneLocations>();
     reloadTimer_.setSingleShot(true);
     reloadTimer_.setInterval(kReloadDelayMs);
     connect(&reloadTimer_, &QTimer::timeout, this, &SceneDocument::onSourcesChanged);
@@ -31,7 +33,15 @@ SceneDocument::SceneDocument(QObject* parent) : QObject(parent) {
         reloadTimer_.start();
     });
     connect(&watcher_, &QFileSystemWatcher::directoryChanged, this, &SceneDocument::onDirectoryChanged);
-    connect(&parseWatcher_, &QFutureWatcher<ParseResult>::finished, this, &SceneDocument::onParsed);
+    connect(&parseWatcher_, &QFutureWatcher<Parsed>::finished, this, &SceneDocument::onParsed);
+}
+
+SceneDocument::Parsed SceneDocument::parse(std::string_view text, const std::string& name) {
+    SymbolIndex index;
+    Parsed parsed;
+    parsed.result = parseScene(text, name, ParseLimits{}, index);
+    parsed.locations = SceneLocations::fromIndex(index);
+    return parsed;
 }
 
 SceneDocument::~SceneDocument() { parseWatcher_.waitForFinished(); }
@@ -61,7 +71,7 @@ void SceneDocument::loadDefault() {
     diskText_ = QString::fromUtf8(defaultSceneText().data(), qsizetype(defaultSceneText().size()));
     text_ = diskText_;
     emit textLoaded(text_);
-    apply(parseScene(defaultSceneText(), kDefaultSceneName), true);
+    apply(parse(defaultSceneText(), std::string(kDefaultSceneName)), true);
 }
 
 void SceneDocument::loadEmpty() {
@@ -71,7 +81,7 @@ void SceneDocument::loadEmpty() {
     diskText_.clear();
     text_.clear();
     emit textLoaded(text_);
-    apply(parseScene("", sourceName()), true);
+    apply(parse("", sourceName()), true);
 }
 
 std::optional<QString> SceneDocument::readDisk() const {
@@ -105,13 +115,13 @@ bool SceneDocument::reload() {
         diskText_.clear();
         text_.clear();
         emit textLoaded(text_);
-        apply(parseSceneFile(sourceName()), newDocument);
+        apply({parseSceneFile(sourceName()), {}}, newDocument);
         return false;
     }
     diskText_ = *disk;
     text_ = *disk;
     emit textLoaded(text_);
-    apply(parseScene(text_.toStdString(), sourceName()), newDocument);
+    apply(parse(text_.toStdString(), sourceName()), newDocument);
     return !hasErrors_;
 }
 
@@ -137,12 +147,12 @@ void SceneDocument::startParse() {
     parsing_ = true;
     textWaiting_ = false;
     parseDocument_ = documentId_;
-    parseWatcher_.setFuture(QtConcurrent::run(
-        [utf8 = text_.toStdString(), name = sourceName()] { return parseScene(utf8, name); }));
+    parseWatcher_.setFuture(
+        QtConcurrent::run([utf8 = text_.toStdString(), name = sourceName()] { return parse(utf8, name); }));
 }
 
 void SceneDocument::onParsed() {
-    ParseResult result = parseWatcher_.result();
+    Parsed result = parseWatcher_.result();
     const bool current = parseDocument_ == documentId_;
     parsing_ = false;
     if (textWaiting_ && current) {
@@ -167,7 +177,8 @@ void SceneDocument::markSaved(const QString& path, const QString& text) {
     if (text != text_) setText(text);
 }
 
-void SceneDocument::apply(ParseResult result, bool newDocument) {
+void SceneDocument::apply(Parsed parsed, bool newDocument) {
+    ParseResult& result = parsed.result;
     QStringList lines;
     for (const Diagnostic& d : result.diagnostics) lines << QString::fromStdString(d.format());
     const bool errors = !result.ok();
@@ -179,12 +190,14 @@ void SceneDocument::apply(ParseResult result, bool newDocument) {
 
     if (result.ok()) {
         scene_ = std::make_shared<const SceneDesc>(std::move(*result.scene));
+        locations_ = std::make_shared<const SceneLocations>(std::move(parsed.locations));
         goodDocument_ = documentId_;
         emit sceneChanged(newDocument);
     } else if (newDocument) {
         // Another file that does not parse: an empty stage, not the previous
         // file's scene beside this file's text.
         scene_ = std::make_shared<const SceneDesc>();
+        locations_ = std::make_shared<const SceneLocations>();
         goodDocument_ = documentId_;
         emit sceneChanged(true);
     }

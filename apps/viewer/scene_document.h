@@ -19,6 +19,7 @@
 
 #include "core/parse/parser.h"
 #include "core/scene/scene_desc.h"
+#include "scene_locations.h"
 
 namespace f2::viewer {
 
@@ -63,6 +64,8 @@ class SceneDocument : public QObject {
     /// The last scene without errors of this document (an empty stage if it
     /// never parsed).
     std::shared_ptr<const SceneDesc> scene() const { return scene_; }
+    /// Where the objects of scene() are created (from the same parse).
+    std::shared_ptr<const SceneLocations> locations() const { return locations_; }
     /// `FILE:LINE:COL: error: ...` lines of the latest parse (warnings included).
     QStringList diagnostics() const { return diagnostics_; }
     const std::vector<Diagnostic>& diagnosticList() const { return diagnosticList_; }
@@ -90,6 +93,13 @@ class SceneDocument : public QObject {
     void fileChangedOnDisk();
 
    private:
+    /// A parse and the object locations its symbol index gave.
+    struct Parsed {
+        ParseResult result;
+        SceneLocations locations;
+    };
+    static Parsed parse(std::string_view text, const std::string& name);
+
     /// Modification time and size of a file (null time and -1 if missing).
     struct Stamp {
         QDateTime modified;
@@ -101,7 +111,7 @@ class SceneDocument : public QObject {
     /// Parses the current text again (an included file changed).
     void reparse();
     void onParsed();
-    void apply(ParseResult result, bool newDocument);
+    void apply(Parsed parsed, bool newDocument);
     void setSources(const std::vector<std::string>& files);
     void stampSources();
     void watchSources();
@@ -121,13 +131,14 @@ class SceneDocument : public QObject {
     quint64 documentId_ = 0;  // a new id per load of another document
     quint64 goodDocument_ = 0;
     std::shared_ptr<const SceneDesc> scene_;
+    std::shared_ptr<const SceneLocations> locations_;
     QStringList diagnostics_;
     std::vector<Diagnostic> diagnosticList_;
     bool hasErrors_ = false;
     bool holdsUnsavedEdits_ = false;
 
     // Parsing edits off the GUI thread: one parse in flight, the newest text waiting.
-    QFutureWatcher<ParseResult> parseWatcher_;
+    QFutureWatcher<Parsed> parseWatcher_;
     bool parsing_ = false;
     bool textWaiting_ = false;
     quint64 parseDocument_ = 0;  // documentId_ of the parse in flight

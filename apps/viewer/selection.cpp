@@ -1,7 +1,5 @@
 #include "selection.h"
 
-#include <QRegularExpression>
-#include <QStringList>
 #include <algorithm>
 
 namespace f2::viewer {
@@ -20,16 +18,6 @@ std::optional<std::size_t> findObject(const SceneDesc& scene, const Selection& s
     for (std::size_t i = 0; i < scene.objects.size(); ++i)
         if (scene.objects[i].name == selection.object) return i;
     return std::nullopt;
-}
-
-int creatingLine(const QString& text, const std::string& name) {
-    const QRegularExpression command(
-        QStringLiteral(R"(^\s*/(sphere|cylinder|box|robot|human)[ \t]+%1(\s|#|$))")
-            .arg(QRegularExpression::escape(QString::fromStdString(name))));
-    const QStringList lines = text.split(QLatin1Char('\n'));
-    for (qsizetype i = 0; i < lines.size(); ++i)
-        if (command.match(lines[i]).hasMatch()) return int(i) + 1;
-    return 0;
 }
 
 std::optional<QRectF> outlineRect(const Camera& camera, const Bounds& bounds) {

@@ -1,6 +1,6 @@
 #pragma once
 /// The picked object or part: what identifies it across edits (its name, not
-/// its index), and the helpers that show it (outline, creating line, label).
+/// its index), and the helpers that show it (outline, label).
 #include <QRectF>
 #include <QString>
 #include <optional>
@@ -24,10 +24,6 @@ struct Selection {
 Selection selectionOf(const SceneDesc& scene, const PickHit& hit);
 /// Index of the selected object in `scene`, if it still exists.
 std::optional<std::size_t> findObject(const SceneDesc& scene, const Selection& selection);
-
-/// The 1-based line of `text` that creates object `name` (`/sphere name …`,
-/// `/robot name …`, …), or 0. Names made by `/repeat` or `{ }` are not found.
-int creatingLine(const QString& text, const std::string& name);
 
 /// The image rectangle (pixels of `camera`'s image) that holds the projection
 /// of `bounds`; nothing if part of it is behind the eye or it is empty.

@@ -6,8 +6,6 @@
 #include <QTextBlock>
 #include <cmath>
 
-#include "selection.h"
-
 namespace f2::viewer {
 
 namespace {
@@ -59,16 +57,26 @@ QString formatNumber(double value) {
     return s;
 }
 
-TextEdit cameraEdit(const QString& text, const CameraDesc& camera, const Pose& pose) {
+int cameraLine(const QString& text) {
     const QStringList lines = text.split(u'\n');
     for (qsizetype i = 0; i < lines.size(); ++i) {
+        const QStringList args = argumentsOf(lines[i], nullptr);
+        if (!args.isEmpty() && args[0] == QStringLiteral("/camera")) return int(i) + 1;
+    }
+    return 0;
+}
+
+TextEdit cameraEdit(const QString& text, const CameraDesc& camera, const Pose& pose) {
+    if (const int line = cameraLine(text)) {
+        const QString written = text.section(u'\n', line - 1, line - 1);
         QString comment;
-        const QStringList args = argumentsOf(lines[i], &comment);
-        if (args.isEmpty() || args[0] != QStringLiteral("/camera") || args.size() < 4) continue;
-        const qsizetype indent = lines[i].indexOf(u'/');
-        return {
-            int(i) + 1, true,
-            lines[i].left(indent) + QStringList(args.mid(0, 4)).join(u' ') + u' ' + poseText(pose) + comment};
+        const QStringList args = argumentsOf(written, &comment);
+        if (args.size() >= 4) {
+            const qsizetype indent = written.indexOf(u'/');
+            return {line, true,
+                    written.left(indent) + QStringList(args.mid(0, 4)).join(u' ') + u' ' + poseText(pose) +
+                        comment};
+        }
     }
     return {1, false,
             QStringLiteral("/camera %1 %2 %3 %4")
@@ -77,7 +85,7 @@ TextEdit cameraEdit(const QString& text, const CameraDesc& camera, const Pose& p
                 .arg(formatNumber(camera.distance), poseText(pose))};
 }
 
-TextEdit keyEdit(const QString& text, const QString& target, int frame, const Pose& pose) {
+TextEdit keyEdit(const QString& text, const QString& target, int frame, const Pose& pose, int createdAt) {
     const QString line = QStringLiteral("/key %1 %2 %3").arg(frame).arg(target, poseText(pose));
     const QStringList lines = text.split(u'\n');
     int lastKey = 0;
@@ -89,8 +97,7 @@ TextEdit keyEdit(const QString& text, const QString& target, int frame, const Po
         lastKey = int(i) + 1;
     }
     if (lastKey > 0) return {lastKey + 1, false, line};
-    const QString object = target.section(u'.', 0, 0);
-    if (const int created = creatingLine(text, object.toStdString())) return {created + 1, false, line};
+    if (createdAt > 0 && createdAt <= lines.size()) return {createdAt + 1, false, line};
     // At the end, on a line of its own.
     const int end = int(lines.size()) + (lines.last().isEmpty() ? 0 : 1);
     return {end, false, line};

@@ -1,6 +1,6 @@
 #pragma once
-/// Capture into the text: the lines *Set Camera from View* and *Key Selection
-/// Here* write, and where they go. Pure functions of the text, so the exact
+/// Capture into the text: the lines *Set Camera from View*, *Key Camera Here*
+/// and *Key Selection Here* write, and where they go. Pure functions of the text, so the exact
 /// lines are unit-tested; the window applies an edit as one undo step.
 #include <QString>
 
@@ -26,10 +26,14 @@ QString formatNumber(double value);
 /// `pose`; without one, a line with the scene's size and `d` goes first.
 TextEdit cameraEdit(const QString& text, const CameraDesc& camera, const Pose& pose);
 
-/// The `/key` edit for `target` (`name` or `name.part`) at `frame` with
-/// `pose`: replaces that target's key at that frame, else goes after the last
-/// key of the target, else after the line that creates the object (or at the end).
-TextEdit keyEdit(const QString& text, const QString& target, int frame, const Pose& pose);
+/// The `/key` edit for `target` (`name`, `name.part` or `camera`) at `frame`
+/// with `pose`: replaces that target's key at that frame, else goes after the
+/// last key of the target, else after line `createdAt` (1-based: the line that
+/// creates the object, or the `/camera` line), else (0) at the end.
+TextEdit keyEdit(const QString& text, const QString& target, int frame, const Pose& pose, int createdAt);
+
+/// The 1-based line of the `/camera` command in `text`, or 0.
+int cameraLine(const QString& text);
 
 /// Applies `edit` to `editor` as one undo step and selects the written line.
 void applyEdit(QPlainTextEdit* editor, const TextEdit& edit);

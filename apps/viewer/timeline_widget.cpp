@@ -29,8 +29,9 @@ TimelineWidget::TimelineWidget(QWidget* parent) : QWidget(parent) {
     setPlaying(false);
 
     slider_ = new KeyMarkerSlider(this);
-    slider_->setMinimumHeight(slider_->sizeHint().height() + 8);  // room for the key markers
-    slider_->setTracking(true);                                   // the picture follows while dragging
+    // Room for the loop flags above the groove and the key markers below it.
+    slider_->setMinimumHeight(slider_->sizeHint().height() + 16);
+    slider_->setTracking(true);            // the picture follows while dragging
     slider_->setFocusPolicy(Qt::NoFocus);  // keep Space/arrows for the window's shortcuts
     layout->addWidget(slider_, 1);
 
@@ -63,6 +64,9 @@ TimelineWidget::TimelineWidget(QWidget* parent) : QWidget(parent) {
     connect(slider_, &KeyMarkerSlider::markerClicked, this, [this](int frame) { emit seekRequested(frame); });
     connect(frameBox_, &QSpinBox::valueChanged, this, [this](int frame) { emit seekRequested(frame); });
     connect(slider_, &QSlider::sliderReleased, this, &TimelineWidget::scrubFinished);
+    connect(slider_, &KeyMarkerSlider::loopInRequested, this, &TimelineWidget::loopInRequested);
+    connect(slider_, &KeyMarkerSlider::loopOutRequested, this, &TimelineWidget::loopOutRequested);
+    connect(slider_, &KeyMarkerSlider::loopClearRequested, this, &TimelineWidget::loopClearRequested);
     connect(speed_, &QComboBox::currentIndexChanged, this,
             [this](int i) { emit speedChanged(speed_->itemData(i).toDouble()); });
     setRange(0, 24);
@@ -101,6 +105,8 @@ void TimelineWidget::setTime(double time) {
 }
 
 void TimelineWidget::setKeyMarkers(QList<int> frames) { slider_->setMarkers(std::move(frames)); }
+
+void TimelineWidget::setLoop(std::optional<std::pair<int, int>> loop) { slider_->setLoop(loop); }
 
 void TimelineWidget::setPlaying(bool playing) {
     playButton_->setIcon(style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));

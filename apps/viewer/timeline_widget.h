@@ -28,6 +28,8 @@ class TimelineWidget : public QWidget {
     QSpinBox* frameBox() const { return frameBox_; }
     /// Key frames of the selection, drawn on the slider; a click on one seeks there.
     void setKeyMarkers(QList<int> frames);
+    /// The loop in/out frames, drawn on the slider (nothing: no loop).
+    void setLoop(std::optional<std::pair<int, int>> loop);
     QComboBox* speedBox() const { return speed_; }
 
     static constexpr double kSpeeds[] = {0.25, 0.5, 1.0, 2.0, 4.0};
@@ -39,6 +41,10 @@ class TimelineWidget : public QWidget {
     void scrubStarted();
     void scrubFinished();
     void speedChanged(double speed);
+    /// The user set a loop point on the slider (dragged a flag or used its menu).
+    void loopInRequested(int frame);
+    void loopOutRequested(int frame);
+    void loopClearRequested();
 
    private:
     QToolButton* addButton(int standardIcon, const QString& tip);

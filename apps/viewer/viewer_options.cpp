@@ -3,7 +3,10 @@
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QElapsedTimer>
+#include <QPixmap>
+#include <QSaveFile>
 #include <QTimer>
+#include <QWindow>
 #include <cstdio>
 #include <memory>
 
@@ -33,7 +36,11 @@ ViewerOptions parseViewerOptions(const QApplication& app) {
     QCommandLineOption size("size", "Picture area size WIDTHxHEIGHT (default 800x600).", "size");
     QCommandLineOption quitAfter("quit-after", "Quit after <seconds> (for scripts).", "seconds");
     QCommandLineOption stats("stats", "Print the achieved frames per second on exit.");
-    parser.addOptions({frame, scale, size, quitAfter, stats});
+    QCommandLineOption screenshot("screenshot",
+                                  "Save the window as PNG <file> once the picture is complete (rendered at "
+                                  "the window's size and, when paused, refined), then quit.",
+                                  "file");
+    parser.addOptions({frame, scale, size, quitAfter, stats, screenshot});
     parser.process(app);
 
     ViewerOptions options;
@@ -70,6 +77,9 @@ ViewerOptions parseViewerOptions(const QApplication& app) {
         if (!ok || options.quitAfterSeconds <= 0) fail(parser, "--quit-after: expected seconds > 0");
     }
     options.stats = parser.isSet(stats);
+    options.screenshot = parser.value(screenshot);
+    if (parser.isSet(screenshot) && options.screenshot.isEmpty())
+        fail(parser, "--screenshot: expected a file");
     return options;
 }
 
@@ -102,12 +112,30 @@ void applyViewerOptions(const ViewerOptions& options, MainWindow& window) {
             const FrameInfo& last = window.shownFrame();
             std::fprintf(stderr,
                          "f2-viewer: %llu frames in %.2f s = %.1f fps achieved (scene %d fps), %dx%d, "
-                         "last frame %.1f ms, %llu requests skipped\n",
+                         "last frame %.1f ms with %dx%d samples, %llu requests skipped\n",
                          static_cast<unsigned long long>(frames), seconds, frames / seconds,
                          window.playback()->fps(), last.size.width(), last.size.height(),
-                         last.timings.totalMs(),
+                         last.timings.totalMs(), last.antialias, last.antialias,
                          static_cast<unsigned long long>(window.renderController()->framesSkipped()));
         });
+    }
+    if (!options.screenshot.isEmpty()) {
+        // Wait for a real condition, not a delay: the window is on screen and
+        // the frame just shown is complete. Checked after every frame (this
+        // connection runs after the window's own, which has shown it).
+        QObject::connect(window.renderController(), &RenderController::frameReady, &window,
+                         [&window, file = options.screenshot] {
+                             if (!window.isPictureComplete()) return;
+                             // Let the window paint that frame first, then grab it.
+                             QTimer::singleShot(0, &window, [&window, file] {
+                                 QSaveFile out(file);
+                                 const bool ok = out.open(QIODevice::WriteOnly) &&
+                                                 window.grab().save(&out, "PNG") && out.commit();
+                                 if (!ok)
+                                     std::fprintf(stderr, "f2-viewer: cannot write %s\n", qPrintable(file));
+                                 QCoreApplication::exit(ok ? 0 : 1);
+                             });
+                         });
     }
     if (options.quitAfterSeconds > 0)
         QTimer::singleShot(int(options.quitAfterSeconds * 1000), qApp, &QCoreApplication::quit);

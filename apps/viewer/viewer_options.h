@@ -17,6 +17,7 @@ struct ViewerOptions {
     QSize viewportSize;           ///< invalid: the default 800x600
     double quitAfterSeconds = 0;  ///< > 0: quit after this long (scripts)
     bool stats = false;           ///< print achieved FPS on stderr when quitting
+    QString screenshot;           ///< save the window here once a frame is complete, then quit
 };
 
 /// Parses argv; exits with a message on --help, --version or a bad option.

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <sstream>
 
+#include "core/anim/light_frame.h"
 #include "io/frame_primitives.h"
 
 namespace f2 {
@@ -50,6 +52,22 @@ std::string shape(const PlacedPrimitive& p) {
             return join({"box { ", vec(p.size * -0.5f), ", ", vec(p.size * 0.5f)});
     }
     return "";
+}
+
+/// `color rgb <i, i, i>`: f2's lights are white.
+std::string grey(float intensity) {
+    std::string i = formatNumber(intensity);
+    return join({"color rgb <", i, ", ", i, ", ", i, ">"});
+}
+
+/// A disc of n x n samples, as f2 samples a soft light: a fixed grid (no
+/// jitter), pushed out to a circle, every sample traced (adaptive deep enough
+/// that POV-Ray never stops at the corners; the mean is then exact for n a
+/// power of two), facing each lit point when `orient`.
+std::string areaLight(Vec3 axisA, Vec3 axisB, int n, bool orient) {
+    std::string count = std::to_string(n);
+    return join({"area_light ", vec(axisA), ", ", vec(axisB), ", ", count, ", ", count, " circular",
+                 orient ? " orient" : "", " adaptive 10"});
 }
 
 /// Radius of a sphere around the primitive's centre that holds it.
@@ -103,10 +121,32 @@ std::string povScene(const SceneDesc& scene, double t, const Camera& camera, con
     float far = length(hi - lo) * 2 + 1000;
     for (const DirectionalLight& light : scene.lights) {
         Vec3 toLight = -normalize(light.direction);
-        std::string i = formatNumber(light.intensity);
-        out << "light_source { " << vec(centre + toLight * far) << " color rgb <" << i << ", " << i << ", "
-            << i << "> parallel point_at " << vec(centre) << " }  // travels along " << vec(light.direction)
-            << "\n";
+        out << "light_source { " << vec(centre + toLight * far) << " " << grey(light.intensity)
+            << " parallel point_at " << vec(centre);
+        if (light.sun.soft()) {
+            // The sun's disc (angular radius r) as a parallel area light: its
+            // sample k shines along the light's place plus the sample's offset,
+            // minus point_at, as f2's L + (u a + v b) 2 tan r (docs/rendering.md).
+            const DiscAxes axes = discAxes(toLight);
+            const float span = far * float(2.0 * std::tan(double(light.sun.size) * std::numbers::pi / 180.0));
+            out << "\n  " << areaLight(axes.a * span, axes.b * span, light.sun.samplesPerSide, false) << "\n";
+        }
+        out << " }  // travels along " << vec(light.direction) << "\n";
+    }
+    for (const LocalLight& light : scene.localLights) {
+        out << "light_source { " << vec(light.position) << " " << grey(light.intensity);
+        if (light.kind == LocalLightKind::Spot)
+            out << "\n  spotlight point_at " << vec(light.position + normalize(light.direction)) << " radius "
+                << formatNumber(light.radius) << " falloff " << formatNumber(light.falloff) << " tightness "
+                << formatNumber(light.tightness);
+        if (light.fade.fades())
+            out << "\n  fade_distance " << formatNumber(light.fade.distance) << " fade_power "
+                << formatNumber(light.fade.power);
+        if (light.area.soft())
+            out << "\n  "
+                << areaLight({light.area.size, 0, 0}, {0, 0, light.area.size}, light.area.samplesPerSide,
+                             true);
+        out << " }\n";
     }
     out << "\n";
 

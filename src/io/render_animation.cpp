@@ -34,6 +34,7 @@ AnimationResult renderAnimation(const SceneDesc& scene, const AnimationRange& ra
                                 const AnimationOptions& options) {
     AnimationResult result;
     result.total = range.count();
+    const MotionBlur& blur = options.motionBlur;
     Renderer renderer(options.threads);
     result.threads = renderer.threadCount();
     auto cancelled = [cancel] { return cancel && cancel->load(); };
@@ -46,7 +47,8 @@ AnimationResult renderAnimation(const SceneDesc& scene, const AnimationRange& ra
     };
     auto report = [&] {
         result.done = sink.framesCompleted();
-        if (progress) progress({result.done, result.skipped, result.total});
+        if (progress)
+            progress({result.done, result.skipped, result.total, 0, blur.enabled() ? blur.samples : 1});
     };
 
     std::string error;
@@ -62,7 +64,15 @@ AnimationResult renderAnimation(const SceneDesc& scene, const AnimationRange& ra
         }
         const double t = range.timeOf(f);
         const FrameTimings timings =
-            renderer.render(scene, t, view.at(scene, t), image, options.render, cancel);
+            blur.enabled()
+                ? renderer.renderAveraged(
+                      scene, blur.subFrames(scene, view, t, range.frameLength()), image, options.render,
+                      cancel,
+                      [&](int subFrames) {
+                          if (progress && subFrames < blur.samples)
+                              progress({result.done, result.skipped, result.total, subFrames, blur.samples});
+                      })
+                : renderer.render(scene, t, view.at(scene, t), image, options.render, cancel);
         if (!timings.complete || cancelled()) return stop("");  // the image is partial: dropped
         result.renderMs += timings.totalMs();
         if (!sink.write(image, f, error, cancel)) return stop(error);

@@ -8,6 +8,7 @@
 
 #include "core/anim/frame_time.h"
 #include "core/render/camera.h"
+#include "core/render/motion_blur.h"
 #include "core/render/renderer.h"
 #include "core/scene/scene_desc.h"
 #include "io/frame_sink.h"
@@ -29,6 +30,8 @@ struct AnimationRange {
     double timeOf(std::int64_t frame) const {
         return timeOffset + sceneTimeOfOutputFrame(frame, sceneFps, outputFps);
     }
+    /// Length of one output frame in scene frames (a motion-blur shutter is a fraction of it).
+    double frameLength() const { return double(sceneFps) / double(outputFps); }
     /// The frame belongs to this shard (whether or not it is in [first, last]).
     bool inShard(std::int64_t frame) const { return frame % shardCount == shardIndex; }
     /// Frames first, first + step, ... up to last that are in this shard.
@@ -41,11 +44,15 @@ struct AnimationProgress {
     std::int64_t done = 0;     ///< complete in the output (rendered or skipped)
     std::int64_t skipped = 0;  ///< of them, already there (a resumed sequence)
     std::int64_t total = 0;
+    /// Motion blur: sub-frames of the frame in flight already traced (0 at a frame's end), of
+    /// subFramesPerFrame.
+    int subFramesDone = 0, subFramesPerFrame = 1;
 };
 
 struct AnimationOptions {
     int threads = 0;  ///< render threads; 0 = every core
     RenderOptions render;
+    MotionBlur motionBlur;  ///< off by default: every frame sharp
 };
 
 struct AnimationResult {
@@ -61,7 +68,7 @@ struct AnimationResult {
 /// Renders the frames of `range` (in order) of `scene` seen through `view`
 /// (the scene's moving camera, or a fixed one) into `sink`. Stops inside the current frame when `cancel` is
 /// raised (that frame is dropped) and abandons the sink, as on any error; `progress` (optional) is called, on
-/// this thread, after every frame.
+/// this thread, after every frame, and with motion blur also after each sub-frame but a frame's last.
 AnimationResult renderAnimation(const SceneDesc& scene, const AnimationRange& range, const FrameView& view,
                                 FrameSink& sink, const std::atomic<bool>* cancel,
                                 const std::function<void(const AnimationProgress&)>& progress = {},

@@ -69,14 +69,56 @@ std::string uriFromPath(std::string_view path) {
     return uri;
 }
 
-Analysis analyze(std::string uri, TextDocument document) {
+Analysis analyze(std::string uri, TextDocument document, const SourceOverlay& open, const std::string& root) {
     Analysis a;
     a.path = pathFromUri(uri);
     a.uri = std::move(uri);
     a.document = std::move(document);
-    a.result = parseScene(a.document.text(), a.path, ParseLimits{}, a.index);
-    a.variables = scanVariables(a.document);
+    if (const auto rootText = open.find(root); !root.empty() && root != a.path && rootText != open.end()) {
+        // This document's own text stands for its file in the including scene.
+        SourceOverlay withThis = open;
+        withThis[a.path] = a.document.text();
+        a.sources = scanScene(root, TextDocument(rootText->second, 0), withThis);
+        a.self = a.sources.find(a.path);
+        if (a.self >= 0) {
+            a.root = root;
+            a.result = parseScene(rootText->second, root, ParseLimits{}, a.index, withThis);
+            return a;
+        }
+    }
+    a.root = a.path;
+    a.result = parseScene(a.document.text(), a.path, ParseLimits{}, a.index, open);
+    a.sources = scanScene(a.path, a.document, open);
+    a.self = 0;
     return a;
+}
+
+std::string Analysis::uriOf(std::string_view file) const {
+    if (file == path) return uri;
+    const auto open = openUris.find(file);
+    return open != openUris.end() ? open->second : uriFromPath(file);
+}
+
+const TextDocument* Analysis::textOf(std::string_view file) const {
+    if (file == path) return &document;
+    const int i = sources.find(file);
+    return i < 0 ? nullptr : &sources.files[static_cast<std::size_t>(i)].document;
+}
+
+Range Analysis::anyRangeOf(const TokenSpan& span) const {
+    if (const TextDocument* text = textOf(span.loc.file))
+        return text->range(span.loc.line, span.loc.column, span.length);
+    const int line = span.loc.line - 1, column = span.loc.column - 1;
+    return {{line, column}, {line, column + span.length}};
+}
+
+std::vector<const VariableOccurrence*> Analysis::ownVariables() const {
+    std::vector<const VariableOccurrence*> out;
+    for (const VariableOccurrence& v : sources.variables) {
+        // A file read twice (two includes) lists its lines twice: the first reading is enough.
+        if (v.file == self && v.order == sources.orderOf(self, v.line)) out.push_back(&v);
+    }
+    return out;
 }
 
 std::optional<PartSuffix> partAfter(const Analysis& a, const TokenSpan& name) {
@@ -131,11 +173,11 @@ SymbolAt symbolAt(const Analysis& a, Position p) {
         return Range{{p.line, utf16Length(lineText.substr(0, begin))},
                      {p.line, utf16Length(lineText.substr(0, end))}};
     };
-    for (const VariableOccurrence& v : a.variables) {
-        if (v.line == p.line && byte >= v.begin && byte <= v.end) {
+    for (const VariableOccurrence* v : a.ownVariables()) {
+        if (v->line == p.line && byte >= v->begin && byte <= v->end) {
             at.kind = SymbolAt::Kind::Variable;
-            at.range = rangeInLine(v.begin, v.end);
-            at.text = v.name;
+            at.range = rangeInLine(v->begin, v->end);
+            at.text = v->name;
             return at;
         }
     }
@@ -154,9 +196,18 @@ SymbolAt symbolAt(const Analysis& a, Position p) {
         if (onName(use.name, use.object)) return at;
     }
 
-    // A command word.
+    // A command word, or `camera` as an argument (SPEC 9.1: no object has that name).
     LineTokens tokens;
     tokenizeLine(a.document.line(p.line), tokens);
+    for (int i = 1; i < std::min(tokens.count, kMaxStoredTokens); ++i) {
+        const Token& t = tokens.tokens[static_cast<std::size_t>(i)];
+        const auto begin = static_cast<std::size_t>(t.column - 1);
+        if (t.text == "camera" && byte >= begin && byte <= begin + t.text.size()) {
+            at.kind = SymbolAt::Kind::Camera;
+            at.range = rangeInLine(begin, begin + t.text.size());
+            return at;
+        }
+    }
     if (tokens.count > 0) {
         const Token& first = tokens.tokens[0];
         const std::size_t begin = static_cast<std::size_t>(first.column - 1);

@@ -3,6 +3,8 @@
 /// cursor, objects by name, key counts. Rebuilt on every change.
 #include <array>
 #include <cstddef>
+#include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -10,6 +12,7 @@
 
 #include "core/parse/parser.h"
 #include "core/parse/symbol_index.h"
+#include "lsp/scene_sources.h"
 #include "lsp/source_scan.h"
 #include "lsp/text_document.h"
 
@@ -21,13 +24,22 @@ std::string pathFromUri(std::string_view uri);
 /// A `file://` URI for an absolute path.
 std::string uriFromPath(std::string_view path);
 
+/// A document and the scene it belongs to. The scene is the document itself,
+/// or (`root`) an open document that includes it: then names and variables
+/// of the including file are known here, and errors are those of the file as
+/// that scene reads it.
 struct Analysis {
     std::string uri;
-    std::string path;  ///< the file name given to the parser (diagnostics name it)
+    std::string path;  ///< this document's file name (diagnostics name it)
+    std::string root;  ///< the file parsed as the scene: `path`, or a file that includes it
     TextDocument document;
     ParseResult result;
     SymbolIndex index;
-    std::vector<VariableOccurrence> variables;  ///< of this document's text
+    SceneSources sources;  ///< the scene's files from `root`, their variables in reading order
+    int self = 0;          ///< this document in sources.files
+    /// The URIs the client gave other open documents, by path (a client may
+    /// spell a path differently from uriFromPath).
+    std::map<std::string, std::string, std::less<>> openUris;
 
     /// True when a place is in this document (not in an included file).
     bool inDocument(const SourceLoc& loc) const { return loc.file == path; }
@@ -35,13 +47,26 @@ struct Analysis {
     Range rangeOf(const TokenSpan& span) const {
         return document.range(span.loc.line, span.loc.column, span.length);
     }
+    /// URI of a file of the scene (this document's own for it).
+    std::string uriOf(std::string_view file) const;
+    /// The text of a file of the scene, if the scan read it.
+    const TextDocument* textOf(std::string_view file) const;
+    /// Range of a token span in any file of the scene (bytes as UTF-16 when
+    /// the file's text is unknown).
+    Range anyRangeOf(const TokenSpan& span) const;
+    /// This document's variable occurrences, in line order.
+    std::vector<const VariableOccurrence*> ownVariables() const;
 };
 
-Analysis analyze(std::string uri, TextDocument document);
+/// Analyses a document. `open`: the texts of open documents, which replace
+/// the files on disk; `root`: the path of an open document that includes this
+/// one (empty: the document is its own scene).
+Analysis analyze(std::string uri, TextDocument document, const SourceOverlay& open = {},
+                 const std::string& root = {});
 
 /// What is under a position.
 struct SymbolAt {
-    enum class Kind { None, Command, Object, Part, Variable, Include } kind = Kind::None;
+    enum class Kind { None, Command, Object, Part, Variable, Include, Camera } kind = Kind::None;
     std::size_t object = 0;    ///< Object and Part: index into index.objects
     int part = -1;             ///< Part: PartId index
     std::string_view command;  ///< Command: its name

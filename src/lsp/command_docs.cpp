@@ -30,9 +30,25 @@ constexpr std::array kDocs = {
                kNumbers},
     CommandDoc{"/amb_light", "/amb_light <i>", "/amb_light ${1:0.2}",
                "Ambient light of intensity `i ≥ 0`; several add up.", kNumbers},
-    CommandDoc{"/dir_light", "/dir_light <i> <x> <y> <z>", "/dir_light ${1:0.8} ${2:0} ${3:-1} ${4:1}",
+    CommandDoc{"/dir_light", "/dir_light <i> <x> <y> <z> [angle <r> <n>]",
+               "/dir_light ${1:0.8} ${2:0} ${3:-1} ${4:1}",
                "A directional light of intensity `i ≥ 0` whose light travels along `(x, y, z)`; it casts "
-               "shadows.",
+               "shadows. `angle r n`: a sun of angular radius `r` degrees with soft shadows from `n × n` "
+               "shadow rays.",
+               kNumbers},
+    CommandDoc{"/point_light", "/point_light <i> <x> <y> <z> [fade <d> <p>] [size <s> <n>]",
+               "/point_light ${1:0.8} ${2:0} ${3:300} ${4:0}",
+               "A light of intensity `i ≥ 0` at `(x, y, z)`, casting shadows. `fade d p`: intensity "
+               "`i · 2 / (1 + (D/d)^p)` at distance `D` (POV-Ray's fade_distance, fade_power). `size s n`: "
+               "soft shadows from a disc of diameter `s`, `n × n` shadow rays.",
+               kNumbers},
+    CommandDoc{"/spot_light",
+               "/spot_light <i> <x> <y> <z> <dx> <dy> <dz> <radius> <falloff> [tightness <k>] [fade <d> <p>] "
+               "[size <s> <n>]",
+               "/spot_light ${1:0.8} ${2:0} ${3:300} ${4:0} ${5:0} ${6:-1} ${7:0} ${8:20} ${9:30}",
+               "A point light whose light travels along `(dx, dy, dz)` in a cone: full within `radius` "
+               "degrees of the axis, none beyond `falloff`, a smooth edge between (POV-Ray's spotlight). "
+               "Options as for `/point_light`, and `tightness k`: times `cos(θ)^k`.",
                kNumbers},
     CommandDoc{"/background", "/background <r> <g> <b>", "/background ${1:0} ${2:0} ${3:0}",
                "Colour of rays that hit nothing, integers 0..255 (default black). At most one per scene.",

@@ -93,14 +93,16 @@ Json expressionItems(const Analysis& a, Position p, std::string_view line, std::
     const Range replace{{p.line, utf16Length(line.substr(0, begin))}, p};
     Json items = Json::array();
     std::vector<std::string> seen;
-    for (const VariableOccurrence& v : a.variables) {
-        if (!v.definition || v.line > p.line || std::find(seen.begin(), seen.end(), v.name) != seen.end())
+    const std::uint32_t here = a.sources.orderOf(a.self, p.line);
+    for (const VariableOccurrence& v : a.sources.variables) {
+        if (!v.definition || v.order > here || std::find(seen.begin(), seen.end(), v.name) != seen.end())
             continue;
         seen.push_back(v.name);
-        items.push_back(
-            item(v.name, kCompletionVariable,
-                 (v.loop ? "loop variable, line " : "variable, line ") + std::to_string(v.line + 1), replace,
-                 v.name));
+        const std::string& file = a.sources.files[static_cast<std::size_t>(v.file)].path;
+        std::string where = "line " + std::to_string(v.line + 1);
+        if (v.file != a.self) where += " of " + std::filesystem::path(file).filename().string();
+        items.push_back(item(v.name, kCompletionVariable, (v.loop ? "loop variable, " : "variable, ") + where,
+                             replace, v.name));
     }
     items.push_back(item("pi", kCompletionVariable, "3.14159…", replace, "pi"));
     for (std::string_view f : expressionFunctions()) {

@@ -1,47 +1,98 @@
 // publishDiagnostics: the parser's errors and warnings with the range of the
-// token they point at, grouped by file (a scene's includes have their own).
-#include <fstream>
-#include <iterator>
+// token they point at, grouped by file (a scene's includes have their own),
+// and on each `/include` line of the document a summary of the problems in
+// the files it reads, which an editor shows even when those files are closed.
+#include <filesystem>
 #include <map>
-#include <sstream>
 
+#include "core/parse/source_expander.h"
 #include "lsp/features.h"
 
 namespace f2::lsp {
 
 namespace {
 
-/// The text of an included file, to turn its byte columns into positions.
-TextDocument readDocument(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    return TextDocument(std::move(text), 0);
+/// At most this many related places in an include line's summary.
+constexpr std::size_t kMaxRelated = 20;
+
+/// The `/include` line of this document through which `file` is read, or -1.
+int includeLineFor(const Analysis& a, const std::string& file) {
+    const int target = a.sources.find(file);
+    if (target < 0) return -1;
+    for (const IncludeLink& link : a.sources.includes) {
+        if (link.file == a.self && a.sources.reaches(link.target, target)) return link.line;
+    }
+    return -1;
 }
+
+struct IncludeSummary {
+    int errors = 0, warnings = 0;
+    std::string first;  ///< the first problem, "part.f2:3:8: message"
+    Json related = Json::array();
+};
 
 }  // namespace
 
 Json publishDiagnostics(const Analysis& a) {
     std::map<std::string, Json> byFile;  // path -> Diagnostic array
-    std::map<std::string, TextDocument> others;
+    std::map<std::string, TextDocument> unread;
+    std::map<int, IncludeSummary> summaries;  // by include line of this document
     byFile[a.path] = Json::array();
     for (const Diagnostic& d : a.result.diagnostics) {
-        const TextDocument* doc = &a.document;
-        if (!a.inDocument(d.loc)) {
-            auto it = others.find(d.loc.file);
-            if (it == others.end()) it = others.emplace(d.loc.file, readDocument(d.loc.file)).first;
+        const TextDocument* doc = a.textOf(d.loc.file);
+        if (!doc) {
+            // A file the text scan did not reach (an include path built by an expression).
+            auto it = unread.find(d.loc.file);
+            if (it == unread.end()) {
+                FileRead read = readSourceFile(d.loc.file, ParseLimits{}.maxSceneBytes);
+                it = unread.emplace(d.loc.file, TextDocument(std::move(read.text), 0)).first;
+            }
             doc = &it->second;
         }
+        const Range range = doc->tokenRange(d.loc.line, d.loc.column);
         Json& list = byFile[d.loc.file];
         if (list.is_null()) list = Json::array();
-        list.push_back({{"range", toJson(doc->tokenRange(d.loc.line, d.loc.column))},
+        list.push_back({{"range", toJson(range)},
                         {"severity", d.severity == Severity::Error ? kSeverityError : kSeverityWarning},
                         {"source", "f2"},
                         {"message", d.message}});
+        if (a.inDocument(d.loc)) continue;
+        const int line = includeLineFor(a, d.loc.file);
+        if (line < 0) continue;
+        IncludeSummary& s = summaries[line];
+        (d.severity == Severity::Error ? s.errors : s.warnings) += 1;
+        const std::string shortName = std::filesystem::path(d.loc.file)
+                                          .lexically_relative(std::filesystem::path(a.path).parent_path())
+                                          .string();
+        if (s.first.empty()) {
+            s.first = shortName + ":" + std::to_string(d.loc.line) + ":" + std::to_string(d.loc.column) +
+                      ": " + d.message;
+        }
+        if (s.related.size() < kMaxRelated) {
+            s.related.push_back({{"location", location(a.uriOf(d.loc.file), range)}, {"message", d.message}});
+        }
+    }
+    Json& own = byFile[a.path];
+    for (const auto& [line, s] : summaries) {
+        const auto include = includeOn(a.document, line);
+        const std::string_view text = a.document.line(line);
+        const Range range = include ? Range{{line, utf16Length(text.substr(0, include->begin))},
+                                            {line, utf16Length(text.substr(0, include->end))}}
+                                    : a.document.lineRange(line);
+        const int more = s.errors + s.warnings - 1;
+        std::string message = "in the included file " + s.first;
+        if (more > 0)
+            message += " (and " + std::to_string(more) + " more problem" + (more > 1 ? "s" : "") + ")";
+        own.push_back({{"range", toJson(range)},
+                       {"severity", s.errors > 0 ? kSeverityError : kSeverityWarning},
+                       {"source", "f2"},
+                       {"message", std::move(message)},
+                       {"relatedInformation", s.related}});
     }
     Json result = Json::array();
-    result.push_back({{"uri", a.uri}, {"version", a.document.version()}, {"diagnostics", byFile[a.path]}});
+    result.push_back({{"uri", a.uri}, {"version", a.document.version()}, {"diagnostics", own}});
     for (auto& [file, list] : byFile) {
-        if (file != a.path) result.push_back({{"uri", uriFromPath(file)}, {"diagnostics", std::move(list)}});
+        if (file != a.path) result.push_back({{"uri", a.uriOf(file)}, {"diagnostics", std::move(list)}});
     }
     return result;
 }

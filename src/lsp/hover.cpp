@@ -1,9 +1,16 @@
 // textDocument/hover: a command's syntax and meaning; an object's kind, where
-// it is created, its parts and keys and its pose at frame 0; a part's shape and pivot.
+// it is created, its parts and keys and its pose at frame 0; a part's shape and
+// pivot; the camera's line, keys, look-at, attachment and pose at frame 0; a
+// variable's definition; an include's file.
 #include <cstdio>
 #include <filesystem>
+#include <optional>
+#include <utility>
 
+#include "core/anim/camera_motion.h"
 #include "core/anim/track.h"
+#include "core/parse/expression.h"
+#include "core/parse/lexer.h"
 #include "core/scene/models.h"
 #include "lsp/command_docs.h"
 #include "lsp/features.h"
@@ -97,13 +104,114 @@ std::string partHover(const Analysis& a, std::size_t index, int part) {
     return text;
 }
 
+/// The first argument after a `/let` or `/repeat` variable: a number, a word or a `( … )`.
+std::string_view valueText(std::string_view line, std::size_t nameEnd) {
+    std::size_t b = line.find_first_not_of(" \t", nameEnd);
+    if (b == std::string_view::npos) return {};
+    if (line[b] != '(') return line.substr(b, line.find_first_of(" \t#", b) - b);
+    int depth = 0;
+    for (std::size_t i = b; i < line.size(); ++i) {
+        if (line[i] == '(') ++depth;
+        if (line[i] == ')' && --depth == 0) return line.substr(b, i + 1 - b);
+    }
+    return {};
+}
+
+/// The value a definition gives when the `/let` and `/repeat` lines before it
+/// run in reading order, each loop at its first pass; nullopt when one fails.
+std::optional<double> definedValue(const Analysis& a, const VariableOccurrence& def) {
+    Variables values;
+    for (const VariableOccurrence& v : a.sources.variables) {
+        if (!v.definition) continue;
+        const std::string_view text =
+            valueText(a.sources.files[static_cast<std::size_t>(v.file)].document.line(v.line), v.end);
+        const ExpressionResult r =
+            text.starts_with('(') ? evaluateParenthesized(text, values) : evaluateExpression(text, values);
+        if (r.ok) values.set(v.name, r.value);
+        if (v.file == def.file && v.line == def.line && v.order == def.order) return values.find(def.name);
+    }
+    return std::nullopt;
+}
+
 std::string variableHover(const Analysis& a, const std::string& name, int line) {
-    const auto def = definitionOf(a.variables, name, line);
-    if (!def)
-        return "**variable** `" + name + "`: not defined in this file (in an included file, or unknown)";
-    return "**" + std::string(def->loop ? "loop variable" : "variable") + "** `" + name +
-           "`, defined at line " + std::to_string(def->line + 1) + ":\n```f2\n" +
-           std::string(a.document.line(def->line)) + "\n```";
+    const auto def = definitionOf(a.sources.variables, name, a.sources.orderOf(a.self, line));
+    if (!def) return "**variable** `" + name + "`: not defined in this scene";
+    const SceneFile& file = a.sources.files[static_cast<std::size_t>(def->file)];
+    const SourceLoc loc{file.path, def->line + 1, 1};
+    std::string text = "**" + std::string(def->loop ? "loop variable" : "variable") + "** `" + name + "`";
+    if (const auto value = definedValue(a, *def)) {
+        text +=
+            def->loop ? " = " + formatNumber(*value) + " on the first pass" : " = " + formatNumber(*value);
+    }
+    return text + ", defined at " + placeText(a, loc) + ":\n```f2\n" +
+           std::string(file.document.line(def->line)) + "\n```";
+}
+
+/// The first line of the scene's files whose command is `command` (and, if
+/// given, whose first argument is `firstArgument`): "line N[ of FILE]" and its text.
+std::optional<std::pair<std::string, std::string>> findCommandLine(const Analysis& a,
+                                                                   std::string_view command,
+                                                                   std::string_view firstArgument = {}) {
+    for (const SceneFile& file : a.sources.files) {
+        for (int i = 0; i < file.document.lineCount(); ++i) {
+            LineTokens tokens;
+            tokenizeLine(file.document.line(i), tokens);
+            if (tokens.count < 1 || tokens.tokens[0].text != command) continue;
+            if (!firstArgument.empty() && (tokens.count < 2 || tokens.tokens[1].text != firstArgument))
+                continue;
+            return std::pair{placeText(a, {file.path, i + 1, 1}), std::string(file.document.line(i))};
+        }
+    }
+    return std::nullopt;
+}
+
+std::string frameRefText(const SceneDesc& scene, const FrameRef& ref) {
+    std::string text = "`" + scene.objects[ref.object].name;
+    if (ref.part >= 0) text += "." + std::string(kPartNames[static_cast<std::size_t>(ref.part)]);
+    return text + "`";
+}
+
+/// `camera`: its `/camera` line, keys, what it looks at and rides on, its pose at frame 0.
+std::string cameraHover(const Analysis& a) {
+    std::string text = "**camera**, the scene camera";
+    if (const auto line = findCommandLine(a, "/camera")) {
+        text += ", set at " + line->first + ":\n```f2\n" + line->second + "\n```\n";
+    } else {
+        text += " (no `/camera` line: 800 × 600, d 0.5, at the origin looking along +z)\n\n";
+    }
+    const auto lookAt = findCommandLine(a, "/look_at");
+    const auto attach = findCommandLine(a, "/attach", "camera");
+    if (!a.result.ok()) {
+        if (lookAt) text += "- looks at: `" + lookAt->second + "` (" + lookAt->first + ")\n";
+        if (attach) text += "- rides on: `" + attach->second + "` (" + attach->first + ")\n";
+        return text + "- the scene has errors, so its keys and pose are not evaluated\n";
+    }
+    const SceneDesc& scene = *a.result.scene;
+    const CameraDesc& camera = scene.camera;
+    text += "- image " + std::to_string(camera.width) + " × " + std::to_string(camera.height) + ", d " +
+            number(camera.distance) + "\n";
+    text += "- keys: " + std::to_string(camera.track.keys.size()) + "\n";
+    text += "- looks at: ";
+    if (!camera.lookAt) {
+        text += "nothing (its keys turn it)\n";
+    } else {
+        text += camera.lookAt->target ? frameRefText(scene, *camera.lookAt->target)
+                                      : "the point " + vec(camera.lookAt->point);
+        text += lookAt ? " (" + lookAt->first + ")\n" : "\n";
+    }
+    text += "- rides on: ";
+    if (!camera.attachedTo) {
+        text += "nothing\n";
+    } else {
+        text += frameRefText(scene, *camera.attachedTo) + (attach ? " (" + attach->first + ")\n" : "\n");
+    }
+    const Transform frame = cameraFrameAt(scene, 0.0);
+    const Vec3 forward = frame.linear.column(2);
+    text += "- at frame 0: eye " + vec(frame.translation);
+    if (!camera.attachedTo && !camera.lookAt) {
+        text += ", rotation " + vec(evaluateTrack(camera.track, 0.0, camera.pose).rotation);
+    }
+    return text + ", looking along " + vec(forward) + "\n";
 }
 
 std::string includeHover(const Analysis& a, const std::string& path) {
@@ -134,6 +242,8 @@ Json hover(const Analysis& a, Position p) {
             return markdown(variableHover(a, at.text, p.line), at.range);
         case SymbolAt::Kind::Include:
             return markdown(includeHover(a, at.text), at.range);
+        case SymbolAt::Kind::Camera:
+            return markdown(cameraHover(a), at.range);
     }
     return nullptr;
 }

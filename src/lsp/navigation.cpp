@@ -1,5 +1,7 @@
-// Go to definition, find references and rename of object names: every place
-// the parser saw the name, in this document and in the files it includes.
+// Go to definition, find references and rename of object names (every place
+// the parser saw the name) and of variables (every place the text has it), in
+// this document, the files it includes and an open file that includes it.
+#include <cstdint>
 #include <map>
 #include <set>
 #include <tuple>
@@ -31,12 +33,7 @@ std::vector<TokenSpan> occurrences(const Analysis& a, std::size_t object, bool i
 }
 
 Json locationOf(const Analysis& a, const TokenSpan& s) {
-    if (a.inDocument(s.loc)) return location(a.uri, a.rangeOf(s));
-    // In an included file: its lines are not loaded, and a name is on one line, so
-    // the range is exact in bytes; ASCII names make bytes and UTF-16 units the same
-    // unless the line has other characters before it (then the client clamps).
-    const Range r{{s.loc.line - 1, s.loc.column - 1}, {s.loc.line - 1, s.loc.column - 1 + s.length}};
-    return location(uriFromPath(s.loc.file), r);
+    return location(a.uriOf(s.loc.file), a.anyRangeOf(s));
 }
 
 /// The object under the cursor (its name, or the name before `.part`).
@@ -46,31 +43,56 @@ std::optional<std::size_t> objectAt(const Analysis& a, Position p) {
     return at.object;
 }
 
-Range rangeOf(const Analysis& a, const VariableOccurrence& v) {
-    const std::string_view line = a.document.line(v.line);
-    return {{v.line, utf16Length(line.substr(0, v.begin))}, {v.line, utf16Length(line.substr(0, v.end))}};
+const SceneFile& fileOf(const Analysis& a, const VariableOccurrence& v) {
+    return a.sources.files[static_cast<std::size_t>(v.file)];
 }
 
-/// References of the variable under the cursor, in text order.
-Json variableReferences(const Analysis& a, const std::string& name, bool includeDeclaration) {
-    Json out = Json::array();
-    for (const VariableOccurrence& v : a.variables) {
-        if (v.name == name && (includeDeclaration || !v.definition))
-            out.push_back(location(a.uri, rangeOf(a, v)));
+Json locationOf(const Analysis& a, const VariableOccurrence& v) {
+    const SceneFile& file = fileOf(a, v);
+    const std::string_view line = file.document.line(v.line);
+    return location(a.uriOf(file.path), {{v.line, utf16Length(line.substr(0, v.begin))},
+                                         {v.line, utf16Length(line.substr(0, v.end))}});
+}
+
+/// Every place of a variable in the scene's files, in reading order, each once
+/// (an included file read twice lists its lines twice).
+std::vector<const VariableOccurrence*> variableOccurrences(const Analysis& a, const std::string& name) {
+    std::vector<const VariableOccurrence*> out;
+    std::set<std::tuple<int, int, std::size_t>> seen;
+    for (const VariableOccurrence& v : a.sources.variables) {
+        if (v.name == name && seen.insert({v.file, v.line, v.begin}).second) out.push_back(&v);
     }
     return out;
 }
 
+/// References of the variable under the cursor, in reading order.
+Json variableReferences(const Analysis& a, const std::string& name, bool includeDeclaration) {
+    Json out = Json::array();
+    for (const VariableOccurrence* v : variableOccurrences(a, name)) {
+        if (includeDeclaration || !v->definition) out.push_back(locationOf(a, *v));
+    }
+    return out;
+}
+
+/// A WorkspaceEdit from locations, one TextEdit array per URI.
+Json workspaceEdit(const std::vector<Json>& locations, const std::string& newName) {
+    std::map<std::string, Json> edits;  // uri -> TextEdit array
+    for (const Json& loc : locations) {
+        edits[loc["uri"].get<std::string>()].push_back({{"range", loc["range"]}, {"newText", newName}});
+    }
+    Json changes = Json::object();
+    for (auto& [uri, list] : edits) changes[uri] = std::move(list);
+    return {{"changes", std::move(changes)}};
+}
+
 Json renameVariable(const Analysis& a, const std::string& name, const std::string& newName) {
     if (newName == "pi") throw RequestError(kRequestFailed, "'pi' is predefined and cannot be a variable");
-    if (newName != name && definitionOf(a.variables, newName, a.document.lineCount())) {
+    if (newName != name && definitionOf(a.sources.variables, newName, ~std::uint32_t{0})) {
         throw RequestError(kRequestFailed, "a variable named '" + newName + "' already exists");
     }
-    Json edits = Json::array();
-    for (const VariableOccurrence& v : a.variables) {
-        if (v.name == name) edits.push_back({{"range", toJson(rangeOf(a, v))}, {"newText", newName}});
-    }
-    return {{"changes", {{a.uri, std::move(edits)}}}};
+    std::vector<Json> places;
+    for (const VariableOccurrence* v : variableOccurrences(a, name)) places.push_back(locationOf(a, *v));
+    return workspaceEdit(places, newName);
 }
 
 }  // namespace
@@ -78,8 +100,8 @@ Json renameVariable(const Analysis& a, const std::string& name, const std::strin
 Json definition(const Analysis& a, Position p) {
     const SymbolAt at = symbolAt(a, p);
     if (at.kind == SymbolAt::Kind::Variable) {
-        const auto def = definitionOf(a.variables, at.text, p.line);
-        return def ? location(a.uri, rangeOf(a, *def)) : Json();
+        const auto def = definitionOf(a.sources.variables, at.text, a.sources.orderOf(a.self, p.line));
+        return def ? locationOf(a, *def) : Json();
     }
     if (at.kind == SymbolAt::Kind::Include) {
         return location(uriFromPath(resolveInclude(a.path, at.text)), Range{});
@@ -119,27 +141,30 @@ Json rename(const Analysis& a, Position p, const std::string& newName) {
     const auto object = objectAt(a, p);
     if (!object) throw RequestError(kRequestFailed, "there is no object or variable name here to rename");
     const std::string& oldName = a.index.objects[*object].object.name;
+    if (newName == "camera") {
+        throw RequestError(kRequestFailed, "'camera' names the scene camera and cannot be an object's name");
+    }
     if (newName != oldName && findObject(a.index, newName)) {
         throw RequestError(kRequestFailed, "an object named '" + newName + "' already exists");
     }
-    std::map<std::string, Json> edits;  // uri -> TextEdit array
+    std::vector<Json> places;
     for (const TokenSpan& s : occurrences(a, *object, true)) {
         // A name built by an expression (`r{i}`) is not the old name in the text.
-        if (a.inDocument(s.loc)) {
-            const std::string_view line = a.document.line(s.loc.line - 1);
-            const Range r = a.rangeOf(s);
-            const std::size_t begin = a.document.byteInLine(r.start);
-            if (line.substr(begin, static_cast<std::size_t>(s.length)) != oldName) {
-                throw RequestError(kRequestFailed, "'" + oldName + "' is written as an expression at line " +
-                                                       std::to_string(s.loc.line) + "; rename it by hand");
+        if (const TextDocument* text = a.textOf(s.loc.file)) {
+            const Range r = a.anyRangeOf(s);
+            const std::string_view line = text->line(r.start.line);
+            const long begin = text->byteInLine(r.start);
+            if (begin < 0 ||
+                line.substr(static_cast<std::size_t>(begin), static_cast<std::size_t>(s.length)) != oldName) {
+                throw RequestError(kRequestFailed, "'" + oldName + "' is written as an expression at " +
+                                                       (a.inDocument(s.loc) ? "" : s.loc.file + " ") +
+                                                       "line " + std::to_string(s.loc.line) +
+                                                       "; rename it by hand");
             }
         }
-        const Json loc = locationOf(a, s);
-        edits[loc["uri"].get<std::string>()].push_back({{"range", loc["range"]}, {"newText", newName}});
+        places.push_back(locationOf(a, s));
     }
-    Json changes = Json::object();
-    for (auto& [uri, list] : edits) changes[uri] = std::move(list);
-    return {{"changes", std::move(changes)}};
+    return workspaceEdit(places, newName);
 }
 
 }  // namespace f2::lsp

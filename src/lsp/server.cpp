@@ -1,5 +1,6 @@
 #include "lsp/server.h"
 
+#include <algorithm>
 #include <limits>
 
 #include "lsp/features.h"
@@ -190,17 +191,17 @@ void Server::dispatchNotification(const std::string& method, const Json& params,
     } else if (method == "textDocument/didClose") {
         const std::string uri = uriOf(params);
         if (documents_.erase(uri) > 0) {
+            roots_.erase(uri);
             out.push_back(notification("textDocument/publishDiagnostics",
                                        {{"uri", uri}, {"diagnostics", Json::array()}}));
             unpublishOthers(uri, {}, out);
             publishedOthers_.erase(uri);
+            // Scenes that include it read it from disk again.
+            refresh(pathFromUri(uri), out);
         }
     } else if (method == "textDocument/didSave") {
         // An included file may have changed: every open scene is read again.
-        for (auto& [uri, a] : documents_) {
-            a = analyze(uri, TextDocument(a.document.text(), a.document.version()));
-            publish(a, out);
-        }
+        refresh({}, out);
     } else if (!method.starts_with("$/") && method != "initialized" &&
                method != "workspace/didChangeConfiguration") {
         logProblem("unknown notification '" + method + "' ignored");
@@ -214,16 +215,88 @@ const Analysis& Server::document(const Json& params) const {
 }
 
 void Server::open(std::string uri, std::string text, int version, std::vector<std::string>& out) {
-    Analysis& a = documents_[uri];
-    a = analyze(std::move(uri), TextDocument(std::move(text), version));
-    publish(a, out);
+    const std::string path = pathFromUri(uri);
+    documents_[uri].document = TextDocument(std::move(text), version);
+    refresh(path, out);
+}
+
+SourceOverlay Server::openTexts() const {
+    SourceOverlay texts;
+    for (const auto& [uri, a] : documents_) texts[pathFromUri(uri)] = a.document.text();
+    return texts;
+}
+
+std::string Server::rootOf(const std::string& uri,
+                           const std::map<std::string, std::set<std::string>>& closures) const {
+    // The documents that include it (and that it does not include: in a cycle
+    // each is its own scene); of those, one that no other includes.
+    const std::string path = pathFromUri(uri);
+    const auto& own = closures.at(uri);
+    std::vector<std::string> including;
+    for (const auto& [other, files] : closures) {
+        if (other != uri && files.contains(path) && !own.contains(pathFromUri(other)))
+            including.push_back(other);
+    }
+    for (const std::string& candidate : including) {
+        const std::string candidatePath = pathFromUri(candidate);
+        const bool included = std::any_of(including.begin(), including.end(), [&](const std::string& o) {
+            return o != candidate && closures.at(o).contains(candidatePath);
+        });
+        if (!included) return candidate;
+    }
+    return including.empty() ? uri : including.front();
+}
+
+void Server::refresh(const std::string& changed, std::vector<std::string>& out) {
+    const SourceOverlay texts = openTexts();
+    auto reanalyse = [&](const std::string& uri, const std::string& root) {
+        Analysis& a = documents_[uri];
+        a = analyze(uri, TextDocument(a.document.text(), a.document.version()), texts,
+                    root == uri ? std::string() : pathFromUri(root));
+        for (const auto& [other, unused] : documents_) a.openUris[pathFromUri(other)] = other;
+        roots_[uri] = root;
+    };
+    std::set<std::string> done;
+    // The changed document first, in its old scene: its includes may have changed.
+    for (const auto& [uri, a] : documents_) {
+        if (changed.empty() || pathFromUri(uri) != changed) continue;
+        const auto old = roots_.find(uri);
+        reanalyse(uri, old != roots_.end() && documents_.contains(old->second) ? old->second : uri);
+        done.insert(uri);
+    }
+    // What each open document includes, followed through files on disk too.
+    std::map<std::string, std::set<std::string>> closures;
+    for (const auto& [uri, a] : documents_) {
+        auto& files = closures[uri];
+        for (std::size_t i = 0; i < a.sources.files.size(); ++i) {
+            if (static_cast<int>(i) != a.self && a.sources.reaches(a.self, static_cast<int>(i)))
+                files.insert(a.sources.files[i].path);
+        }
+    }
+    std::vector<std::string> toPublish(done.begin(), done.end());
+    for (const auto& [uri, a] : documents_) {
+        const std::string root = rootOf(uri, closures);
+        const auto old = roots_.find(uri);
+        const bool moved = old == roots_.end() || old->second != root;
+        const bool reads =
+            changed.empty() || a.sources.find(changed) >= 0 ||
+            std::find(a.result.files.begin(), a.result.files.end(), changed) != a.result.files.end();
+        if (!moved && (!reads || done.contains(uri))) continue;
+        reanalyse(uri, root);
+        if (!done.contains(uri)) toPublish.push_back(uri);
+    }
+    for (const std::string& uri : toPublish) publish(documents_[uri], out);
 }
 
 void Server::publish(const Analysis& a, std::vector<std::string>& out) {
     std::set<std::string> others;
     for (Json& params : publishDiagnostics(a)) {
         const std::string uri = params["uri"].get<std::string>();
-        if (uri != a.uri) others.insert(uri);
+        if (uri != a.uri) {
+            // An open document publishes its own (as the scene it belongs to reads it).
+            if (documents_.contains(uri)) continue;
+            others.insert(uri);
+        }
         out.push_back(notification("textDocument/publishDiagnostics", std::move(params)));
     }
     unpublishOthers(a.uri, others, out);
@@ -236,7 +309,7 @@ void Server::unpublishOthers(const std::string& uri, const std::set<std::string>
     if (it == publishedOthers_.end()) return;
     // An include fixed or removed: its old errors must not stay on screen.
     for (const std::string& other : it->second) {
-        if (keep.contains(other)) continue;
+        if (keep.contains(other) || documents_.contains(other)) continue;
         out.push_back(notification("textDocument/publishDiagnostics",
                                    {{"uri", other}, {"diagnostics", Json::array()}}));
     }

@@ -42,9 +42,19 @@ class Server {
     void unpublishOthers(const std::string& uri, const std::set<std::string>& keep,
                          std::vector<std::string>& out);
     void open(std::string uri, std::string text, int version, std::vector<std::string>& out);
+    /// Analyses again the open documents whose scene reads the file `changed`
+    /// (all of them when it is empty), each as part of the topmost open
+    /// document that includes it, and publishes their diagnostics.
+    void refresh(const std::string& changed, std::vector<std::string>& out);
+    /// The open document whose scene a document belongs to: the topmost open
+    /// document that includes it, or itself.
+    std::string rootOf(const std::string& uri,
+                       const std::map<std::string, std::set<std::string>>& closures) const;
+    SourceOverlay openTexts() const;
 
     std::function<void(std::string_view)> log_;
     std::map<std::string, Analysis> documents_;  ///< open documents by URI
+    std::map<std::string, std::string> roots_;   ///< URI -> the URI of the document parsed as its scene
     /// Other files (includes) each open document has published diagnostics on.
     std::map<std::string, std::set<std::string>> publishedOthers_;
     bool initialized_ = false;

@@ -61,7 +61,8 @@ std::vector<VariableOccurrence> scanVariables(const TextDocument& doc) {
             if (b != std::string_view::npos && isNameStart(code[b])) {
                 std::size_t e = b;
                 while (e < code.size() && isNameChar(code[e])) ++e;
-                out.push_back({std::string(code.substr(b, e - b)), index, b, e, true, command == "/repeat"});
+                out.push_back({std::string(code.substr(b, e - b)), index, b, e, true, command == "/repeat", 0,
+                               static_cast<std::uint32_t>(index)});
                 i = e;
             }
         }
@@ -80,7 +81,8 @@ std::vector<VariableOccurrence> scanVariables(const TextDocument& doc) {
                 // Numbers such as 1e3 start with a digit, so a name here is a variable or a function.
                 const bool isNumberExponent = i > 0 && (code[i - 1] >= '0' && code[i - 1] <= '9');
                 if (!call && name != "pi" && !isNumberExponent) {
-                    out.push_back({std::string(name), index, i, e, false, false});
+                    out.push_back(
+                        {std::string(name), index, i, e, false, false, 0, static_cast<std::uint32_t>(index)});
                 }
                 i = e;
                 continue;
@@ -92,12 +94,12 @@ std::vector<VariableOccurrence> scanVariables(const TextDocument& doc) {
 }
 
 std::optional<VariableOccurrence> definitionOf(const std::vector<VariableOccurrence>& all,
-                                               std::string_view name, int line) {
+                                               std::string_view name, std::uint32_t order) {
     std::optional<VariableOccurrence> first, nearest;
     for (const VariableOccurrence& o : all) {
         if (!o.definition || o.name != name) continue;
         if (!first) first = o;
-        if (o.line <= line) nearest = o;
+        if (o.order <= order) nearest = o;
     }
     return nearest ? nearest : first;
 }

@@ -5,6 +5,7 @@
 /// Textual, so it works on a document with errors and needs nothing from the
 /// parser; a variable is known by its name across the document.
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -20,16 +21,20 @@ struct VariableOccurrence {
     std::size_t begin = 0, end = 0;  ///< bytes in the line
     bool definition = false;         ///< the name after /let or /repeat
     bool loop = false;               ///< defined by /repeat
+    int file = 0;                    ///< index into SceneSources::files (scene_sources.h)
+    /// Reading order: the line's place when includes are read where they stand
+    /// (the line itself for one document alone).
+    std::uint32_t order = 0;
 };
 
 /// Every variable occurrence of the document, in text order.
 std::vector<VariableOccurrence> scanVariables(const TextDocument& doc);
 
-/// The definition a use at `line` refers to: the nearest `/let` above it or an
-/// enclosing `/repeat` (the nearest definition above), else the first one in
-/// the document; nullopt when the document defines no such name.
+/// The definition a use at reading order `order` refers to: the nearest `/let`
+/// before it or an enclosing `/repeat` (the nearest definition before), else
+/// the first one; nullopt when no such name is defined.
 std::optional<VariableOccurrence> definitionOf(const std::vector<VariableOccurrence>& all,
-                                               std::string_view name, int line);
+                                               std::string_view name, std::uint32_t order);
 
 /// The path argument of an `/include` line (quotes removed) and its bytes in the line.
 struct IncludePath {

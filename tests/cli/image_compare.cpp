@@ -6,6 +6,8 @@
 //   image_compare match A.png B.png R G B TOL MAXOFF   the same coverage (pixel !=
 //       background R G B in both or in neither, everywhere), and at most MAXOFF
 //       pixels differ by more than TOL in a channel
+//   image_compare mean A.png B.png R G B MAX     the same coverage, and the mean
+//       absolute difference over every channel of every pixel at most MAX levels
 //   image_compare diff A.png B.png              statistics only (exit 0 if same size)
 //   image_compare same A.png B.png              every pixel identical (exit 1 otherwise)
 //   image_compare colours A.png MIN             A has at least MIN distinct colours
@@ -104,6 +106,22 @@ int match(const Image& a, const Image& b, Rgb8 bg, int tolerance, long maxOff) {
     return 0;
 }
 
+int meanDifference(const Image& a, const Image& b, Rgb8 bg, double maximum) {
+    long coverage = 0;
+    double sum = 0;
+    for (std::size_t i = 0; i < a.pixels.size(); ++i) {
+        coverage += !(a.pixels[i] == bg) != !(b.pixels[i] == bg);
+        Rgb8 p = a.pixels[i], q = b.pixels[i];
+        sum += std::abs(p.r - q.r) + std::abs(p.g - q.g) + std::abs(p.b - q.b);
+    }
+    double mean = sum / (3.0 * double(a.pixels.size()));
+    std::printf("coverage differs in %ld pixels; mean absolute difference %.4f levels (bound %.4f)\n",
+                coverage, mean, maximum);
+    if (coverage > 0) return std::puts("FAIL: the images cover different pixels"), 1;
+    if (mean > maximum) return std::puts("FAIL: the mean difference is above the bound"), 1;
+    return 0;
+}
+
 int diff(const Image& a, const Image& b) {
     long differing = 0, over8 = 0, sum = 0;
     int maximum = 0;
@@ -143,13 +161,14 @@ int colours(const Image& a, long minimum) {
 
 int main(int argc, char** argv) {
     std::string mode = argc > 1 ? argv[1] : "";
-    bool known = (mode == "iou" && argc == 8) || (mode == "match" && argc == 9) ||
+    bool known = ((mode == "iou" || mode == "mean") && argc == 8) || (mode == "match" && argc == 9) ||
                  ((mode == "aa" || mode == "diff" || mode == "same") && argc == 4) ||
                  (mode == "colours" && argc == 4);
     if (!known) {
         std::fprintf(
             stderr,
-            "usage: image_compare iou A B R G B MIN | match A B R G B TOL MAXOFF | aa PLAIN AA | diff A B | "
+            "usage: image_compare iou A B R G B MIN | match A B R G B TOL MAXOFF | mean A B R G B MAX | "
+            "aa PLAIN AA | diff A B | "
             "same A B | colours A MIN\n");
         return 2;
     }
@@ -163,9 +182,10 @@ int main(int argc, char** argv) {
         std::printf("FAIL: sizes differ: %dx%d vs %dx%d\n", a.width, a.height, b.width, b.height);
         return 1;
     }
-    if (mode == "iou" || mode == "match") {
+    if (mode == "iou" || mode == "match" || mode == "mean") {
         Rgb8 bg{std::uint8_t(std::atoi(argv[4])), std::uint8_t(std::atoi(argv[5])),
                 std::uint8_t(std::atoi(argv[6]))};
+        if (mode == "mean") return meanDifference(a, b, bg, std::atof(argv[7]));
         return mode == "iou" ? iou(a, b, bg, std::atof(argv[7]))
                              : match(a, b, bg, std::atoi(argv[7]), std::atol(argv[8]));
     }

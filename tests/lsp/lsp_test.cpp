@@ -6,13 +6,16 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <random>
 #include <string>
 
 #include "core/parse/parser.h"
+#include "core/parse/symbol_index.h"
 #include "lsp/command_docs.h"
 #include "lsp/features.h"
 #include "lsp/message_reader.h"
+#include "lsp/scene_sources.h"
 #include "lsp/server.h"
 #include "lsp/source_scan.h"
 
@@ -27,6 +30,20 @@ std::vector<MessageReader::Item> readAll(MessageReader& reader) {
 }
 
 Analysis analysed(std::string text) { return analyze("file:///t/a.f2", TextDocument(std::move(text), 1)); }
+
+/// A fresh directory under the system's temporary one, removed at the end.
+struct TempDir {
+    std::filesystem::path path;
+    explicit TempDir(const std::string& name)
+        : path(std::filesystem::temp_directory_path() / (name + std::to_string(::getpid()))) {
+        std::filesystem::create_directories(path);
+    }
+    ~TempDir() { std::filesystem::remove_all(path); }
+    std::string write(const std::string& file, const std::string& text) const {
+        std::ofstream(path / file) << text;
+        return (path / file).string();
+    }
+};
 
 TEST(MessageReader, SplitsFramesFedByteByByte) {
     const std::string stream = frameMessage("{\"a\":1}") + "content-length:  2\r\nX-Other: y\r\n\r\n{}";
@@ -274,7 +291,13 @@ TEST(Variables, DefinitionReferencesRenameHoverCompletion) {
     EXPECT_THROW(rename(a, {2, 13}, "n"), RequestError);
     EXPECT_EQ(prepareRename(a, {5, 6})["placeholder"], "n");
     const std::string text = hover(a, {2, 13})["contents"]["value"];
-    EXPECT_EQ(text, "**loop variable** `i`, defined at line 2:\n```f2\n/repeat i 1 (n)  # (ignored) \n```");
+    EXPECT_EQ(text,
+              "**loop variable** `i` = 1 on the first pass, defined at line 2:\n```f2\n/repeat i 1 (n)  # "
+              "(ignored) "
+              "\n```");
+    // The value where it is used: /let n (n + 1) after /let n 3.
+    EXPECT_EQ(hover(a, {5, 6})["contents"]["value"],
+              "**variable** `n` = 4, defined at line 5:\n```f2\n/let n (n + 1)\n```");
     // In an expression: the variables defined so far, pi and the functions.
     const Json items = completion(a, {2, 20});
     ASSERT_GE(items.size(), 3u);
@@ -291,50 +314,48 @@ TEST(Variables, DefinitionReferencesRenameHoverCompletion) {
 }
 
 TEST(Includes, DefinitionHoverAndPathCompletion) {
-    namespace fs = std::filesystem;
-    const fs::path dir = fs::temp_directory_path() / ("f2_lsp_include_" + std::to_string(::getpid()));
-    fs::create_directories(dir / "parts");
-    std::ofstream(dir / "parts" / "floor.f2") << "/box floor 10 10 10 0 0 0\n";
-    std::ofstream(dir / "parts" / "notes.txt") << "x";
-    const std::string main = (dir / "main.f2").string();
+    const TempDir dir("f2_lsp_include_");
+    std::filesystem::create_directories(dir.path / "parts");
+    const std::string floor = dir.write("parts/floor.f2", "/box floor 10 10 10 0 0 0\n");
+    dir.write("parts/notes.txt", "x");
+    const std::string main = (dir.path / "main.f2").string();
     const Analysis a =
         analyze(uriFromPath(main), TextDocument("/include \"parts/floor.f2\"\n/include parts/\n", 1));
-    EXPECT_EQ(definition(a, {0, 12}), location(uriFromPath((dir / "parts" / "floor.f2").string()), Range{}));
-    EXPECT_EQ(hover(a, {0, 12})["contents"]["value"],
-              "**include** `" + (dir / "parts" / "floor.f2").string() + "`");
+    EXPECT_EQ(definition(a, {0, 12}), location(uriFromPath(floor), Range{}));
+    EXPECT_EQ(hover(a, {0, 12})["contents"]["value"], "**include** `" + floor + "`");
     const Json items = completion(a, {1, 15});
     ASSERT_EQ(items.size(), 1u);  // floor.f2; not the .txt
     EXPECT_EQ(items[0]["label"], "floor.f2");
     EXPECT_EQ(items[0]["textEdit"]["range"], toJson(Range{{1, 15}, {1, 15}}));
-    fs::remove_all(dir);
 }
 
 TEST(Includes, DiagnosticsInAnIncludedFileAreItsOwn) {
-    namespace fs = std::filesystem;
-    const fs::path dir = fs::temp_directory_path() / ("f2_lsp_diag_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    std::ofstream(dir / "part.f2") << "# \xD0\xBF\n/sphere ball 1 0 0 0\n/key 0 bal\n";
-    const Analysis a = analyze(uriFromPath((dir / "main.f2").string()),
+    const TempDir dir("f2_lsp_diag_");
+    const std::string part = dir.write("part.f2", "# \xD0\xBF\n/sphere ball 1 0 0 0\n/key 0 bal\n");
+    const Analysis a = analyze(uriFromPath((dir.path / "main.f2").string()),
                                TextDocument("/amb_light 1\n/include part.f2\n/key 1 ball\n", 1));
     const Json published = publishDiagnostics(a);
     ASSERT_EQ(published.size(), 2u) << published.dump();
-    EXPECT_EQ(published[0]["diagnostics"], Json::array());
-    EXPECT_EQ(published[1]["uri"], uriFromPath((dir / "part.f2").string()));
+    // On the include line of the open file: a summary pointing at the place.
+    ASSERT_EQ(published[0]["diagnostics"].size(), 1u);
+    const Json& summary = published[0]["diagnostics"][0];
+    EXPECT_EQ(summary["range"], toJson(Range{{1, 9}, {1, 16}}));
+    EXPECT_EQ(summary["message"],
+              "in the included file part.f2:3:8: unknown name 'bal' (did you mean 'ball'?)");
+    EXPECT_EQ(summary["relatedInformation"][0]["location"],
+              location(uriFromPath(part), Range{{2, 7}, {2, 10}}));
+    EXPECT_EQ(published[1]["uri"], uriFromPath(part));
     ASSERT_EQ(published[1]["diagnostics"].size(), 1u);
     EXPECT_EQ(published[1]["diagnostics"][0]["range"], toJson(Range{{2, 7}, {2, 10}}));
     // The object created in the included file: definition goes there.
-    EXPECT_EQ(definition(a, {2, 8}),
-              location(uriFromPath((dir / "part.f2").string()), Range{{1, 8}, {1, 12}}));
-    fs::remove_all(dir);
+    EXPECT_EQ(definition(a, {2, 8}), location(uriFromPath(part), Range{{1, 8}, {1, 12}}));
 }
 
 TEST(Includes, FixedIncludeErrorsAreClearedOnSave) {
-    namespace fs = std::filesystem;
-    const fs::path dir = fs::temp_directory_path() / ("f2_lsp_clear_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    std::ofstream(dir / "part.f2") << "/fps x\n";
-    const std::string mainUri = uriFromPath((dir / "main.f2").string());
-    const std::string partUri = uriFromPath((dir / "part.f2").string());
+    const TempDir dir("f2_lsp_clear_");
+    const std::string part = dir.write("part.f2", "/fps x\n");
+    const std::string mainUri = uriFromPath((dir.path / "main.f2").string());
+    const std::string partUri = uriFromPath(part);
     Server server;
     server.handle(R"({"id":1,"method":"initialize"})");
     auto diagnosticsOf = [](const std::vector<std::string>& out, const std::string& uri) {
@@ -351,12 +372,181 @@ TEST(Includes, FixedIncludeErrorsAreClearedOnSave) {
                {{"textDocument", {{"uri", mainUri}, {"version", 1}, {"text", "/include part.f2\n"}}}}}})
             .dump());
     EXPECT_EQ(diagnosticsOf(opened, partUri).size(), 1u);
-    std::ofstream(dir / "part.f2") << "/fps 24\n";
+    dir.write("part.f2", "/fps 24\n");
     const auto saved = server.handle(
         Json({{"method", "textDocument/didSave"}, {"params", {{"textDocument", {{"uri", partUri}}}}}})
             .dump());
     EXPECT_EQ(diagnosticsOf(saved, partUri), Json::array());
-    fs::remove_all(dir);
+}
+
+/// A scene in a temporary directory: main.f2 includes parts/stage.f2, which
+/// defines a variable and an object main.f2 uses, and uses one of main.f2's.
+struct IncludedScene {
+    TempDir dir;
+    std::string main, stage;
+    static constexpr const char* kMain =
+        "/let w 40\n"                       // 0
+        "/include \"parts/stage.f2\"\n"     // 1
+        "/sphere ball (w) 0 (h) 0\n"        // 2
+        "/key 0 prop\n"                     // 3
+        "/key 10 prop 0 (h * 2) 0 0 0 0\n"  // 4
+        "/look_at prop\n"                   // 5
+        "/key 0 camera\n";                  // 6
+    static constexpr const char* kStage =
+        "/amb_light 1\n"                     // 0
+        "/let h 25\n"                        // 1
+        "/box prop 10 (w) 10 0 0 0\n"        // 2
+        "/camera 320 240 0.5 0 100 -500\n";  // 3
+
+    explicit IncludedScene(const std::string& name) : dir(name) {
+        std::filesystem::create_directories(dir.path / "parts");
+        main = dir.write("main.f2", kMain);
+        stage = dir.write("parts/stage.f2", kStage);
+    }
+};
+
+TEST(Includes, VariablesAndObjectsFollowedBothWays) {
+    const IncludedScene scene("f2_lsp_both_");
+    const Analysis m = analyze(uriFromPath(scene.main), TextDocument(IncludedScene::kMain, 1));
+    const std::string mainUri = uriFromPath(scene.main), stageUri = uriFromPath(scene.stage);
+    EXPECT_TRUE(m.result.ok());
+    // From main.f2 into the included file: the variable h and the object prop.
+    EXPECT_EQ(definition(m, {2, 20}), location(stageUri, Range{{1, 5}, {1, 6}}));
+    EXPECT_EQ(definition(m, {3, 8}), location(stageUri, Range{{2, 5}, {2, 9}}));
+    EXPECT_EQ(references(m, {4, 16}, true).size(), 3u);
+    const Json edit = rename(m, {2, 20}, "height");
+    EXPECT_EQ(edit["changes"][stageUri].size(), 1u);
+    EXPECT_EQ(edit["changes"][mainUri].size(), 2u);
+    EXPECT_THROW(rename(m, {2, 20}, "w"), RequestError);      // taken
+    EXPECT_THROW(rename(m, {3, 8}, "camera"), RequestError);  // reserved
+    EXPECT_THROW(rename(m, {3, 8}, "ball"), RequestError);    // taken
+    // Back: stage.f2 open, analysed as part of main.f2 (its buffer replaces the file).
+    const SourceOverlay open{{scene.main, IncludedScene::kMain},
+                             {scene.stage, std::string(IncludedScene::kStage) + "# edited\n"}};
+    const Analysis s = analyze(stageUri, TextDocument(open.at(scene.stage), 2), open, scene.main);
+    EXPECT_EQ(s.root, scene.main);
+    EXPECT_TRUE(s.result.ok()) << publishDiagnostics(s).dump();
+    EXPECT_EQ(s.document.lineCount(), 6);
+    EXPECT_EQ(definition(s, {2, 14}), location(mainUri, Range{{0, 5}, {0, 6}}));
+    EXPECT_EQ(references(s, {2, 6}, false).size(), 3u);  // the uses in main.f2
+    const std::string hoverW = hover(s, {2, 14})["contents"]["value"];
+    EXPECT_EQ(hoverW,
+              "**variable** `w` = 40, defined at line 1 of " + scene.main + ":\n```f2\n/let w 40\n```");
+    // Alone, stage.f2 does not know w.
+    const Analysis alone = analyze(stageUri, TextDocument(IncludedScene::kStage, 1));
+    EXPECT_FALSE(alone.result.ok());
+    EXPECT_TRUE(definition(alone, {2, 14}).is_null());
+}
+
+TEST(Includes, ParserReadsOpenTextsBeforeTheDisk) {
+    const TempDir dir("f2_lsp_overlay_");
+    const std::string part = dir.write("part.f2", "/fps x\n");  // broken on disk, fixed in the editor
+    const std::string main = dir.write("main.f2", "");
+    const std::string ghost = (dir.path / "ghost.f2").string();  // open, never saved
+    const SourceOverlay open{{part, "/fps 30\n"}, {ghost, "/amb_light 1\n/include ghost.f2\n"}};
+    SymbolIndex index;
+    const ParseResult fixed =
+        parseScene("/include part.f2\n/amb_light 1\n", main, ParseLimits{}, index, open);
+    EXPECT_TRUE(fixed.ok());
+    EXPECT_EQ(fixed.scene->fps, 30);
+    // An unsaved file that includes itself: a cycle, not an endless read.
+    const ParseResult cycle = parseScene("/include ghost.f2\n", main, ParseLimits{}, index, open);
+    ASSERT_EQ(cycle.diagnostics.size(), 1u);
+    EXPECT_EQ(cycle.diagnostics[0].loc.file, ghost);
+    EXPECT_EQ(cycle.diagnostics[0].message.rfind("include cycle: ", 0), 0u) << cycle.diagnostics[0].message;
+    // The text stands for its file: including that file is a cycle at once.
+    const ParseResult self = parseScene("/include main.f2\n", main, ParseLimits{}, index, open);
+    ASSERT_EQ(self.diagnostics.size(), 1u);
+    EXPECT_EQ(self.diagnostics[0].loc.file, main);
+    EXPECT_EQ(self.diagnostics[0].loc.line, 1);
+}
+
+TEST(Includes, ScanSurvivesCyclesMissingFilesAndDiamonds) {
+    const TempDir dir("f2_lsp_scan_");
+    const std::string a =
+        dir.write("a.f2", "/let a 1\n/include b.f2\n/include missing.f2\n/include \"{x}.f2\"\n");
+    dir.write("b.f2", "/let b 2\n/include a.f2\n");
+    // 17 levels, each including the next twice: 2^17 readings without the line budget.
+    for (int i = 0; i < 17; ++i) {
+        const std::string next = "d" + std::to_string(i + 1) + ".f2";
+        dir.write("d" + std::to_string(i) + ".f2", "/include " + next + "\n/include " + next + "\n");
+    }
+    dir.write("d17.f2", "/let deep 1\n");
+    const SceneSources cyc =
+        scanScene(a, TextDocument("/let a 1\n/include b.f2\n/include missing.f2\n", 1), {});
+    ASSERT_EQ(cyc.files.size(), 2u);
+    EXPECT_TRUE(cyc.reaches(0, 1));
+    EXPECT_TRUE(cyc.reaches(1, 0));
+    EXPECT_EQ(cyc.variables.size(), 2u);  // b.f2's include of a.f2 is not followed again
+    const SceneSources deep =
+        scanScene((dir.path / "d0.f2").string(), TextDocument("/include d1.f2\n/include d1.f2\n", 1), {});
+    EXPECT_EQ(deep.files.size(), 18u);    // d0 … d17 read; d17 is 17 deep, beyond 16: not followed
+    EXPECT_TRUE(deep.variables.empty());  // so its /let is not seen
+}
+
+TEST(Includes, OpenDocumentsThatIncludeEachOtherOrThemselves) {
+    // Files that exist only as open documents: their texts are what includes read.
+    Server server;
+    server.handle(R"({"id":1,"method":"initialize"})");
+    auto open = [&](const std::string& uri, const std::string& text) {
+        return server.handle(
+            Json({{"method", "textDocument/didOpen"},
+                  {"params", {{"textDocument", {{"uri", uri}, {"version", 1}, {"text", text}}}}}})
+                .dump());
+    };
+    const std::string a = "file:///nowhere/a.f2", b = "file:///nowhere/b.f2";
+    open(a, "/amb_light 1\n/include b.f2\n/sphere s (n) 0 0 0\n");
+    const auto both = open(b, "/let n 3\n/include b.f2\n");
+    // b.f2 is read as part of a.f2: its self-include is a cycle, reported once on b.f2.
+    std::map<std::string, Json> published;
+    for (const std::string& m : both) {
+        const Json j = Json::parse(m);
+        published[j["params"]["uri"]] = j["params"]["diagnostics"];
+    }
+    ASSERT_EQ(published.size(), 2u);
+    ASSERT_EQ(published[b].size(), 1u);
+    EXPECT_EQ(published[b][0]["message"].get<std::string>().rfind("include cycle: ", 0), 0u);
+    EXPECT_EQ(published[a].size(), 1u);  // the summary on a.f2's include line
+    // The variable n of the open b.f2 is known in a.f2, both ways.
+    const Json def = Json::parse(server.handle(
+        Json({{"id", 2},
+              {"method", "textDocument/definition"},
+              {"params", {{"textDocument", {{"uri", a}}}, {"position", {{"line", 2}, {"character", 11}}}}}})
+            .dump())[0]);
+    EXPECT_EQ(def["result"], location(b, Range{{0, 5}, {0, 6}}));
+    // a.f2 now includes itself and b.f2 includes a.f2: every request still answers.
+    open(a, "/include a.f2\n/include b.f2\n");
+    open(b, "/include a.f2\n");
+    const auto reply = server.handle(
+        Json({{"id", 3},
+              {"method", "textDocument/hover"},
+              {"params", {{"textDocument", {{"uri", b}}}, {"position", {{"line", 0}, {"character", 10}}}}}})
+            .dump());
+    ASSERT_EQ(reply.size(), 1u);
+    EXPECT_TRUE(Json::parse(reply[0]).contains("result"));
+}
+
+TEST(Hover, CameraLineKeysLookAtAttachmentAndPose) {
+    const IncludedScene scene("f2_lsp_camera_");
+    const Analysis m = analyze(uriFromPath(scene.main), TextDocument(IncludedScene::kMain, 1));
+    const Json h = hover(m, {6, 9});
+    EXPECT_EQ(h["range"], toJson(Range{{6, 7}, {6, 13}}));
+    EXPECT_EQ(h["contents"]["value"],
+              "**camera**, the scene camera, set at line 4 of " + scene.stage +
+                  ":\n```f2\n/camera 320 240 0.5 0 100 -500\n```\n- image 320 × 240, d 0.5\n- keys: 1\n"
+                  "- looks at: `prop` (line 6)\n- rides on: nothing\n"
+                  "- at frame 0: eye (0, 100, -500), looking along (0, -0.196116, 0.980581)\n");
+    const Analysis attached = analysed(
+        "/amb_light 1\n/camera 320 240 0.5 0 0 -10 0 90 0\n/robot r1 0 0 0\n/attach camera r1.head\n");
+    const std::string text = hover(attached, {3, 10})["contents"]["value"];
+    EXPECT_NE(
+        text.find("- keys: 0\n- looks at: nothing (its keys turn it)\n- rides on: `r1.head` (line 4)\n"),
+        std::string::npos)
+        << text;
+    const Analysis plain = analysed("/amb_light 1\n/key 0 camera 0 0 -10 0 90 0\n");
+    const std::string plainText = hover(plain, {1, 9})["contents"]["value"];
+    EXPECT_NE(plainText.find("no `/camera` line"), std::string::npos) << plainText;
+    EXPECT_NE(plainText.find("eye (0, 0, -10), rotation (0, 90, 0)"), std::string::npos) << plainText;
 }
 
 TEST(Completion, OffersTheParsersCommandsAsSnippets) {

@@ -1,6 +1,7 @@
 -- Neovim's built-in LSP client against `f2 lsp`: open a scene with errors and
 -- check that every diagnostic arrives at the right line and byte column
--- (Neovim converts the server's UTF-16 columns back to bytes).
+-- (Neovim converts the server's UTF-16 columns back to bytes); then follow a
+-- variable into an included file and rename it across both files.
 --   F2=path/to/f2 SCENE=path/to/broken.f2 nvim --headless --clean -c "luafile nvim_test.lua"
 -- Exit code 0 when all checks pass.
 local f2, scene = os.getenv("F2"), os.getenv("SCENE")
@@ -37,11 +38,33 @@ for i, w in ipairs(want) do
   check(string.format("diagnostic %d severity", i), g.severity, vim.diagnostic.severity.ERROR)
 end
 
+-- A scene with an include (data/included): go to definition from main.f2 into
+-- parts/stage.f2, then rename there and back; Neovim applies the WorkspaceEdit
+-- to both files (in buffers; nothing is written to disk).
+local included = os.getenv("INCLUDED")
+vim.cmd("edit " .. vim.fn.fnameescape(included .. "/main.f2"))
+local main = vim.api.nvim_get_current_buf()
+vim.lsp.buf_attach_client(main, client)
+local at = { textDocument = { uri = vim.uri_from_bufnr(main) }, position = { line = 2, character = 20 } }
+local function only(responses)
+  for _, r in pairs(responses or {}) do return r.result end
+end
+local definition = only(vim.lsp.buf_request_sync(main, "textDocument/definition", at, 60000)) or {}
+check("definition of h: file", definition.uri, vim.uri_from_fname(included .. "/parts/stage.f2"))
+check("definition of h: line", definition.range and definition.range.start.line, 1)
+at.newName = "height"
+local edit = only(vim.lsp.buf_request_sync(main, "textDocument/rename", at, 60000))
+check("rename of h answered", edit ~= nil, true)
+if edit then vim.lsp.util.apply_workspace_edit(edit, "utf-16") end
+local stage = vim.fn.bufnr(included .. "/parts/stage.f2")
+check("stage.f2 renamed", stage >= 0 and vim.api.nvim_buf_get_lines(stage, 1, 2, false)[1], "/let height 25")
+check("main.f2 renamed", vim.api.nvim_buf_get_lines(main, 4, 5, false)[1], "/key 10 prop 0 (height * 2) 0 0 0 0")
+
 vim.lsp.stop_client(client)
 if #failures > 0 then
   io.stderr:write(table.concat(failures, "\n") .. "\nFAILED\n")
   vim.cmd("cquit 1")
 else
-  io.stdout:write("ok: Neovim received every diagnostic at its place\n")
+  io.stdout:write("ok: Neovim received every diagnostic at its place and renamed across an include\n")
   vim.cmd("qall!")
 end

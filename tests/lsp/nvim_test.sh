@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # nvim_test.sh F2: Neovim's built-in LSP client opens data/broken.f2 through
-# `F2 lsp` and checks where the diagnostics land (nvim_test.lua).
+# `F2 lsp` and checks where the diagnostics land, then renames a variable of
+# data/included across its include (nvim_test.lua).
 # Exit 77 (skipped) when Neovim is not installed.
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
@@ -12,4 +13,4 @@ fi
 home=$(mktemp -d)
 trap 'rm -rf "$home"' EXIT
 HOME=$home XDG_CONFIG_HOME=$home XDG_DATA_HOME=$home XDG_STATE_HOME=$home \
-  F2=$1 SCENE=$here/data/broken.f2 nvim --headless --clean -c "luafile $here/nvim_test.lua" 2>&1
+  F2=$1 SCENE=$here/data/broken.f2 INCLUDED=$here/data/included nvim --headless --clean -c "luafile $here/nvim_test.lua" 2>&1

@@ -2,12 +2,17 @@
 """Drives `f2 lsp` through a whole editing session and compares every reply
 with the exact JSON expected: initialize, didOpen with errors, didChange that
 fixes them, completion after `r1.`, hover, definition, references, rename,
-then malformed input, shutdown and exit.
+then malformed input, shutdown and exit; and a second session on a scene
+with an included file (definition, references, rename, hover and errors
+across the include, both ways).
 
     protocol_test.py PATH/TO/f2
 """
 import os
+import shutil
 import sys
+import tempfile
+import urllib.parse
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from lsp_client import Client  # noqa: E402
@@ -61,7 +66,143 @@ CAPABILITIES = {
 }
 
 
+MAIN = "\n".join([
+    "/let w 40",
+    '/include "parts/stage.f2"',
+    "/sphere ball (w) 0 (h) 0",
+    "/key 0 prop",
+    "/key 10 prop 0 (h * 2) 0 0 0 0",
+    "/look_at prop",
+    "/key 0 camera",
+    ""])
+STAGE = "\n".join([
+    "/amb_light 1",
+    "/let h 25",
+    "/box prop 10 (w) 10 0 0 0",
+    "/camera 320 240 0.5 0 100 -500",
+    ""])
+
+
+def included_session(f2):
+    """Variables and objects followed into an included file and back, the
+    camera's hover, and an include's errors on the include line."""
+    directory = tempfile.mkdtemp(prefix="f2 lsp ")
+    try:
+        os.mkdir(os.path.join(directory, "parts"))
+        main_path = os.path.join(directory, "main.f2")
+        stage_path = os.path.join(directory, "parts", "stage.f2")
+        for path, text in ((main_path, MAIN), (stage_path, STAGE)):
+            with open(path, "w") as f:
+                f.write(text)
+        main_uri = "file://" + urllib.parse.quote(main_path)
+        stage_uri = "file://" + urllib.parse.quote(stage_path)
+
+        def at(uri, line, character, **extra):
+            return dict({"textDocument": {"uri": uri}, "position": position(line, character)}, **extra)
+
+        def loc(uri, line, start, end):
+            return {"uri": uri, "range": rng(line, start, end)}
+
+        client = Client([f2, "lsp"])
+        client.request("initialize", {"processId": None, "rootUri": None, "capabilities": {}})
+        client.notify("textDocument/didOpen",
+                      {"textDocument": {"uri": main_uri, "languageId": "f2", "version": 1, "text": MAIN}})
+        expect("included: diagnostics of main.f2", client.next_notification("textDocument/publishDiagnostics")["params"],
+               {"uri": main_uri, "version": 1, "diagnostics": []})
+
+        # From main.f2 into parts/stage.f2 (read from disk: it is not open).
+        reply = client.request("textDocument/definition", at(main_uri, 2, 20))
+        expect("included: definition of h", reply["result"], loc(stage_uri, 1, 5, 6))
+        reply = client.request("textDocument/definition", at(main_uri, 3, 8))
+        expect("included: definition of prop", reply["result"], loc(stage_uri, 2, 5, 9))
+        reply = client.request("textDocument/references", at(main_uri, 2, 20, context={"includeDeclaration": True}))
+        expect("included: references of h", reply["result"],
+               [loc(stage_uri, 1, 5, 6), loc(main_uri, 2, 20, 21), loc(main_uri, 4, 16, 17)])
+        reply = client.request("textDocument/rename", at(main_uri, 3, 8, newName="crate"))
+        expect("included: rename prop -> crate", reply["result"], {"changes": {
+            main_uri: [{"range": rng(3, 7, 11), "newText": "crate"}, {"range": rng(4, 8, 12), "newText": "crate"},
+                       {"range": rng(5, 9, 13), "newText": "crate"}],
+            stage_uri: [{"range": rng(2, 5, 9), "newText": "crate"}]}})
+        reply = client.request("textDocument/rename", at(main_uri, 4, 16, newName="height"))
+        expect("included: rename h -> height", reply["result"], {"changes": {
+            main_uri: [{"range": rng(2, 20, 21), "newText": "height"}, {"range": rng(4, 16, 17), "newText": "height"}],
+            stage_uri: [{"range": rng(1, 5, 6), "newText": "height"}]}})
+        for what, params, message in [
+                ("camera", at(main_uri, 3, 8, newName="camera"),
+                 "'camera' names the scene camera and cannot be an object's name"),
+                ("a taken object name", at(main_uri, 3, 8, newName="ball"), "an object named 'ball' already exists"),
+                ("a taken variable name", at(main_uri, 4, 16, newName="w"), "a variable named 'w' already exists"),
+                ("pi", at(main_uri, 4, 16, newName="pi"), "'pi' is predefined and cannot be a variable")]:
+            reply = client.request("textDocument/rename", params)
+            expect("included: rename to " + what, reply.get("error"), {"code": -32803, "message": message})
+
+        reply = client.request("textDocument/hover", at(main_uri, 6, 9))
+        expect("included: hover on camera", reply["result"], {
+            "range": rng(6, 7, 13),
+            "contents": {"kind": "markdown", "value":
+                         "**camera**, the scene camera, set at line 4 of %s:\n"
+                         "```f2\n/camera 320 240 0.5 0 100 -500\n```\n"
+                         "- image 320 \u00d7 240, d 0.5\n- keys: 1\n- looks at: `prop` (line 6)\n"
+                         "- rides on: nothing\n"
+                         "- at frame 0: eye (0, 100, -500), looking along (0, -0.196116, 0.980581)\n" % stage_path}})
+        reply = client.request("textDocument/hover", at(main_uri, 2, 20))
+        expect("included: hover on h", reply["result"], {
+            "range": rng(2, 20, 21),
+            "contents": {"kind": "markdown", "value":
+                         "**variable** `h` = 25, defined at line 2 of %s:\n```f2\n/let h 25\n```" % stage_path}})
+        reply = client.request("textDocument/completion", at(main_uri, 4, 16))
+        expect("included: variables offered in an expression", [i["label"] for i in reply["result"][:3]],
+               ["w", "h", "pi"])
+        expect("included: where h comes from", reply["result"][1]["detail"], "variable, line 2 of stage.f2")
+        reply = client.request("textDocument/completion", at(main_uri, 1, 16))
+        expect("included: include path completion", reply["result"],
+               [{"label": "stage.f2", "kind": 17, "detail": "scene file",
+                 "textEdit": {"range": rng(1, 16, 16), "newText": "stage.f2"}}])
+
+        # And back: stage.f2 opened is read as part of main.f2 (w is known there).
+        client.notify("textDocument/didOpen",
+                      {"textDocument": {"uri": stage_uri, "languageId": "f2", "version": 1, "text": STAGE}})
+        expect("included: diagnostics of stage.f2 opened",
+               client.next_notification("textDocument/publishDiagnostics")["params"],
+               {"uri": stage_uri, "version": 1, "diagnostics": []})
+        reply = client.request("textDocument/definition", at(stage_uri, 2, 14))
+        expect("included: definition of w from stage.f2", reply["result"], loc(main_uri, 0, 5, 6))
+        reply = client.request("textDocument/references", at(stage_uri, 2, 6, context={"includeDeclaration": False}))
+        expect("included: references of prop from stage.f2", reply["result"],
+               [loc(main_uri, 3, 7, 11), loc(main_uri, 4, 8, 12), loc(main_uri, 5, 9, 13)])
+
+        # An error typed into stage.f2 (not saved): on its own URI, and on main.f2's include line.
+        del client.notifications[:]
+        client.notify("textDocument/didChange", {"textDocument": {"uri": stage_uri, "version": 2},
+                                                 "contentChanges": [{"text": STAGE.replace("10 0 0 0", "10 0 0 zz")}]})
+        published = {}
+        while len(published) < 2:
+            params = client.next_notification("textDocument/publishDiagnostics")["params"]
+            published[params["uri"]] = params
+        error = {"range": rng(2, 24, 26), "severity": 1, "source": "f2", "message": "expected a number, got 'zz'"}
+        expect("included: the error in stage.f2", published[stage_uri],
+               {"uri": stage_uri, "version": 2, "diagnostics": [error]})
+        expect("included: the error on main.f2's include line", published[main_uri], {
+            "uri": main_uri, "version": 1, "diagnostics": [{
+                "range": rng(1, 9, 25), "severity": 1, "source": "f2",
+                "message": "in the included file parts/stage.f2:3:25: expected a number, got 'zz'",
+                "relatedInformation": [{"location": loc(stage_uri, 2, 24, 26),
+                                        "message": "expected a number, got 'zz'"}]}]})
+
+        # stage.f2 includes main.f2: a cycle, reported, and nothing hangs.
+        client.notify("textDocument/didChange", {"textDocument": {"uri": stage_uri, "version": 3},
+                                                 "contentChanges": [{"text": STAGE + "/include ../main.f2\n"}]})
+        reply = client.request("textDocument/hover", at(stage_uri, 2, 14))
+        expect("included: a cycle still answers", "result" in reply, True)
+        reply = client.request("shutdown")
+        client.notify("exit", None)
+        expect("included: exit code", client.close(), 0)
+    finally:
+        shutil.rmtree(directory)
+
+
 def main():
+    included_session(sys.argv[1])
     client = Client([sys.argv[1], "lsp"])
 
     # Before initialize a request is refused.

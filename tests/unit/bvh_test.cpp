@@ -283,6 +283,50 @@ TEST(BvhProperty, RefitAfterMotionMatchesBruteForce) {
     std::cout << "[   INFO   ] refit test: " << refits << " refits, " << rebuilds << " rebuilds\n";
 }
 
+TEST(BvhProperty, DegradedSubtreesAreRebuiltInPlace) {
+    // Clusters that keep their place while their members shuffle inside them:
+    // refitting degrades the subtrees below the top of the tree, not the top,
+    // so update() rebuilds those subtrees (a few per call) instead of the whole
+    // tree. The rebuilt tree must still contain its children, hold every
+    // primitive once, use no more live nodes than a binary tree can, and
+    // answer every query as brute force does.
+    const std::uint32_t seed = test::testSeed(8675309u);
+    SCOPED_TRACE(::testing::Message() << "seed " << seed);
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> u01(0.0f, 1.0f), inside(-30.0f, 30.0f), place(-500.0f, 500.0f);
+    const int clusters = 100, members = 40;
+    std::vector<Primitive> prims = randomScene(rng, clusters * members, 5.0f);
+    std::vector<Vec3> centres(clusters);
+    for (Vec3& c : centres) c = {place(rng), place(rng), place(rng)};
+    auto shuffle = [&](int cluster) {
+        for (int m = 0; m < members; ++m)
+            prims[std::size_t(cluster * members + m)].centre =
+                centres[std::size_t(cluster)] + Vec3{inside(rng), inside(rng), inside(rng)};
+    };
+    for (int c = 0; c < clusters; ++c) shuffle(c);
+    ThreadPool pool(2);
+    Bvh bvh;
+    ASSERT_TRUE(bvh.update(prims, &pool));
+    int subtreeRebuilds = 0, fullRebuilds = 0;
+    for (int frame = 0; frame < 10; ++frame) {
+        for (int k = 0; k < 4; ++k) shuffle(int(u01(rng) * clusters) % clusters);
+        fullRebuilds += bvh.update(prims, frame % 2 ? &pool : nullptr);
+        subtreeRebuilds += int(bvh.subtreesRebuilt());
+        auto [depth, leafPrims] = inspectTree(bvh);
+        EXPECT_EQ(leafPrims, prims.size());
+        EXPECT_LE(bvh.liveNodeCount(), 2 * prims.size() - 1);
+        for (int n = 0; n < 1000; ++n) {
+            Ray ray = randomRay(rng, prims, 500);
+            ASSERT_TRUE(agrees(prims, bvh, ray, 0, kInfinity)) << "frame " << frame << ", ray " << n;
+            ASSERT_EQ(bvh.occluded(ray, 0, kInfinity), bruteAny(prims, ray, 0, kInfinity))
+                << "frame " << frame << ", ray " << n;
+        }
+    }
+    EXPECT_GT(subtreeRebuilds, 0) << "shuffled clusters degrade their subtrees";
+    std::cout << "[   INFO   ] subtree test: " << subtreeRebuilds << " subtree rebuilds, " << fullRebuilds
+              << " full rebuilds\n";
+}
+
 TEST(BvhProperty, ParallelBuildMakesTheSameTree) {
     // With a pool, subtrees are built on its threads into their own arrays and
     // appended: the splits must be those of the serial build (same leaves, same

@@ -335,7 +335,7 @@ TEST(Robustness, SmallLimitsHoldForEveryCounter) {
     EXPECT_EQ(r.diagnostics[5].format(), "t.f2:7:1: error: too many errors (5); parsing stopped here");
 }
 
-// SPEC 7: at most 1,000 lights, ambient and directional together.
+// SPEC 7: at most 1,000 lights, of every kind together.
 TEST(Robustness, ThousandLightsAtMost) {
     std::string text;
     for (int i = 0; i < 500; ++i) text += "/amb_light 0.001\n/dir_light 0.001 0 -1 1\n";
@@ -344,7 +344,8 @@ TEST(Robustness, ThousandLightsAtMost) {
     const ParseResult r = parseScene(text + "/dir_light 1 0 -1 1\n/amb_light 1\n", "t.f2");
     ASSERT_EQ(r.diagnostics.size(), 2u) << dump(r);
     EXPECT_EQ(r.diagnostics[0].format(),
-              "t.f2:1001:1: error: too many lights: at most 1000 allowed (ambient and directional together)");
+              "t.f2:1001:1: error: too many lights: at most 1000 allowed (ambient, directional, point and "
+              "spot together)");
 }
 
 // Files

@@ -110,6 +110,27 @@ TEST(Rotation, FullTurnsAreIdentity) {
     EXPECT_VEC_NEAR(rotationFromEulerDegrees(0, -90, 0) * Vec3(0, 0, 1), Vec3(-1, 0, 0), kTol);
 }
 
+// --- Back from a matrix to angles (the viewer writes computed views as text) ---
+
+TEST(Rotation, EulerAnglesComeBackFromTheMatrix) {
+    // Angles inside the ranges eulerDegreesFromRotation returns come back as given.
+    const Vec3 cases[] = {{0, 0, 0}, {30, 0, 0}, {0, -45, 0}, {0, 0, 60}, {-20, 35, 170}, {120, -80, -10}};
+    for (const Vec3& angles : cases) {
+        SCOPED_TRACE(::testing::Message() << "angles " << angles);
+        EXPECT_VEC_NEAR(eulerDegreesFromRotation(rotationFromEulerDegrees(angles)), angles, 1e-3f);
+    }
+    // Outside those ranges other angles give the same rotation: ry = 100 is ry = 80 turned over.
+    const Mat3 over = rotationFromEulerDegrees(10, 100, 20);
+    const Vec3 back = eulerDegreesFromRotation(over);
+    EXPECT_NEAR(back.y, 80.0f, 1e-3f);
+    expectMatNear(rotationFromEulerDegrees(back), over, 1e-5f);
+    // Gimbal lock (ry = 90): rz is 0 and rx carries the rest of the turn.
+    const Mat3 locked = rotationFromEulerDegrees(0, 90, 25);
+    const Vec3 lockedBack = eulerDegreesFromRotation(locked);
+    EXPECT_EQ(lockedBack.z, 0.0f);
+    expectMatNear(rotationFromEulerDegrees(lockedBack), locked, 1e-5f);
+}
+
 // --- Table 3.1: local <-> global -------------------------------------------
 
 struct PointCase {

@@ -15,6 +15,9 @@
 #include <memory>
 
 #include "autosave.h"
+#include "capture_pose.h"
+#include "core/anim/camera_motion.h"
+#include "core/anim/frame_builder.h"
 #include "core/parse/parser.h"
 #include "editor_dock.h"
 #include "image_convert.h"
@@ -24,6 +27,7 @@
 #include "scene_document.h"
 #include "scene_editor.h"
 #include "scene_highlighter.h"
+#include "selection.h"
 #include "test_support.h"
 #include "text_capture.h"
 #include "viewport_widget.h"
@@ -83,6 +87,8 @@ class EditorTest : public QObject {
     void largeSceneTypesSmoothly();
     void captureWritesLinesInOneUndoStep();
     void captureLinesGoNextToTheirTarget();
+    void keyCameraHereWritesTheView();
+    void cameraKeyOfAnAttachedCamera();
 };
 
 void EditorTest::initTestCase() {
@@ -508,18 +514,91 @@ void EditorTest::captureLinesGoNextToTheirTarget() {
     QVERIFY(camera.replace);
     QCOMPARE(camera.text, QStringLiteral("/camera 800 600 (1/2) 1.5 0 2 0 90 0   # wide"));
     // A part without keys: after the robot's creating line.
-    const TextEdit head = keyEdit(text, "r.head", 3, pose);
+    const TextEdit head = keyEdit(text, "r.head", 3, pose, 2);
     QCOMPARE(head.line, 3);
     QVERIFY(!head.replace);
     QCOMPARE(head.text, QStringLiteral("/key 3 r.head 1.5 0 2 0 90 0"));
     // After the target's last key; at the end for an unknown line; /camera first if missing.
-    QCOMPARE(keyEdit(text, "s", 9, pose).line, 5);
-    QCOMPARE(keyEdit(text, "s", 4, pose).replace, true);
-    QCOMPARE(keyEdit(text, "gen{1}", 0, pose).line, 5);
+    QCOMPARE(keyEdit(text, "s", 9, pose, 3).line, 5);
+    QCOMPARE(keyEdit(text, "s", 4, pose, 3).replace, true);
+    QCOMPARE(keyEdit(text, "gen{1}", 0, pose, 0).line, 5);
+    // The camera's first key goes after the /camera line.
+    QCOMPARE(cameraLine(text), 1);
+    QCOMPARE(keyEdit(text, "camera", 2, pose, cameraLine(text)).line, 2);
+    QCOMPARE(cameraLine("/sphere s 1 0 0 0\n"), 0);
     const TextEdit missing = cameraEdit("/sphere s 1 0 0 0\n", CameraDesc{}, pose);
     QCOMPARE(missing.line, 1);
     QVERIFY(!missing.replace);
     QCOMPARE(missing.text, QStringLiteral("/camera 800 600 0.5 1.5 0 2 0 90 0"));
+}
+
+void EditorTest::keyCameraHereWritesTheView() {
+    QTemporaryDir dir;
+    auto w = windowOn(smallSceneFile(dir), 5);
+    QVERIFY(w);
+    SceneEditor* editor = w->editor();
+    const QString original = editor->toPlainText();
+    QTextDocument* doc = editor->document();
+
+    // The scene camera, not orbited: its /camera pose at frame 5, after the /camera line.
+    w->keyCameraHere();
+    QCOMPARE(doc->findBlockByNumber(1).text(), QStringLiteral("/key 5 camera 0 0 -10 0 0 0"));
+    QCOMPARE(editor->textCursor().selectedText(), QStringLiteral("/key 5 camera 0 0 -10 0 0 0"));
+    QCOMPARE(doc->blockCount(), original.count('\n') + 2);
+    editor->undo();
+    QCOMPARE(editor->toPlainText(), original);
+
+    // After an orbit: the look-around's eye and rotation. The scene then shows that view at frame 5.
+    const QPoint centre = w->viewport()->rect().center();
+    QTest::mousePress(w->viewport(), Qt::LeftButton, {}, centre);
+    QTest::mouseMove(w->viewport(), centre + QPoint(-25, 12));
+    QTest::mouseRelease(w->viewport(), Qt::LeftButton, {}, centre + QPoint(-25, 12));
+    QVERIFY(w->viewport()->isOrbiting());
+    const Pose view = w->viewport()->orbit()->pose();
+    w->keyCameraHere();
+    const QString keyed =
+        QStringLiteral("/key 5 camera %1 %2 %3 %4 %5 0")
+            .arg(formatNumber(view.position.x), formatNumber(view.position.y), formatNumber(view.position.z),
+                 formatNumber(view.rotation.x), formatNumber(view.rotation.y));
+    QCOMPARE(doc->findBlockByNumber(1).text(), keyed);
+    QTRY_VERIFY_WITH_TIMEOUT(!w->document()->scene()->camera.track.keys.empty(), kWaitMs);
+    const Camera scene5 = cameraAt(*w->document()->scene(), 5);
+    QVERIFY(length(scene5.eye - view.position) < 0.02f);  // two decimals per number
+    // A second key at frame 0 goes after it (the camera's last key); one at frame 5 replaces it.
+    w->playback()->seek(0);
+    w->keyCameraHere();
+    QVERIFY(doc->findBlockByNumber(2).text().startsWith("/key 0 camera "));
+    w->playback()->seek(5);
+    w->viewport()->resetView();
+    w->keyCameraHere();
+    QTRY_VERIFY_WITH_TIMEOUT(w->document()->scene()->camera.track.keys.size() == 2, kWaitMs);
+    QVERIFY(doc->findBlockByNumber(1).text().startsWith("/key 5 camera "));
+    QCOMPARE(doc->blockCount(), original.count('\n') + 3);
+    // Each capture was one undo step.
+    for (int i = 0; i < 3; ++i) editor->undo();
+    QCOMPARE(editor->toPlainText(), original);
+}
+
+void EditorTest::cameraKeyOfAnAttachedCamera() {
+    const ParseResult parsed = parseScene(
+        "/camera 80 60 0.5 0 50 -100 10 0 0\n/box cart 10 10 10 0 0 0\n/key 0 cart 0 0 0 0 0 0\n"
+        "/key 10 cart 100 0 50 0 90 0\n/attach camera cart\n/key 0 camera 0 50 -100 10 0 0\n",
+        "attached.f2");
+    QVERIFY(parsed.ok());
+    const SceneDesc& scene = *parsed.scene;
+    // Without a view: the camera's own key pose, in the cart's frame.
+    const Pose own = cameraKeyPose(scene, 5, std::nullopt);
+    QCOMPARE(own, (Pose{{0, 50, -100}, {10, 0, 0}}));
+    // With a view: the key that, riding on the cart at frame 5, puts the eye there.
+    const Pose view{{20, 30, -40}, {15, -30, 0}};
+    const Pose key = cameraKeyPose(scene, 5, view);
+    const Transform world =
+        worldFromRef(scene, *scene.camera.attachedTo, 5) * Transform::fromPose(key.position, key.rotation);
+    QVERIFY(length(world.translation - view.position) < 1e-3f);
+    const Mat3 wanted = rotationFromEulerDegrees(view.rotation);
+    for (int r = 0; r < 3; ++r) QVERIFY(length(world.linear.row[r] - wanted.row[r]) < 1e-5f);
+    // The cart turned 45 degrees by frame 5: the key's rotation differs from the view's.
+    QVERIFY(std::fabs(key.rotation.y - (view.rotation.y - 45)) < 1e-3f);
 }
 
 QTEST_MAIN(EditorTest)

@@ -5,6 +5,7 @@
 #include <QElapsedTimer>
 #include <QFile>
 #include <QListWidget>
+#include <QMenu>
 #include <QMenuBar>
 #include <QPlainTextEdit>
 #include <QProcess>
@@ -14,8 +15,10 @@
 #include <QSlider>
 #include <QSpinBox>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTextBlock>
 #include <QTimer>
 #include <QWheelEvent>
 #include <atomic>
@@ -23,6 +26,7 @@
 
 #include "animation_exporter.h"
 #include "autosave.h"
+#include "core/anim/frame_time.h"
 #include "core/parse/parser.h"
 #include "core/render/renderer.h"
 #include "editor_dock.h"
@@ -31,9 +35,11 @@
 #include "io/png_writer.h"
 #include "io/sequence_sink.h"
 #include "io/video_sink.h"
+#include "key_marker_slider.h"
 #include "main_window.h"
 #include "orbit_camera.h"
 #include "playback.h"
+#include "playback_antialias.h"
 #include "render_controller.h"
 #include "scene_document.h"
 #include "scene_editor.h"
@@ -62,6 +68,8 @@ class ViewerTest : public QObject {
     void helpMenuListsShortcutsAndReference();
     void clickSelectsWhatIsDrawn();
     void pausedPictureRefinesToAa4();
+    void playbackAntialiasFitsTheBudget();
+    void playingUsesTheChosenAntialias();
     void stepGoesFromTheFrameShown();
     void viewFollowsTheMovingCamera();
     void renderScaleFollowsWindow();
@@ -74,6 +82,8 @@ class ViewerTest : public QObject {
     void exportWritesPngSequence();
     void exportWritesVideo();
     void cancelledVideoExportLeavesNoFile();
+    void loopPointsDrivePlaybackAndExport();
+    void pickNamesTheLineALoopOrIncludeMadeItBy();
 };
 
 namespace {
@@ -125,6 +135,9 @@ class GatedSink : public FrameSink {
     std::unique_ptr<VideoSink> video_;
     std::shared_ptr<std::atomic<bool>> release_;
 };
+
+/// A loop range as Playback reports it.
+std::optional<FrameRange> loopOf(int first, int last) { return FrameRange{first, last}; }
 
 }  // namespace
 
@@ -385,10 +398,19 @@ void ViewerTest::pausedPictureRefinesToAa4() {
     QVERIFY(fromQImage(w.viewport()->image()) == coreRender(*w.document()->scene(), 5, 96, 72, 4));
     QVERIFY(fromQImage(w.viewport()->image()) != coreRender(*w.document()->scene(), 5, 96, 72, 1));
 
-    // A change restarts it: one sample first, then 2x2, then 4x4, all of frame 6.
+    // The picture is complete (what --screenshot waits for): refined, at the window's size.
+    QVERIFY(w.isPictureComplete());
+
+    // A change restarts it: one sample first, then 2x2, then 4x4, all of frame 6;
+    // only the last is a complete picture.
     QSignalSpy frames(w.renderController(), &RenderController::frameReady);
+    QList<bool> complete;
+    connect(w.renderController(), &RenderController::frameReady, this,
+            [&] { complete << w.isPictureComplete(); });
     w.playback()->seek(6);
+    QVERIFY(!w.isPictureComplete());
     QVERIFY(waitForShownFrame(w, 6));
+    disconnect(w.renderController(), &RenderController::frameReady, this, nullptr);
     QList<int> steps;
     for (const auto& args : frames) {
         const auto info = args.at(1).value<FrameInfo>();
@@ -396,6 +418,7 @@ void ViewerTest::pausedPictureRefinesToAa4() {
         steps << info.antialias;
     }
     QCOMPARE(steps, (QList<int>{1, 2, 4}));
+    QCOMPARE(complete, (QList<bool>{false, false, true}));
     QVERIFY(fromQImage(w.viewport()->image()) == coreRender(*w.document()->scene(), 6, 96, 72, 4));
 
     // Playing shows one sample per frame; switched off, paused frames stay at one sample.
@@ -403,6 +426,98 @@ void ViewerTest::pausedPictureRefinesToAa4() {
     w.playback()->seek(7);
     QVERIFY(waitForShownFrame(w, 7));
     QCOMPARE(w.shownFrame().antialias, 1);
+}
+
+void ViewerTest::playbackAntialiasFitsTheBudget() {
+    // Scripted costs, no clock: a frame at N x N takes 2 ms + 3 ms per sample.
+    PlaybackAntialias aa;
+    aa.setCostModel([](int n) { return PlaybackAntialias::Cost{2, 3.0 * n * n}; });
+    aa.setBudgetMs(1000.0 / 24);  // may take 75 %: 31.3 ms; steps up to what fits in 80 % of that, 25 ms
+    QCOMPARE(aa.level(), 1);      // nothing measured yet
+    aa.observe(1, {});
+    QCOMPARE(aa.level(), 2);  // 2x2: 14 ms fits; 3x3: 29 ms would fit but not with the margin
+    aa.observe(2, {});
+    QCOMPARE(aa.level(), 2);
+    aa.setBudgetMs(1000.0 / 60);  // 12.5 ms allowed: 2x2 (14 ms) no longer fits
+    aa.observe(2, {});
+    QCOMPARE(aa.level(), 1);
+    aa.setMode(PlaybackAntialiasMode::On);
+    QCOMPARE(aa.level(), PlaybackAntialias::kOnLevel);
+    aa.setMode(PlaybackAntialiasMode::Off);
+    QCOMPARE(aa.level(), 1);
+
+    // A cheaper scene: the estimates follow over a few frames (smoothed), up to
+    // the refined picture's 4x4, not beyond.
+    aa.setMode(PlaybackAntialiasMode::Auto);
+    aa.setCostModel([](int n) { return PlaybackAntialias::Cost{0.5, 0.25 * n * n}; });
+    aa.observe(1, {});
+    QCOMPARE(aa.level(), 1);  // 2x2 predicted at 10.25 ms: more than 80 % of 12.5 ms
+    for (int frame = 0; frame < 10; ++frame) aa.observe(aa.level(), {});
+    QCOMPARE(aa.level(), PlaybackAntialias::kMaxAutoLevel);
+
+    // Without a model the frame's own timings are the measurement: evaluate + build
+    // is the fixed part, the trace is per sample (12 ms at 2x2 = 3 ms a sample).
+    PlaybackAntialias measured;
+    measured.setBudgetMs(1000.0 / 24);
+    FrameTimings timings;
+    timings.evaluateMs = 1;
+    timings.buildMs = 1;
+    timings.traceMs = 12;
+    measured.observe(2, timings);
+    QCOMPARE(measured.level(), 2);
+    // One slow frame (a hiccup) is smoothed, not followed: 30 % of the way.
+    timings.traceMs = 40;
+    measured.observe(2, timings);
+    QCOMPARE(measured.level(), 2);  // estimate 5.1 ms a sample: 2x2 = 22 ms still fits
+    measured.reset();
+    QCOMPARE(measured.level(), 1);
+}
+
+void ViewerTest::playingUsesTheChosenAntialias() {
+    QTemporaryDir dir;
+    auto window = windowOn(smallSceneFile(dir), 0);
+    QVERIFY(window);
+    MainWindow& w = *window;
+    QCOMPARE(w.playbackAntialias().budgetMs(), double(1000 / 24));  // the clock's tick at /fps 24
+    // From here on, every frame's cost is the model's (the estimates so far came from real timings).
+    w.playbackAntialias().setCostModel([](int n) { return PlaybackAntialias::Cost{2, 3.0 * n * n}; });
+    w.playbackAntialias().reset();
+    QVERIFY(w.playbackAntialiasStatus().isEmpty());  // paused: the refinement's status speaks
+
+    // Frames asked for before a change may still arrive after it: a few frames later the
+    // picture on screen is one the new choice made.
+    quint64 since = 0;
+    auto playingAt = [&w, &since](int n) {
+        return w.playback()->isPlaying() && w.renderController()->framesDelivered() >= since + 3 &&
+               w.shownFrame().antialias == n;
+    };
+    auto change = [&w, &since](PlaybackAntialiasMode mode) {
+        since = w.renderController()->framesDelivered();
+        w.setPlaybackAntialias(mode);
+    };
+    change(PlaybackAntialiasMode::Auto);
+    w.playback()->play();
+    QTRY_VERIFY_WITH_TIMEOUT(playingAt(2), kWaitMs);
+    QTRY_COMPARE_WITH_TIMEOUT(w.playbackAntialiasStatus(), QString("playing: 2×2 samples (auto)"), kWaitMs);
+    expectViewportMatchesCore(w, w.shownFrame().time);  // what `f2 render --aa 2` gives
+
+    change(PlaybackAntialiasMode::Off);
+    QTRY_VERIFY_WITH_TIMEOUT(playingAt(1), kWaitMs);
+    QTRY_COMPARE_WITH_TIMEOUT(w.playbackAntialiasStatus(), QString("playing: 1×1 samples (off)"), kWaitMs);
+
+    // A cost that 2x2 does not fit: Auto plays with one sample.
+    w.playbackAntialias().setCostModel([](int n) { return PlaybackAntialias::Cost{10, 10.0 * n * n}; });
+    change(PlaybackAntialiasMode::Auto);
+    QTRY_VERIFY_WITH_TIMEOUT(playingAt(1), kWaitMs);
+    QCOMPARE(w.playbackAntialias().level(), 1);
+    QCOMPARE(w.playbackAntialiasStatus(), QString("playing: 1×1 samples (auto)"));
+    change(PlaybackAntialiasMode::On);
+    QTRY_VERIFY_WITH_TIMEOUT(playingAt(2), kWaitMs);
+
+    w.playback()->pause();
+    QVERIFY(waitForShownFrame(w, w.playback()->time()));
+    QVERIFY(w.playbackAntialiasStatus().isEmpty());
+    w.setPlaybackAntialias(PlaybackAntialiasMode::Auto);  // the settings are shared with other tests
 }
 
 void ViewerTest::stepGoesFromTheFrameShown() {
@@ -748,6 +863,147 @@ void ViewerTest::cancelledVideoExportLeavesNoFile() {
     QVERIFY(cancelled);
     QVERIFY(!QFileInfo::exists(path));
     QVERIFY2(tempFiles(dir.path()).isEmpty(), qPrintable(tempFiles(dir.path()).join(' ')));
+}
+
+void ViewerTest::loopPointsDrivePlaybackAndExport() {
+    QTemporaryDir dir;
+    auto window = windowOn(smallSceneFile(dir), 3);
+    QVERIFY(window);
+    MainWindow& w = *window;
+    w.editorDock()->hide();  // room for the timeline on the 800-pixel offscreen screen
+    w.resizeForViewport({400, 100});
+    Playback* playback = w.playback();
+    KeyMarkerSlider* slider = w.timeline()->slider();
+    QVERIFY(!playback->loopRange());
+
+    // I and O (the picture has the focus) set the points at the frame shown.
+    w.viewport()->setFocus();
+    QTest::keyClick(w.viewport(), Qt::Key_I);
+    QCOMPARE(playback->loopRange(), loopOf(3, 10));  // out defaults to the last frame
+    playback->seek(6);
+    QTest::keyClick(w.viewport(), Qt::Key_O);
+    QCOMPARE(playback->loopRange(), loopOf(3, 6));
+    QCOMPARE(slider->loop(), (std::optional<std::pair<int, int>>{{3, 6}}));
+
+    // Playing from outside the loop starts at its in point and never leaves it;
+    // it comes round again (4 frames at 4x speed: a sixth of a second a turn).
+    playback->seek(8);
+    playback->setSpeed(4);
+    QList<double> times;
+    connect(playback, &Playback::timeChanged, this, [&](double t) { times << t; });
+    playback->play();
+    QTRY_VERIFY_WITH_TIMEOUT(times.size() > 2 && frameAt(times.last()) < frameAt(times[times.size() - 2]),
+                             kWaitMs);
+    playback->pause();
+    disconnect(playback, &Playback::timeChanged, this, nullptr);
+    QCOMPARE(times.first(), 3.0);
+    for (double t : times) QVERIFY2(t >= 3 && t < 7, qPrintable(QString::number(t)));
+
+    // Dragging a flag on the slider moves that point.
+    const double pausedAt = playback->time();
+    const int top = slider->loopFlagY();
+    QTest::mousePress(slider, Qt::LeftButton, {}, QPoint(slider->positionOf(3), top));
+    QTest::mouseMove(slider, QPoint(slider->positionOf(2), top));
+    QTest::mouseMove(slider, QPoint(slider->positionOf(1), top));
+    QTest::mouseRelease(slider, Qt::LeftButton, {}, QPoint(slider->positionOf(1), top));
+    QCOMPARE(playback->loopRange(), loopOf(1, 6));
+    QTest::mousePress(slider, Qt::LeftButton, {}, QPoint(slider->positionOf(6), top));
+    QTest::mouseMove(slider, QPoint(slider->positionOf(8), top));
+    QTest::mouseRelease(slider, Qt::LeftButton, {}, QPoint(slider->positionOf(8), top));
+    QCOMPARE(playback->loopRange(), loopOf(1, 8));
+    QCOMPARE(playback->time(), pausedAt);  // dragging a flag does not scrub
+
+    // The slider's context menu: in/out at the frame under the mouse, an out
+    // point before the in point moves it along, and Clear.
+    {
+        auto menu = slider->loopMenu(5);
+        QCOMPARE(menu->actions().size(), 3);
+        menu->actions()[0]->trigger();
+        QCOMPARE(playback->loopRange(), loopOf(5, 8));
+    }
+    slider->loopMenu(2)->actions()[1]->trigger();
+    QCOMPARE(playback->loopRange(), loopOf(2, 2));
+
+    // Export renders the loop's frames only, numbered as scene frames.
+    playback->setLoopIn(4);
+    playback->setLoopOut(7);
+    const auto scene = w.document()->scene();
+    ExportJob job = w.exportJob(
+        scene, std::make_unique<PngSequenceSink>(exportSequencePattern(dir.filePath("out"), "small", 11)),
+        "out");
+    QCOMPARE(job.firstFrame, 4);
+    QCOMPARE(job.lastFrame, 7);
+    AnimationExporter exporter;
+    QSignalSpy finished(&exporter, &AnimationExporter::finished);
+    exporter.start(std::move(job));
+    QVERIFY(finished.wait(kWaitMs * 3));
+    QVERIFY2(finished.at(0).at(0).toBool(), qPrintable(finished.at(0).at(1).toString()));
+    QCOMPARE(QDir(dir.filePath("out")).entryList({"*.png"}),
+             (QStringList{"small_0004.png", "small_0005.png", "small_0006.png", "small_0007.png"}));
+    Image read;
+    std::string error;
+    QVERIFY2(readPng(dir.filePath("out/small_0005.png").toStdString(), read, error), error.c_str());
+    QVERIFY(read == coreRender(*scene, 5, 96, 72));
+
+    // Cleared (Alt+X): the whole scene again, for playing and exporting.
+    QTest::keyClick(w.viewport(), Qt::Key_X, Qt::AltModifier);
+    QVERIFY(!playback->loopRange());
+    QVERIFY(!slider->loop());
+    const ExportJob all = w.exportJob(scene, nullptr, "all");
+    QCOMPARE(all.firstFrame, 0);
+    QCOMPARE(all.lastFrame, 10);
+}
+
+void ViewerTest::pickNamesTheLineALoopOrIncludeMadeItBy() {
+    // Three balls made by one line of a /repeat loop, and a crate from an included file.
+    QTemporaryDir dir;
+    writeFile(dir.filePath("parts.f2"), "# parts\n/box crate 1.5 1.5 1.5 0 2.5 8\n");
+    const QByteArray text =
+        "/camera 96 72 0.6 0 0 -10\n/background 20 30 40\n/amb_light 0.3\n/dir_light 0.8 0.3 -0.5 1\n"
+        "/repeat i 0 2\n  /sphere ball{i} 1 (i*3-3) 0 8\n/end\n/include parts.f2\n";
+    writeFile(dir.filePath("loops.f2"), text);
+    auto window = windowOn(dir.filePath("loops.f2"), 0);
+    QVERIFY(window);
+    MainWindow& w = *window;
+    w.editorDock()->hide();
+    w.setRenderScale(RenderScale::SceneSize);
+    QVERIFY(waitForShownFrame(w, 0));
+    const Camera camera = Camera::fromDesc(w.document()->scene()->camera);
+    auto clickAt = [&](Vec3 world) {
+        float px = 0, py = 0;
+        QVERIFY(camera.project(world, px, py));
+        const QRectF onScreen = w.viewport()->imageRect();
+        QTest::mouseClick(w.viewport(), Qt::LeftButton, {},
+                          QPoint(int(onScreen.left() + px * onScreen.width() / 96),
+                                 int(onScreen.top() + py * onScreen.height() / 72)));
+    };
+
+    // ball2 is selected at the loop's line, and the status bar says a loop made it.
+    clickAt({3, 0, 8});
+    QVERIFY(w.selection());
+    QCOMPARE(w.selection()->target(), QStringLiteral("ball2"));
+    QCOMPARE(w.editor()->textCursor().selectedText(), QStringLiteral("  /sphere ball{i} 1 (i*3-3) 0 8"));
+    QCOMPARE(w.editor()->textCursor().blockNumber(), 5);
+    QVERIFY2(w.statusBar()->currentMessage().contains("ball2 is made by line 6, one of 3 objects"),
+             qPrintable(w.statusBar()->currentMessage()));
+
+    // Its first key goes to the end, not into the loop (where every pass would read it).
+    QVERIFY(w.keySelectionHere());
+    QTextDocument* doc = w.editor()->document();
+    QCOMPARE(doc->findBlockByNumber(8).text(), QStringLiteral("/key 0 ball2 3 0 8 0 0 0"));
+    QCOMPARE(doc->findBlockByNumber(7).text(), QStringLiteral("/include parts.f2"));
+    w.editor()->undo();
+    QCOMPARE(w.editor()->toPlainText(), QString::fromUtf8(text));
+
+    // The crate is made in parts.f2: nothing in the editor is selected, the status bar names the place.
+    w.editor()->moveCursor(QTextCursor::Start);
+    clickAt({0, 2.5f, 8});
+    QVERIFY(w.selection());
+    QCOMPARE(w.selection()->target(), QStringLiteral("crate"));
+    QVERIFY(!w.editor()->textCursor().hasSelection());
+    QVERIFY2(w.statusBar()->currentMessage().contains("crate is made in an included file") &&
+                 w.statusBar()->currentMessage().contains("parts.f2:2"),
+             qPrintable(w.statusBar()->currentMessage()));
 }
 
 QTEST_MAIN(ViewerTest)

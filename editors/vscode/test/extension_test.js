@@ -1,7 +1,8 @@
 // Loads extension.js with stand-ins for the `vscode` API and the language
 // client (no editor needed) and checks what activate() sets up: a client that
 // runs `f2 lsp` for f2 documents, the two commands, formatting only when
-// f2.formatKeys is on, and the frame offered by "Render this frame".
+// f2.formatKeys is on, the frame offered by "Render this frame", and that
+// package.json declares what the code uses.
 //   node test/extension_test.js
 "use strict";
 const Module = require("module");
@@ -73,7 +74,21 @@ Module._load = function (request, parent, isMain) {
 
   await registered["f2.renderFrame"]();
   assert.strictEqual(offeredFrame, "36", "on a /key line the key's frame is offered");
-  console.log("extension: client, commands, formatting switch and offered frame checked");
+
+  // The manifest agrees with the code: VS Code activates the extension for f2
+  // documents from contributes.languages alone (VS Code 1.74 and later), the
+  // commands it registers are the ones it declares, the settings it reads exist.
+  const manifest = require(path.join(__dirname, "..", "package.json"));
+  assert.deepStrictEqual(manifest.activationEvents, []);
+  const [major, minor] = /^\^(\d+)\.(\d+)/.exec(manifest.engines.vscode).slice(1).map(Number);
+  assert.ok(major > 1 || minor >= 74, "implicit activation needs VS Code 1.74");
+  assert.deepStrictEqual(manifest.contributes.languages.map((l) => l.id), ["f2"]);
+  assert.deepStrictEqual(manifest.contributes.commands.map((c) => c.command).sort(), Object.keys(registered).sort());
+  for (const name of ["path", "viewerPath", "formatKeys"]) {
+    assert.strictEqual(manifest.contributes.configuration.properties[`f2.${name}`].default, name === "formatKeys" ? false : name === "path" ? "f2" : "f2-viewer");
+  }
+  assert.ok(manifest.devDependencies["@vscode/vsce"], "the packager comes from npm ci (lsp.vscode_package)");
+  console.log("extension: client, commands, formatting switch, offered frame and manifest checked");
 })().catch((e) => {
   console.error(e);
   process.exit(1);

@@ -22,9 +22,32 @@ struct Surface {
     Material material;
 };
 
+/// A directional light at this frame.
 struct LightSample {
     Vec3 toLight;  ///< L = -normalize(direction of travel)
     float intensity;
+    /// A soft sun: its shadow rays go toward EvaluatedFrame::sunDirections
+    /// [firstSample, firstSample + sampleCount); 0 samples: one ray along toLight.
+    std::uint32_t firstSample = 0, sampleCount = 0;
+};
+
+/// A point on a light's disc, each coordinate in [-1/2, 1/2] of its diameter.
+struct DiscPoint {
+    float u, v;
+};
+
+/// A point or spot light at this frame (SceneDesc::localLights, with the
+/// values shading needs worked out once).
+struct LocalLightSample {
+    Vec3 position;
+    float intensity = 0;
+    bool spot = false;
+    Vec3 axis;  ///< spot: unit direction the light travels
+    float cosRadius = 0, cosFalloff = 0, tightness = 0;
+    Fade fade;
+    float diameter = 0;  ///< of the disc its soft shadows sample (0: hard)
+    /// Soft shadows: EvaluatedFrame::discPoints [firstSample, firstSample + sampleCount).
+    std::uint32_t firstSample = 0, sampleCount = 0;
 };
 
 /// Primitives are in scene order: object by object, each model's shapes in
@@ -35,6 +58,9 @@ struct EvaluatedFrame {
     /// Object i's primitives are [firstPrimitive[i], firstPrimitive[i + 1]).
     std::vector<std::uint32_t> firstPrimitive;
     std::vector<LightSample> lights;
+    std::vector<Vec3> sunDirections;  ///< unit, toward the samples of soft suns
+    std::vector<LocalLightSample> localLights;
+    std::vector<DiscPoint> discPoints;  ///< the sample patterns of soft point and spot lights
     float ambient = 0;
     Vec3 background;  ///< 0..1
     /// World root frames of attached objects (SPEC 9.2), indexed by object.

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/anim/animation_program.h"
+#include "core/anim/light_frame.h"
 #include "core/anim/track.h"
 #include "core/scene/models.h"
 
@@ -73,11 +74,9 @@ constexpr std::size_t kObjectsPerChunk = 256;
 }  // namespace
 
 void evaluateFrame(const SceneDesc& scene, double t, EvaluatedFrame& frame, ThreadPool* pool) {
-    frame.lights.clear();
+    evaluateLights(scene, frame);
     frame.ambient = scene.ambient;
     frame.background = toUnitColor(scene.background);
-    for (const DirectionalLight& light : scene.lights)
-        frame.lights.push_back({-normalize(light.direction), light.intensity});
 
     // Each object owns a fixed run of primitive slots, so objects can be
     // evaluated in any order, in parallel, straight into place.

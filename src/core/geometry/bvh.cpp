@@ -215,17 +215,47 @@ void Bvh::build(std::span<const Primitive> primitives, ThreadPool* pool) {
             }
         }
     }
+    freePairs_.clear();
     costAtBuild_ = sahCost();
     planRefit();
+    subtreeCostAtBuild_.resize(subtrees_.size());
+    for (std::size_t k = 0; k < subtrees_.size(); ++k) subtreeCostAtBuild_[k] = subtreeSahSum(k);
 }
+
+namespace {
+/// body(node) for every node reachable from the root: subtree rebuilds leave
+/// unused slots in the array, which must not count.
+template <class Body>
+void forEachLiveNode(std::span<const Bvh::Node> nodes, Body&& body) {
+    if (nodes.empty()) return;
+    std::uint32_t stack[kStackSize];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const Bvh::Node& node = nodes[stack[--top]];
+        body(node);
+        if (node.count == 0) {
+            stack[top++] = node.first + 1;
+            stack[top++] = node.first;
+        }
+    }
+}
+}  // namespace
 
 float Bvh::sahCost() const {
     if (nodes_.empty()) return 0;
     float sum = 0;
-    for (const Node& node : nodes_)
+    forEachLiveNode(nodes_, [&](const Node& node) {
         sum += node.bounds.halfArea() * (node.count > 0 ? float(node.count) : kTraversalCost);
+    });
     float root = nodes_[0].bounds.halfArea();
     return root > 0 ? sum / root : 0;
+}
+
+std::size_t Bvh::liveNodeCount() const {
+    std::size_t count = 0;
+    forEachLiveNode(nodes_, [&](const Node&) { ++count; });
+    return count;
 }
 
 void Bvh::planRefit() {
@@ -241,6 +271,7 @@ void Bvh::planRefit() {
         if (node.count == 0 && item.depth == kRefitDepth) {
             // Its descendants in pre-order: walked backwards, children come before parents.
             std::uint32_t begin = std::uint32_t(refitOrder_.size());
+            std::uint32_t firstPrimitive = ~0u, endPrimitive = 0;
             std::size_t below = stack.size();
             stack.push_back({node.first, 0});
             stack.push_back({node.first + 1, 0});
@@ -252,9 +283,13 @@ void Bvh::planRefit() {
                 if (child.count == 0) {
                     stack.push_back({child.first, 0});
                     stack.push_back({child.first + 1, 0});
+                } else {
+                    firstPrimitive = std::min(firstPrimitive, child.first);
+                    endPrimitive = std::max(endPrimitive, child.first + child.count);
                 }
             }
-            subtrees_.push_back({item.node, begin, std::uint32_t(refitOrder_.size())});
+            subtrees_.push_back(
+                {item.node, begin, std::uint32_t(refitOrder_.size()), firstPrimitive, endPrimitive});
             continue;
         }
         topNodes_.push_back(item.node);  // leaves above the depth included
@@ -304,20 +339,145 @@ float Bvh::refit(std::span<const Primitive> primitives, ThreadPool* pool) {
 }
 
 bool Bvh::update(std::span<const Primitive> primitives, ThreadPool* pool) {
+    subtreesRebuilt_ = 0;
     if (!nodes_.empty() && primitives.size() == ordered_.size() &&
-        refit(primitives, pool) <= costAtBuild_ * kRebuildGrowth)
+        refit(primitives, pool) <= costAtBuild_ * kRebuildGrowth) {
+        rebuildDegradedSubtrees(primitives, pool);
         return false;
+    }
     build(primitives, pool);
     return true;
 }
 
+float Bvh::subtreeSahSum(std::size_t k) const {
+    const Subtree& subtree = subtrees_[k];
+    auto term = [&](std::uint32_t index) {
+        const Node& node = nodes_[index];
+        return node.bounds.halfArea() * (node.count > 0 ? float(node.count) : kTraversalCost);
+    };
+    float sum = term(subtree.root);
+    for (std::uint32_t i = subtree.begin; i < subtree.end; ++i) sum += term(refitOrder_[i]);
+    return sum;
+}
+
+void Bvh::rebuildDegradedSubtrees(std::span<const Primitive> primitives, ThreadPool* pool) {
+    // The worst first: by how much each has grown past its cost at build.
+    rebuildList_.clear();
+    for (std::uint32_t k = 0; k < subtrees_.size(); ++k)
+        if (subtreeCost_[k] > subtreeCostAtBuild_[k] * kSubtreeRebuildGrowth) rebuildList_.push_back(k);
+    if (rebuildList_.empty()) return;
+    std::sort(rebuildList_.begin(), rebuildList_.end(), [&](std::uint32_t a, std::uint32_t b) {
+        float ga = subtreeCost_[a] - subtreeCostAtBuild_[a], gb = subtreeCost_[b] - subtreeCostAtBuild_[b];
+        return ga != gb ? ga > gb : a < b;
+    });
+    const std::uint32_t budget = std::max<std::uint32_t>(1, std::uint32_t(ordered_.size()) / kSubtreeBudget);
+    std::uint32_t spent = 0;
+    std::size_t chosen = 0;
+    for (; chosen < rebuildList_.size(); ++chosen) {
+        const Subtree& subtree = subtrees_[rebuildList_[chosen]];
+        std::uint32_t size = subtree.endPrimitive - subtree.firstPrimitive;
+        if (chosen > 0 && spent + size > budget) break;
+        spent += size;
+    }
+    rebuildList_.resize(chosen);
+    subtreesRebuilt_ = std::uint32_t(chosen);
+
+    // Each subtree owns a contiguous range of ordered_: its primitives are
+    // re-split there from their current bounds, into a local node array.
+    if (subtreeNodes_.size() < chosen) subtreeNodes_.resize(chosen);
+    forChunks(pool, std::uint32_t(chosen), [&](std::uint32_t j) {
+        const Subtree& subtree = subtrees_[rebuildList_[j]];
+        for (std::uint32_t i = subtree.firstPrimitive; i < subtree.endPrimitive; ++i) {
+            const std::uint32_t p = original_[i];
+            primBounds_[p] = primitiveBounds(primitives[p]);
+            centroids_[p] = primBounds_[p].centroid();
+            indices_[i] = p;
+        }
+        std::vector<Node>& local = subtreeNodes_[j];
+        local.assign(1, Node{});
+        buildNodes(primitives, local, {0, subtree.firstPrimitive, subtree.endPrimitive, kRefitDepth}, 0);
+    });
+    for (std::size_t j = 0; j < chosen; ++j) placeSubtree(subtrees_[rebuildList_[j]], subtreeNodes_[j]);
+
+    // The refit plan follows the new shapes; the other subtrees keep their
+    // build-time costs (found by root: the nodes above them have not changed).
+    std::vector<Subtree>& before = subtreesBefore_;
+    std::vector<float>& costBefore = costAtBuildBefore_;
+    before.assign(subtrees_.begin(), subtrees_.end());
+    costBefore.assign(subtreeCostAtBuild_.begin(), subtreeCostAtBuild_.end());
+    planRefit();
+    subtreeCostAtBuild_.assign(subtrees_.size(), 0.0f);
+    std::size_t old = 0;
+    for (std::size_t k = 0; k < subtrees_.size(); ++k) {
+        while (old < before.size() && before[old].root != subtrees_[k].root) ++old;
+        bool rebuilt = old == before.size() || std::find(rebuildList_.begin(), rebuildList_.end(),
+                                                         std::uint32_t(old)) != rebuildList_.end();
+        subtreeCostAtBuild_[k] = rebuilt ? subtreeSahSum(k) : costBefore[old];
+    }
+}
+
+void Bvh::placeSubtree(const Subtree& subtree, const std::vector<Node>& local) {
+    // The old child-pair slots: the `first` of every inner node of the subtree.
+    std::vector<std::uint32_t>& slots = rebuildSlots_;
+    slots.clear();
+    auto collect = [&](std::uint32_t index) {
+        if (nodes_[index].count == 0) slots.push_back(nodes_[index].first);
+    };
+    collect(subtree.root);
+    for (std::uint32_t i = subtree.begin; i < subtree.end; ++i) collect(refitOrder_[i]);
+    std::sort(slots.begin(), slots.end());
+    // Local node 0 is the root; local pair j is nodes 2j + 1 and 2j + 2.
+    const std::size_t pairs = (local.size() - 1) / 2;
+    std::size_t reused = std::min(pairs, slots.size());
+    for (std::size_t j = reused; j < slots.size(); ++j) freePairs_.push_back(slots[j]);
+    slots.resize(reused);
+    while (slots.size() < pairs) {
+        if (!freePairs_.empty()) {
+            slots.push_back(freePairs_.back());
+            freePairs_.pop_back();
+        } else {
+            slots.push_back(std::uint32_t(nodes_.size()));
+            nodes_.push_back({});
+            nodes_.push_back({});
+        }
+    }
+    auto where = [&](std::uint32_t localIndex) {
+        return localIndex == 0 ? subtree.root : slots[(localIndex - 1) / 2] + (localIndex - 1) % 2;
+    };
+    for (std::uint32_t i = 0; i < local.size(); ++i) {
+        Node node = local[i];
+        if (node.count == 0) node.first = where(node.first);
+        nodes_[where(i)] = node;
+    }
+}
+
 bool Bvh::intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit) const {
+    NoTraversalCount none;
+    return intersectCounted(ray, tMin, tMax, hit, none);
+}
+
+bool Bvh::intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit, TraversalCount& count) const {
+    return intersectCounted(ray, tMin, tMax, hit, count);
+}
+
+bool Bvh::occluded(const Ray& ray, float tMin, float tMax, std::uint32_t skip) const {
+    NoTraversalCount none;
+    return occludedCounted(ray, tMin, tMax, skip, none);
+}
+
+bool Bvh::occluded(const Ray& ray, float tMin, float tMax, std::uint32_t skip, TraversalCount& count) const {
+    return occludedCounted(ray, tMin, tMax, skip, count);
+}
+
+template <class Count>
+bool Bvh::intersectCounted(const Ray& ray, float tMin, float tMax, HitRecord& hit, Count& count) const {
     if (nodes_.empty()) return false;
     Vec3 invDir = inverseDirection(ray.direction);
     std::uint32_t stack[kStackSize];
     int top = 0;
     std::uint32_t current = 0;
     bool found = false;
+    count.node();
     if (boxEntry(nodes_[0].bounds, ray.origin, invDir, tMin, tMax) == kInfinity) return false;
     // Once something is hit, primitives at exactly its distance are tested too
     // (up to `bound`), and the lower frame index wins the tie: the pixel must
@@ -329,6 +489,7 @@ bool Bvh::intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit) cons
             for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
                 float t;
                 Face face;
+                count.primitive();
                 if (intersectPrimitive(ordered_[i], ray, tMin, bound, t, face) &&
                     (!found || t < tMax || original_[i] < hit.primitive)) {
                     tMax = t;
@@ -339,6 +500,8 @@ bool Bvh::intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit) cons
             }
         } else {
             std::uint32_t a = node.first, b = node.first + 1;
+            count.node();
+            count.node();
             float ta = boxEntry(nodes_[a].bounds, ray.origin, invDir, tMin, tMax);
             float tb = boxEntry(nodes_[b].bounds, ray.origin, invDir, tMin, tMax);
             if (ta > tb) {
@@ -355,12 +518,14 @@ bool Bvh::intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit) cons
         for (;;) {
             if (top == 0) return found;
             current = stack[--top];
+            count.node();
             if (boxEntry(nodes_[current].bounds, ray.origin, invDir, tMin, tMax) != kInfinity) break;
         }
     }
 }
 
-bool Bvh::occluded(const Ray& ray, float tMin, float tMax, std::uint32_t skip) const {
+template <class Count>
+bool Bvh::occludedCounted(const Ray& ray, float tMin, float tMax, std::uint32_t skip, Count& count) const {
     if (nodes_.empty()) return false;
     Vec3 invDir = inverseDirection(ray.direction);
     std::uint32_t stack[kStackSize];
@@ -368,13 +533,15 @@ bool Bvh::occluded(const Ray& ray, float tMin, float tMax, std::uint32_t skip) c
     stack[top++] = 0;
     while (top > 0) {
         const Node& node = nodes_[stack[--top]];
+        count.node();
         if (boxEntry(node.bounds, ray.origin, invDir, tMin, tMax) == kInfinity) continue;
         if (node.count > 0) {
             for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
                 float t;
                 Face face;
-                if (original_[i] != skip && intersectPrimitive(ordered_[i], ray, tMin, tMax, t, face))
-                    return true;
+                if (original_[i] == skip) continue;
+                count.primitive();
+                if (intersectPrimitive(ordered_[i], ray, tMin, tMax, t, face)) return true;
             }
         } else {
             stack[top++] = node.first + 1;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/geometry/intersect.h"
+#include "core/geometry/traversal_count.h"
 #include "core/util/thread_pool.h"
 
 namespace f2 {
@@ -35,21 +36,41 @@ class Bvh {
     /// This frame's tree: refits the last tree to the moved primitives (same
     /// count, any motion: the result is always correct), and rebuilds when
     /// there is none or refitting has let its SAH cost grow by kRebuildGrowth.
-    /// Returns true when it rebuilt.
+    /// Otherwise the subtrees whose own SAH cost has grown by kSubtreeRebuildGrowth
+    /// since they were built are rebuilt, the worst first, up to 1/kSubtreeBudget
+    /// of the primitives per call: playback then pays for its rebuilds a little
+    /// every frame instead of all at once now and then.
+    /// Returns true when it rebuilt the whole tree.
     bool update(std::span<const Primitive> primitives, ThreadPool* pool = nullptr);
     static constexpr float kRebuildGrowth = 1.3f;
+    static constexpr float kSubtreeRebuildGrowth = 1.1f;
+    static constexpr std::uint32_t kSubtreeBudget = 16;
+    /// Subtrees rebuilt by the last update() (0 after a full rebuild).
+    std::uint32_t subtreesRebuilt() const { return subtreesRebuilt_; }
 
     /// Expected cost of a ray under the SAH model, relative to the root's area.
     float sahCost() const;
+    /// Nodes reachable from the root (nodes().size() also counts slots freed by subtree rebuilds).
+    std::size_t liveNodeCount() const;
 
     /// Closest hit within (tMin, tMax); of hits at the same distance, the
     /// primitive first in the frame (lowest index), whatever the tree's shape.
     bool intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit) const;
+    /// The same traversal, adding the boxes and primitives it tests to `count`.
+    bool intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit, TraversalCount& count) const;
+    bool intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit, NoTraversalCount&) const {
+        return intersect(ray, tMin, tMax, hit);
+    }
     /// Any hit within (tMin, tMax) on a primitive other than `skip`: shadow rays
     /// stop at the first occluder. A convex primitive cannot shadow its own lit
     /// side, so shadow rays skip the primitive they start on.
     static constexpr std::uint32_t kNoPrimitive = 0xFFFFFFFFu;
     bool occluded(const Ray& ray, float tMin, float tMax, std::uint32_t skip = kNoPrimitive) const;
+    /// The same traversal, adding the boxes and primitives it tests to `count`.
+    bool occluded(const Ray& ray, float tMin, float tMax, std::uint32_t skip, TraversalCount& count) const;
+    bool occluded(const Ray& ray, float tMin, float tMax, std::uint32_t skip, NoTraversalCount&) const {
+        return occluded(ray, tMin, tMax, skip);
+    }
 
     /// Up to out.size() nodes whose subtrees hold every primitive that a ray
     /// inside `frustum` can reach, nearest to `eye` first; returns how many.
@@ -60,6 +81,10 @@ class Bvh {
     /// entryNodes() for the parallel rays that leave any point of `origins`
     /// along `direction`: the shadow rays of one tile toward one light.
     std::size_t beamEntryNodes(const Bounds& origins, Vec3 direction, std::span<std::uint32_t> out) const;
+    /// The same for rays along any of `directions` (the samples of a soft
+    /// sun): a node is left out only when no direction reaches it.
+    std::size_t beamEntryNodes(const Bounds& origins, std::span<const Vec3> directions,
+                               std::span<std::uint32_t> out) const;
 
     /// The tree, for the packet traversal (bvh_packet.h) and tests.
     std::span<const Node> nodes() const { return nodes_; }
@@ -68,6 +93,12 @@ class Bvh {
     std::span<const std::uint32_t> originalIndices() const { return original_; }
 
    private:
+    /// The single-ray traversals, over a counting policy (traversal_count.h).
+    template <class Count>
+    bool intersectCounted(const Ray& ray, float tMin, float tMax, HitRecord& hit, Count& count) const;
+    template <class Count>
+    bool occludedCounted(const Ray& ray, float tMin, float tMax, std::uint32_t skip, Count& count) const;
+
     /// The splitting of entryNodes(): nodes that `excludes` rejects are
     /// dropped, the rest are sorted by `distance`.
     template <class Excludes, class Distance>
@@ -99,11 +130,19 @@ class Bvh {
     /// are refitted in parallel, then the few nodes above them in turn.
     struct Subtree {
         std::uint32_t root, begin, end;  ///< its descendants: refitOrder_[begin, end), in pre-order
+        std::uint32_t firstPrimitive, endPrimitive;  ///< its leaves' range of ordered_
     };
     std::vector<Subtree> subtrees_;
     std::vector<std::uint32_t> refitOrder_;
-    std::vector<std::uint32_t> topNodes_;  ///< nodes above the subtrees, children before parents
-    std::vector<float> subtreeCost_;       ///< each subtree's share of the SAH sum, per refit
+    std::vector<std::uint32_t> topNodes_;      ///< nodes above the subtrees, children before parents
+    std::vector<float> subtreeCost_;           ///< each subtree's share of the SAH sum, per refit
+    std::vector<float> subtreeCostAtBuild_;    ///< the same right after the subtree was (re)built
+    std::vector<std::uint32_t> freePairs_;     ///< child-pair slots of nodes_ that rebuilds left unused
+    std::vector<std::uint32_t> rebuildList_;   ///< subtrees chosen by the last update()
+    std::vector<std::uint32_t> rebuildSlots_;  ///< placeSubtree() scratch
+    std::vector<Subtree> subtreesBefore_;      ///< rebuildDegradedSubtrees() scratch
+    std::vector<float> costAtBuildBefore_;     ///< rebuildDegradedSubtrees() scratch
+    std::uint32_t subtreesRebuilt_ = 0;
     struct PlanItem {
         std::uint32_t node, depth;
     };
@@ -115,6 +154,13 @@ class Bvh {
 
     /// Recomputes every node's bounds from `primitives` (same count as built); returns sahCost().
     float refit(std::span<const Primitive> primitives, ThreadPool* pool);
+    /// SAH sum (unnormalised) of subtree k's nodes, its root included.
+    float subtreeSahSum(std::size_t k) const;
+    /// Rebuilds the degraded subtrees (see update()), on the pool's threads.
+    void rebuildDegradedSubtrees(std::span<const Primitive> primitives, ThreadPool* pool);
+    /// Moves subtree k's freshly built nodes (`local`, root first, then child
+    /// pairs) into nodes_: its old child-pair slots first, then freed ones, then new.
+    void placeSubtree(const Subtree& subtree, const std::vector<Node>& local);
 };
 
 }  // namespace f2

@@ -115,8 +115,10 @@ Mask occludedPacket(const Bvh& bvh, const ParallelRays& rays, Mask active, Float
     return occludedPacket(bvh, rays, active, tMin, tMax, skip, {&root, 1});
 }
 
-Mask occludedPacket(const Bvh& bvh, const ParallelRays& rays, Mask active, Float tMin, Float tMax, Int skip,
-                    std::span<const std::uint32_t> roots) {
+namespace {
+template <class Origin, class Direction>
+Mask occludedFrom(const Bvh& bvh, const Rays<Origin, Direction>& rays, Mask active, Float tMin, Float tMax,
+                  Int skip, std::span<const std::uint32_t> roots) {
     const std::span<const Bvh::Node> nodes = bvh.nodes();
     const std::span<const Primitive> ordered = bvh.orderedPrimitives();
     Mask blocked = simd::noLanes();
@@ -151,6 +153,22 @@ Mask occludedPacket(const Bvh& bvh, const ParallelRays& rays, Mask active, Float
         if (top == 0) return blocked;
         current = stack[--top];
     }
+}
+}  // namespace
+
+Mask occludedPacket(const Bvh& bvh, const ParallelRays& rays, Mask active, Float tMin, Float tMax, Int skip,
+                    std::span<const std::uint32_t> roots) {
+    return occludedFrom(bvh, rays, active, tMin, tMax, skip, roots);
+}
+
+Mask occludedPacket(const Bvh& bvh, const EyeRays& rays, Mask active, Float tMin, Float tMax, Int skip) {
+    const std::uint32_t root = 0;
+    return occludedFrom(bvh, rays, active, tMin, tMax, skip, {&root, 1});
+}
+
+Mask occludedPacket(const Bvh& bvh, const FreeRays& rays, Mask active, Float tMin, Float tMax, Int skip) {
+    const std::uint32_t root = 0;
+    return occludedFrom(bvh, rays, active, tMin, tMax, skip, {&root, 1});
 }
 
 template <class Excludes, class Distance>
@@ -201,13 +219,18 @@ std::size_t Bvh::entryNodes(const Frustum& frustum, Vec3 eye, std::span<std::uin
                            out);
 }
 
-std::size_t Bvh::beamEntryNodes(const Bounds& origins, Vec3 direction, std::span<std::uint32_t> out) const {
-    // The rays o + t d (o in `origins`, t >= 0) meet box B exactly when the one
-    // ray t d from 0 meets B - origins = [B.lo - origins.hi, B.hi - origins.lo],
-    // here widened by a little slack against the rounding of that arithmetic.
-    Vec3 magnitude = vmax(vmax(origins.lo, -origins.lo), vmax(origins.hi, -origins.hi));
-    const float slack = 1e-5f * (1.0f + std::max({magnitude.x, magnitude.y, magnitude.z}));
-    auto excludes = [&](const Bounds& b) {
+namespace {
+/// Whether no ray o + t d (o in `origins`, t >= 0) meets a box: the one ray
+/// t d from 0 must miss B - origins = [B.lo - origins.hi, B.hi - origins.lo],
+/// here widened by `slack` against the rounding of that arithmetic.
+struct BeamMisses {
+    const Bounds& origins;
+    float slack;
+    explicit BeamMisses(const Bounds& o) : origins(o) {
+        Vec3 magnitude = vmax(vmax(o.lo, -o.lo), vmax(o.hi, -o.hi));
+        slack = 1e-5f * (1.0f + std::max({magnitude.x, magnitude.y, magnitude.z}));
+    }
+    bool operator()(const Bounds& b, Vec3 direction) const {
         float enter = 0, exit = kInfinity;
         for (int i = 0; i < 3; ++i) {
             float lo = b.lo[i] - origins.hi[i] - slack, hi = b.hi[i] - origins.lo[i] + slack;
@@ -220,10 +243,27 @@ std::size_t Bvh::beamEntryNodes(const Bounds& origins, Vec3 direction, std::span
             exit = std::min(exit, std::max(t0, t1));
         }
         return enter > exit;
-    };
+    }
+};
+}  // namespace
+
+std::size_t Bvh::beamEntryNodes(const Bounds& origins, Vec3 direction, std::span<std::uint32_t> out) const {
+    const BeamMisses misses(origins);
     // Nearest first along the rays, where an occluder ends them soonest.
+    return entryNodesWhere([&](const Bounds& b) { return misses(b, direction); },
+                           [&](const Bounds& b) { return dot(b.centroid(), direction); }, out);
+}
+
+std::size_t Bvh::beamEntryNodes(const Bounds& origins, std::span<const Vec3> directions,
+                                std::span<std::uint32_t> out) const {
+    if (directions.empty()) return 0;
+    const BeamMisses misses(origins);
+    const Vec3 first = directions.front();
     return entryNodesWhere(
-        excludes, [&](const Bounds& b) { return dot(b.centroid(), direction); }, out);
+        [&](const Bounds& b) {
+            return std::all_of(directions.begin(), directions.end(), [&](Vec3 d) { return misses(b, d); });
+        },
+        [&](const Bounds& b) { return dot(b.centroid(), first); }, out);
 }
 
 }  // namespace f2

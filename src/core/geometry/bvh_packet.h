@@ -27,5 +27,10 @@ Mask occludedPacket(const Bvh& bvh, const ParallelRays& rays, Mask active, Float
 /// from `roots`, the Bvh::beamEntryNodes() of that box and direction.
 Mask occludedPacket(const Bvh& bvh, const ParallelRays& rays, Mask active, Float tMin, Float tMax, Int skip,
                     std::span<const std::uint32_t> roots);
+/// The same for rays that leave one point (a point light toward the surfaces
+/// it lights) and for rays that share nothing (from the samples of a soft
+/// light's disc), from the root.
+Mask occludedPacket(const Bvh& bvh, const EyeRays& rays, Mask active, Float tMin, Float tMax, Int skip);
+Mask occludedPacket(const Bvh& bvh, const FreeRays& rays, Mask active, Float tMin, Float tMax, Int skip);
 
 }  // namespace f2

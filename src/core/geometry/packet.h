@@ -69,6 +69,7 @@ struct Rays {
 };
 using EyeRays = Rays<Vec3, Vec3P>;       ///< primary rays: every lane leaves the eye
 using ParallelRays = Rays<Vec3P, Vec3>;  ///< shadow rays toward a directional light
+using FreeRays = Rays<Vec3P, Vec3P>;     ///< rays that share neither origin nor direction
 
 /// Nearest hits of a packet; `t` starts as tMax.
 struct PacketHit {

@@ -1,5 +1,6 @@
 #include "core/math/transform.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace f2 {
@@ -39,6 +40,29 @@ Mat3 rotationFromEulerDegrees(double rx, double ry, double rz) {
     Mat3 out;
     for (int i = 0; i < 3; ++i) out.row[i] = {float(m[i][0]), float(m[i][1]), float(m[i][2])};
     return out;
+}
+
+Vec3 eulerDegreesFromRotation(const Mat3& rotation) {
+    // The bottom row of Rz * Ry * Rx is (-sy, cy sx, cy cx) (see above), and
+    // its first column (cz cy, sz cy, -sy).
+    const Vec3* m = rotation.row;
+    constexpr double kDegreesPerRadian = 180.0 / kPi;
+    const double sy = std::clamp(-double(m[2].x), -1.0, 1.0);
+    const double ry = std::asin(sy);
+    double rx = 0, rz = 0;
+    if (std::fabs(sy) < 1.0 - 1e-6) {
+        rx = std::atan2(double(m[2].y), double(m[2].z));
+        rz = std::atan2(double(m[1].x), double(m[0].x));
+    } else {
+        // Gimbal lock: only rx - rz (or rx + rz) is defined; with rz = 0 the
+        // middle row is Rx's, (0, cx, -sx).
+        rx = std::atan2(-double(m[1].z), double(m[1].y));
+    }
+    auto degrees = [&](double radians) {
+        const double d = radians * kDegreesPerRadian;
+        return float(d == -180.0 ? 180.0 : d);
+    };
+    return {degrees(rx), degrees(ry), degrees(rz)};
 }
 
 }  // namespace f2

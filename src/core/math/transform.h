@@ -26,6 +26,11 @@ inline constexpr double kPi = 3.14159265358979323846;
 Mat3 rotationFromEulerDegrees(double rx, double ry, double rz);
 inline Mat3 rotationFromEulerDegrees(Vec3 r) { return rotationFromEulerDegrees(r.x, r.y, r.z); }
 
+/// The angles (degrees) that rotationFromEulerDegrees turns back into `rotation`:
+/// ry in [-90, 90], rx and rz in (-180, 180]. At ry = ±90 (gimbal lock) rz is 0.
+/// Used to write a rotation the program computed (a view) as scene text.
+Vec3 eulerDegreesFromRotation(const Mat3& rotation);
+
 /// A rotation followed by a translation: world = linear * local + translation.
 struct Transform {
     Mat3 linear;

@@ -30,6 +30,8 @@ enum class Command {
     Camera,
     AmbLight,
     DirLight,
+    PointLight,
+    SpotLight,
     Background,
     Material,
     Sphere,
@@ -51,10 +53,12 @@ struct CommandName {
     Command command;
 };
 
-constexpr std::array<CommandName, 17> kCommands = {{
+constexpr std::array<CommandName, 19> kCommands = {{
     {"/camera", Command::Camera},
     {"/amb_light", Command::AmbLight},
     {"/dir_light", Command::DirLight},
+    {"/point_light", Command::PointLight},
+    {"/spot_light", Command::SpotLight},
     {"/background", Command::Background},
     {"/material", Command::Material},
     {"/sphere", Command::Sphere},
@@ -190,6 +194,9 @@ class Parser : private ExpansionSink {
    public:
     Parser(std::string_view fileName, const ParseLimits& limits, SymbolIndex* index)
         : fileName_(fileName), limits_(limits), index_(index), expander_(expansionLimits(limits), *this) {}
+
+    /// Texts read instead of included files on disk (source_expander.h).
+    void setOverlay(const SourceOverlay* overlay) { expander_.setOverlay(overlay); }
 
     /// `identity`: the main file's (device, inode), when it is a file.
     ParseResult run(std::string_view text,
@@ -347,6 +354,10 @@ class Parser : private ExpansionSink {
                 return parseCamera();
             case Command::AmbLight:
                 return parseAmbLight();
+            case Command::PointLight:
+                return parseLocalLight(LocalLightKind::Point);
+            case Command::SpotLight:
+                return parseLocalLight(LocalLightKind::Spot);
             case Command::DirLight:
                 return parseDirLight();
             case Command::Background:
@@ -652,7 +663,7 @@ class Parser : private ExpansionSink {
     bool lightAllowed() {
         if (++lightLines_ <= limits_.maxLights) return true;
         error(commandPos(), "too many lights: at most " + std::to_string(limits_.maxLights) +
-                                " allowed (ambient and directional together)");
+                                " allowed (ambient, directional, point and spot together)");
         return false;
     }
 
@@ -669,26 +680,167 @@ class Parser : private ExpansionSink {
         scene_.ambient = sum;
     }
 
-    void parseDirLight() {
-        if (!expectArgs({4}) || !lightAllowed()) return;
-        bool ok = true;
-        DirectionalLight light;
-        light.intensity = nonNegative(0, "light intensity", ok);
-        light.direction = vec3(1, ok);
-        if (!ok) return;
-        const Vec3 d = light.direction;
-        if (d.x == 0 && d.y == 0 && d.z == 0) {
-            error(argPos(1), "light direction must not be 0 0 0");
-            return;
+    /// A light's direction (arguments first..first+2): not 0 0 0, and
+    /// normalisable in float.
+    Vec3 lightDirection(int first, bool& ok) {
+        bool good = true;
+        const Vec3 d = vec3(first, good);
+        if (good && d.x == 0 && d.y == 0 && d.z == 0) {
+            error(argPos(first), "light direction must not be 0 0 0");
+            good = false;
         }
         // The renderer normalises in float: the squared length must neither vanish nor overflow.
         const float lengthSquared = dot(d, d);
-        if (!(lengthSquared > 0) || !std::isfinite(lengthSquared)) {
-            error(argPos(1),
+        if (good && (!(lengthSquared > 0) || !std::isfinite(lengthSquared))) {
+            error(argPos(first),
                   "light direction cannot be normalised (its length is too close to 0 or too large)");
-            return;
+            good = false;
         }
+        ok = ok && good;
+        return d;
+    }
+
+    /// The options a light command may end with: a word and its numbers.
+    enum class LightOption { Fade, Size, Angle, Tightness };
+    struct LightOptions {
+        Fade fade;
+        SoftShadow shadow;
+        float tightness = 0;
+    };
+
+    /// Reads the options after argument `first` (docs/scene-language.md,
+    /// "Point and spot lights"); each of `allowed` at most once.
+    bool lightOptions(int first, std::initializer_list<LightOption> allowed, LightOptions& out) {
+        struct Spec {
+            LightOption option;
+            std::string_view word;
+            int numbers;
+            std::string_view what;
+        };
+        static constexpr std::array<Spec, 4> kSpecs = {{
+            {LightOption::Fade, "fade", 2, "a distance and a power"},
+            {LightOption::Size, "size", 2, "a diameter and the samples per side"},
+            {LightOption::Angle, "angle", 2, "an angular radius and the samples per side"},
+            {LightOption::Tightness, "tightness", 1, "a number"},
+        }};
+        bool ok = true;
+        std::vector<LightOption> seen;
+        for (int i = first; i < argCount();) {
+            const Spec* spec = nullptr;
+            for (const Spec& candidate : kSpecs)
+                if (candidate.word == arg(i) &&
+                    std::find(allowed.begin(), allowed.end(), candidate.option) != allowed.end())
+                    spec = &candidate;
+            if (!spec) {
+                std::string expected;
+                for (LightOption o : allowed) {
+                    if (!expected.empty()) expected += o == *(allowed.end() - 1) ? " or " : ", ";
+                    expected += "'" + std::string(kSpecs[static_cast<std::size_t>(o)].word) + "'";
+                }
+                error(argPos(i), "unknown option " + quoteToken(arg(i)) + " of " + quoteToken(commandText()) +
+                                     " (expected " + expected + ")");
+                return false;
+            }
+            if (std::find(seen.begin(), seen.end(), spec->option) != seen.end()) {
+                error(argPos(i), "second " + quoteToken(arg(i)) + " option");
+                return false;
+            }
+            seen.push_back(spec->option);
+            if (i + spec->numbers >= argCount()) {
+                error(argPos(i), quoteToken(arg(i)) + " takes " + std::string(spec->what));
+                return false;
+            }
+            switch (spec->option) {
+                case LightOption::Fade:
+                    out.fade.distance = positive(i + 1, "fade distance", ok);
+                    out.fade.power = positive(i + 2, "fade power", ok);
+                    break;
+                case LightOption::Size:
+                case LightOption::Angle: {
+                    const bool angle = spec->option == LightOption::Angle;
+                    bool good = true;
+                    out.shadow.size = positive(i + 1, angle ? "angular radius" : "light diameter", good);
+                    if (good && angle && out.shadow.size > kMaxSunRadius) {
+                        error(argPos(i + 1),
+                              "angular radius must be at most 45 degrees, got " + printable(arg(i + 1)));
+                        good = false;
+                    }
+                    out.shadow.samplesPerSide =
+                        whole(i + 2, "samples per side", 2, kMaxShadowSamplesPerSide, good);
+                    ok = ok && good;
+                    break;
+                }
+                case LightOption::Tightness:
+                    out.tightness = nonNegative(i + 1, "tightness", ok);
+                    break;
+            }
+            i += 1 + spec->numbers;
+        }
+        return ok;
+    }
+
+    /// A light command's `fixed` arguments are there (options may follow) and
+    /// the light limit is not reached.
+    bool lightArgsAllowed(int fixed) {
+        if (argCount() < fixed) {
+            expectArgs({fixed});
+            return false;
+        }
+        return lightAllowed();
+    }
+
+    /// The largest angular radius of a soft sun (degrees): wider is no longer a sun.
+    static constexpr float kMaxSunRadius = 45.0f;
+
+    void parseDirLight() {
+        if (!lightArgsAllowed(4)) return;
+        bool ok = true;
+        DirectionalLight light;
+        light.intensity = nonNegative(0, "light intensity", ok);
+        light.direction = lightDirection(1, ok);
+        LightOptions options;
+        if (!lightOptions(4, {LightOption::Angle}, options) || !ok) return;
+        light.sun = options.shadow;
         scene_.lights.push_back(light);
+    }
+
+    /// `/point_light <i> <x> <y> <z> [fade D P] [size S N]` and
+    /// `/spot_light <i> <x> <y> <z> <dx> <dy> <dz> <radius> <falloff> [tightness T] [fade D P] [size S N]`
+    void parseLocalLight(LocalLightKind kind) {
+        const bool spot = kind == LocalLightKind::Spot;
+        const int fixed = spot ? 9 : 4;
+        if (!lightArgsAllowed(fixed)) return;
+        bool ok = true;
+        LocalLight light;
+        light.kind = kind;
+        light.intensity = nonNegative(0, "light intensity", ok);
+        light.position = vec3(1, ok);
+        if (spot) {
+            light.direction = lightDirection(4, ok);
+            bool good = true;
+            light.radius = nonNegative(7, "spot radius", good);
+            light.falloff = nonNegative(8, "spot falloff", good);
+            if (good && light.falloff > 90) {
+                error(argPos(8), "spot falloff must be at most 90 degrees, got " + printable(arg(8)));
+                good = false;
+            }
+            if (good && light.radius > light.falloff) {
+                error(argPos(7), "spot radius must be at most its falloff (" + printable(arg(8)) + "), got " +
+                                     printable(arg(7)));
+                good = false;
+            }
+            ok = ok && good;
+        }
+        LightOptions options;
+        const bool optionsOk =
+            spot
+                ? lightOptions(fixed, {LightOption::Tightness, LightOption::Fade, LightOption::Size}, options)
+                : lightOptions(fixed, {LightOption::Fade, LightOption::Size}, options);
+        if (!optionsOk || !ok) return;
+        light.tightness = options.tightness;
+        light.fade = options.fade;
+        light.area = options.shadow;
+        scene_.localLights.push_back(light);
     }
 
     void parseBackground() {
@@ -761,9 +913,11 @@ class Parser : private ExpansionSink {
             warning({1, 1}, "the scene has no objects: every frame shows only the background");
             return;
         }
-        const bool lit =
-            scene_.ambient > 0 || std::any_of(scene_.lights.begin(), scene_.lights.end(),
-                                              [](const DirectionalLight& l) { return l.intensity > 0; });
+        const bool lit = scene_.ambient > 0 ||
+                         std::any_of(scene_.lights.begin(), scene_.lights.end(),
+                                     [](const DirectionalLight& l) { return l.intensity > 0; }) ||
+                         std::any_of(scene_.localLights.begin(), scene_.localLights.end(),
+                                     [](const LocalLight& l) { return l.intensity > 0; });
         if (!lit) {
             warning(books_.front().defined,
                     "the scene has no light (no '/amb_light' or '/dir_light' with an intensity > 0): "
@@ -1170,6 +1324,14 @@ ParseResult parseScene(std::string_view text, std::string_view fileName, const P
                        SymbolIndex& index) {
     index.clear();
     return Parser(fileName, limits, &index).run(text);
+}
+
+ParseResult parseScene(std::string_view text, std::string_view fileName, const ParseLimits& limits,
+                       SymbolIndex& index, const SourceOverlay& overlay) {
+    index.clear();
+    Parser parser(fileName, limits, &index);
+    parser.setOverlay(&overlay);
+    return parser.run(text, fileIdentity(std::string(fileName)));
 }
 
 std::vector<std::string_view> commandNames() {

@@ -4,6 +4,8 @@
 /// `/include` and expressions are expanded first (source_expander.h).
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -45,7 +47,7 @@ struct ParseLimits {
     std::size_t maxObjects = 1'000'000;  ///< a robot or human counts as one
     int maxKeyFrame = kMaxKeyFrame;
     std::size_t maxKeyLines = 10'000'000;
-    std::size_t maxLights = 1000;  ///< ambient and directional together
+    std::size_t maxLights = 1000;  ///< light commands of every kind together
     int maxFps = 1000;
     std::size_t maxLineBytes = std::size_t{1} << 20;     ///< 1 MiB
     std::size_t maxSceneBytes = std::size_t{256} << 20;  ///< 256 MiB, all included files together
@@ -68,6 +70,16 @@ struct SymbolIndex;
 /// created and used, for tools that work on the source (core/parse/symbol_index.h).
 ParseResult parseScene(std::string_view text, std::string_view fileName, const ParseLimits& limits,
                        SymbolIndex& index);
+
+/// Texts that stand in for files on disk while parsing (an editor's unsaved
+/// buffers), keyed by the path an `/include` resolves to (lexically normal).
+using SourceOverlay = std::map<std::string, std::string, std::less<>>;
+
+/// parseScene for editors: fills `index` as above, reads an included file from
+/// `overlay` when it is there (from disk otherwise), and takes the text to be
+/// the file `fileName` when that file exists, so including it is a cycle.
+ParseResult parseScene(std::string_view text, std::string_view fileName, const ParseLimits& limits,
+                       SymbolIndex& index, const SourceOverlay& overlay);
 
 /// Every command of the language ("/camera", ...), in the parser's table order.
 std::vector<std::string_view> commandNames();

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <tuple>
 
 #include "core/parse/number.h"
 
@@ -106,6 +107,12 @@ FileRead readSourceFile(const std::string& path, std::size_t maxBytes) {
     result.ok = result.problem.empty();
     if (!result.ok) result.text.clear();
     return result;
+}
+
+std::optional<std::pair<std::uint64_t, std::uint64_t>> fileIdentity(const std::string& path) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return std::nullopt;
+    return std::pair{static_cast<std::uint64_t>(st.st_dev), static_cast<std::uint64_t>(st.st_ino)};
 }
 
 /// What one pass of a loop costs at least, and where its /end is: found once
@@ -547,16 +554,31 @@ void SourceExpander::runInclude(std::string_view raw, const LogicalLine& line) {
 
 const SourceExpander::SourceFile* SourceExpander::loadFile(const std::string& path, SourcePos at) {
     const std::string prefix = "cannot include " + quotePath(path) + ": ";
+    // An overlaid text that is not on disk gets an identity of its own, for cycles.
+    const std::string* overlaid = nullptr;
+    if (overlay_) {
+        if (const auto it = overlay_->find(path); it != overlay_->end()) overlaid = &it->second;
+    }
+    auto identity = fileIdentity(path);
+    if (!identity && overlaid) identity = std::pair{~std::uint64_t{0}, std::hash<std::string>{}(path)};
     // A file read before is not read again (a loop may include it a million times).
-    struct stat st {};
-    if (::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode)) {
-        const std::pair<std::uint64_t, std::uint64_t> id{static_cast<std::uint64_t>(st.st_dev),
-                                                         static_cast<std::uint64_t>(st.st_ino)};
+    if (identity) {
         for (const auto& s : sources_) {
-            if (s->identity == id) return s.get();
+            if (s->identity == identity) return s.get();
         }
     }
-    FileRead read = readSourceFile(path, limits_.maxFileBytes - std::min(limits_.maxFileBytes, fileBytes_));
+    const std::size_t budget = limits_.maxFileBytes - std::min(limits_.maxFileBytes, fileBytes_);
+    FileRead read;
+    if (!overlaid) {
+        read = readSourceFile(path, budget);
+    } else if (overlaid->size() > budget) {
+        read.problem = "the file is " + std::to_string(overlaid->size()) + " bytes, more than the limit of " +
+                       std::to_string(budget) + " bytes";
+    } else {
+        read.ok = true;
+        read.text = *overlaid;
+        std::tie(read.device, read.inode) = *identity;
+    }
     if (!read.ok) {
         if (read.problem.starts_with("the file is")) {
             read.problem += " (for all the files of the scene together)";

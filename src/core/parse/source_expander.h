@@ -9,6 +9,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <deque>
+#include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -82,6 +84,9 @@ struct FileRead {
 };
 FileRead readSourceFile(const std::string& path, std::size_t maxBytes);
 
+/// A file's (device, inode), if it is a regular file.
+std::optional<std::pair<std::uint64_t, std::uint64_t>> fileIdentity(const std::string& path);
+
 class SourceExpander {
    public:
     SourceExpander(const ExpansionLimits& limits, ExpansionSink& sink);
@@ -95,6 +100,10 @@ class SourceExpander {
     /// file's (device, inode) when it is a file, so including it is a cycle.
     void start(std::string_view text, std::string name,
                std::optional<std::pair<std::uint64_t, std::uint64_t>> identity = std::nullopt);
+
+    /// Texts read instead of the files on disk (by resolved path); the map
+    /// must outlive the expander. None by default.
+    void setOverlay(const std::map<std::string, std::string, std::less<>>* overlay) { overlay_ = overlay; }
 
     /// The next command line, or false at the end (or after a limit error).
     bool next(LogicalLine& line);
@@ -133,6 +142,7 @@ class SourceExpander {
 
     ExpansionLimits limits_;
     ExpansionSink& sink_;
+    const std::map<std::string, std::string, std::less<>>* overlay_ = nullptr;
     Variables variables_;
     std::vector<std::string> names_;
     std::deque<std::unique_ptr<SourceFile>> sources_;

@@ -47,7 +47,8 @@ struct SymbolIndex {
     void clear() { *this = SymbolIndex{}; }
     /// Keeps the commands listed as symbols (the camera and lights), ignores the rest.
     void noteCommand(std::string_view command, const SourceLoc& loc) {
-        if (command == "/camera" || command == "/amb_light" || command == "/dir_light") {
+        if (command == "/camera" || command == "/amb_light" || command == "/dir_light" ||
+            command == "/point_light" || command == "/spot_light") {
             commands.push_back({std::string(command), loc});
         }
     }

@@ -10,20 +10,24 @@ struct Rgb8 {
     friend bool operator==(const Rgb8&, const Rgb8&) = default;
 };
 
-struct Image {
+/// A width x height grid of pixels, rows top to bottom.
+template <class Pixel>
+struct PixelGrid {
     int width = 0, height = 0;
-    std::vector<Rgb8> pixels;
+    std::vector<Pixel> pixels;
 
     void resize(int w, int h) {
         width = w;
         height = h;
         pixels.resize(std::size_t(w) * std::size_t(h));
     }
-    Rgb8& at(int x, int y) { return pixels[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
-    const Rgb8& at(int x, int y) const {
+    Pixel& at(int x, int y) { return pixels[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
+    const Pixel& at(int x, int y) const {
         return pixels[std::size_t(y) * std::size_t(width) + std::size_t(x)];
     }
-    friend bool operator==(const Image&, const Image&) = default;
+    friend bool operator==(const PixelGrid&, const PixelGrid&) = default;
 };
+
+using Image = PixelGrid<Rgb8>;
 
 }  // namespace f2

@@ -5,6 +5,7 @@
 /// (SIMD types).
 #include "core/geometry/bvh_packet.h"
 #include "core/render/frame_scene.h"
+#include "core/render/packet_light_sampling.h"
 #include "core/render/ray_counts.h"
 #include "core/render/shading.h"
 #include "core/simd/simd_math.h"
@@ -69,6 +70,27 @@ inline PacketSurface findSurfaces(const FrameScene& frame, const EyeRays& rays, 
     return s;
 }
 
+/// addPhong() for the `lit` lanes, each with its own light direction and the
+/// intensity that reaches it.
+inline void addPhongP(const PacketSurface& s, const Vec3P& toLight, Float nDotL, Float intensity, Mask lit,
+                      Float& diffuse, Float& specular) {
+    diffuse = simd::select(lit, diffuse + intensity * s.kd * nDotL, diffuse);
+    Vec3P reflected = s.normal * (Float(2.0f) * nDotL) - toLight;
+    Float rDotV = dot(reflected, s.toEye);
+    Mask shiny = lit & (rDotV > Float(0.0f)) & (s.ks > Float(0.0f));
+    if (simd::any(shiny))
+        specular = simd::select(
+            shiny,
+            specular + simd::min(intensity * s.ks, Float(kMaxLight)) * simd::powPositive(rDotV, s.shininess),
+            specular);
+}
+
+/// The fraction of a light's samples that reached it, as the reference path
+/// works it out: float(visible) / float(samples).
+inline Float visibleFraction(Int visible, std::uint32_t samples) {
+    return simd::toFloat(visible) / Float(float(samples));
+}
+
 /// Colours (0..1, unclamped) of a packet's surfaces lit by the frame's lights,
 /// background where nothing was hit. The shadow rays toward light i start
 /// from shadowEntry[i] (Bvh::beamEntryNodes of a box holding their origins),
@@ -86,21 +108,39 @@ inline ColorP shadeSurfaces(const FrameScene& frame, const PacketSurface& s,
         Float nDotL = dot(s.normal, toLight);
         Mask lit = s.hitLanes & (nDotL > Float(0.0f));
         if (simd::none(lit)) continue;
-        counts.shadow += std::uint64_t(__builtin_popcount(simd::bits(lit)));
-        std::span<const std::uint32_t> entry = i < shadowEntry.size() ? shadowEntry[i] : std::span{&root, 1};
-        lit = simd::andNot(lit, occludedPacket(frame.bvh, ParallelRays(s.shadowOrigin, light.toLight), lit,
-                                               Float(0.0f), Float(kInfinity), s.skip, entry));
-        if (simd::none(lit)) continue;
         Float intensity(light.intensity);
-        diffuse = simd::select(lit, diffuse + intensity * s.kd * nDotL, diffuse);
-        Vec3P reflected = s.normal * (Float(2.0f) * nDotL) - toLight;
-        Float rDotV = dot(reflected, s.toEye);
-        Mask shiny = lit & (rDotV > Float(0.0f)) & (s.ks > Float(0.0f));
-        if (simd::any(shiny))
-            specular = simd::select(shiny,
-                                    specular + simd::min(intensity * s.ks, Float(kMaxLight)) *
-                                                   simd::powPositive(rDotV, s.shininess),
-                                    specular);
+        std::span<const std::uint32_t> entry = i < shadowEntry.size() ? shadowEntry[i] : std::span{&root, 1};
+        if (light.sampleCount == 0) {
+            counts.shadow += laneCount(lit);
+            lit = simd::andNot(lit, occludedPacket(frame.bvh, ParallelRays(s.shadowOrigin, light.toLight),
+                                                   lit, Float(0.0f), Float(kInfinity), s.skip, entry));
+        } else {
+            Int visible =
+                visibleSunSamplesP(frame, light, s.shadowOrigin, s.normal, s.skip, lit, entry, counts);
+            lit = lit & (Int(0) < visible);
+            intensity = intensity * visibleFraction(visible, light.sampleCount);
+        }
+        if (simd::none(lit)) continue;
+        addPhongP(s, toLight, nDotL, intensity, lit, diffuse, specular);
+    }
+    for (const LocalLightSample& light : frame.localLights) {
+        const LocalLightViewP view = viewLocalLightP(light, s.shadowOrigin);
+        Float nDotL = dot(s.normal, view.toLight);
+        Mask lit = s.hitLanes & (nDotL > Float(0.0f));
+        if (simd::none(lit)) continue;
+        Float intensity = localLightIntensityP(light, view, lit);
+        lit = lit & (intensity > Float(0.0f));
+        if (simd::none(lit)) continue;
+        if (light.sampleCount == 0) {
+            lit = simd::andNot(lit, localLightBlockedP(frame, light, view, s.skip, lit, counts));
+        } else {
+            Int visible =
+                visibleDiscSamplesP(frame, light, view, s.shadowOrigin, s.normal, s.skip, lit, counts);
+            lit = lit & (Int(0) < visible);
+            intensity = intensity * visibleFraction(visible, light.sampleCount);
+        }
+        if (simd::none(lit)) continue;
+        addPhongP(s, view.toLight, nDotL, intensity, lit, diffuse, specular);
     }
     diffuse = simd::min(diffuse, Float(kMaxLight));  // see kMaxLight: no 0 * inf in a black channel
     out.r = simd::select(s.hitLanes, s.color.x * diffuse + specular, out.r);

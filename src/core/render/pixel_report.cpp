@@ -43,11 +43,12 @@ PixelReport tracePixel(const FrameScene& frame, const Camera& camera, int x, int
         r.material = surface.material;
         r.ambientTerm = surface.material.ka * frame.ambient;
         r.color = shadeHit(frame, r.ray, r.chosen, [&](const LightTerm& term) {
-            PixelReport::Light light{term, frame.lights[term.light].toLight};
+            PixelReport::Light light{term, term.toLight};
             if (term.shadowed) {
+                // The occluder on the ray toward the light's centre, nearer than a point light.
                 auto blockers =
                     crossingsOf(frame, {r.surface.shadowOrigin, light.toLight}, 0.0f, r.surface.skip);
-                if (!blockers.empty()) {
+                if (!blockers.empty() && blockers.front().t < term.distance) {
                     light.occluder = blockers.front().primitive;
                     light.occluderT = blockers.front().t;
                 }

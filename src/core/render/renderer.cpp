@@ -1,10 +1,13 @@
 #include "core/render/renderer.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include "core/anim/frame_builder.h"
+#include "core/render/diagnostic_view.h"
 #include "core/render/packet_shading.h"
 #include "core/render/shading.h"
+#include "core/render/view_legend.h"
 
 namespace f2 {
 
@@ -79,6 +82,24 @@ class TileRenderer {
     /// False, with `dst` incomplete, if `cancel` was raised: checked before
     /// each sample pass, as one tile with --aa 16 and many lights takes seconds.
     bool render(int x0, int y0, int x1, int y1, Rgb8* dst, const std::atomic<bool>* cancel) {
+        return renderBlocks(x0, y0, x1, y1, cancel, [dst](const ColorP& c, int w, int h, int offset) {
+            writeBlock(c, w, h, dst + offset);
+        });
+    }
+
+    /// As render(), but the colours before the 8-bit conversion, clamped to
+    /// [0, 1] as displayed (so that averages are of what each sample shows).
+    bool render(int x0, int y0, int x1, int y1, LinearRgb* dst, const std::atomic<bool>* cancel) {
+        return renderBlocks(x0, y0, x1, y1, cancel, [dst](const ColorP& c, int w, int h, int offset) {
+            writeLinearBlock(clamped(c), w, h, dst + offset);
+        });
+    }
+
+   private:
+    /// The tile's pixels, handed block by block to write(colour, width, height,
+    /// offset of the block's first pixel in a kTileSize-wide buffer).
+    template <class WriteBlock>
+    bool renderBlocks(int x0, int y0, int x1, int y1, const std::atomic<bool>* cancel, WriteBlock&& write) {
         static const LaneOffsets lanes;
         // The tile's primary packets start below the top of the tree, at the nodes its frustum reaches.
         std::uint32_t entryStore[kEntryNodes];
@@ -117,13 +138,12 @@ class TileRenderer {
             ColorP c = sum_[k];
             if (aa_ > 1) c = {c.r * weight, c.g * weight, c.b * weight};
             const int bx = (k % blocksX) * kBlockWidth, by = (k / blocksX) * kBlockHeight;
-            writeBlock(c, std::min(kBlockWidth, x1 - x0 - bx), std::min(kBlockHeight, y1 - y0 - by),
-                       dst + by * kTileSize + bx);
+            write(c, std::min(kBlockWidth, x1 - x0 - bx), std::min(kBlockHeight, y1 - y0 - by),
+                  by * kTileSize + bx);
         }
         return true;
     }
 
-   private:
     /// Per light, the entry nodes of the shadow rays leaving the box [lo, hi]
     /// (lane-wise bounds of the tile's shadow origins).
     class ShadowEntries {
@@ -133,9 +153,17 @@ class TileRenderer {
                                  {simd::maxLane(hi.x), simd::maxLane(hi.y), simd::maxLane(hi.z)}};
             if (!(origins.lo.x <= origins.hi.x)) return;  // nothing was hit: no shadow rays
             count_ = std::min(frame.lights.size(), kShadowEntryLights);
-            for (std::size_t i = 0; i < count_; ++i)
-                entries_[i] = {store_[i],
-                               frame.bvh.beamEntryNodes(origins, frame.lights[i].toLight, store_[i])};
+            for (std::size_t i = 0; i < count_; ++i) {
+                const LightSample& light = frame.lights[i];
+                // A soft sun's samples all start from the nodes that one of its directions reaches.
+                const std::size_t n =
+                    light.sampleCount == 0
+                        ? frame.bvh.beamEntryNodes(origins, light.toLight, store_[i])
+                        : frame.bvh.beamEntryNodes(
+                              origins, std::span(&frame.sunDirections[light.firstSample], light.sampleCount),
+                              store_[i]);
+                entries_[i] = {store_[i], n};
+            }
         }
         std::span<const std::span<const std::uint32_t>> perLight() const { return {entries_, count_}; }
 
@@ -158,6 +186,19 @@ class TileRenderer {
         }
     }
 
+    static void writeLinearBlock(const ColorP& c, int w, int h, LinearRgb* dst) {
+        alignas(64) float r[simd::kWidth], g[simd::kWidth], b[simd::kWidth];
+        simd::store(r, c.r);
+        simd::store(g, c.g);
+        simd::store(b, c.b);
+        for (int row = 0; row < h; ++row, dst += kTileSize) {
+            for (int col = 0; col < w; ++col) {
+                int i = row * kBlockWidth + col;
+                dst[col] = {r[i], g[i], b[i]};
+            }
+        }
+    }
+
     const FrameScene& frame_;
     const Camera& camera_;
     const int aa_;
@@ -167,35 +208,70 @@ class TileRenderer {
 };
 }  // namespace
 
-bool Renderer::trace(const FrameScene& frame, const Camera& camera, Image& out, const RenderOptions& options,
-                     const std::atomic<bool>* cancel, RayCounts* rays) {
-    out.resize(camera.width, camera.height);
+namespace {
+/// Runs `renderTile(x0, y0, x1, y1, rays)` for every tile of the camera's image
+/// on the pool; false if any tile was cancelled (renderTile returned false).
+template <class RenderTile>
+bool forEachTile(ThreadPool& pool, const Camera& camera, RayCounts* rays, RenderTile&& renderTile) {
     const int tilesX = (camera.width + kTileSize - 1) / kTileSize;
     const int tilesY = (camera.height + kTileSize - 1) / kTileSize;
-    const int aa = options.antialias < 1 ? 1 : options.antialias;
     std::atomic<bool> cancelled{false};
     std::atomic<std::uint64_t> primaryRays{0}, shadowRays{0};
 
-    pool_.parallelFor(std::uint32_t(tilesX * tilesY), [&](std::uint32_t tile) {
+    pool.parallelFor(std::uint32_t(tilesX * tilesY), [&](std::uint32_t tile) {
         const int x0 = int(tile % std::uint32_t(tilesX)) * kTileSize;
         const int y0 = int(tile / std::uint32_t(tilesX)) * kTileSize;
         const int x1 = std::min(x0 + kTileSize, camera.width);
         const int y1 = std::min(y0 + kTileSize, camera.height);
-        // The tile is rendered into a local buffer and copied out whole: the
-        // image rows of neighbouring tiles share cache lines, which two threads
-        // writing pixel by pixel would pass back and forth.
-        Rgb8 local[kTileSize * kTileSize];
         RayCounts tileRays;
-        if (!TileRenderer(frame, camera, aa, tileRays).render(x0, y0, x1, y1, local, cancel)) {
+        if (!renderTile(x0, y0, x1, y1, tileRays)) {
             cancelled.store(true, std::memory_order_relaxed);
             return;
         }
-        for (int y = y0; y < y1; ++y) std::copy_n(&local[(y - y0) * kTileSize], x1 - x0, &out.at(x0, y));
         primaryRays.fetch_add(tileRays.primary, std::memory_order_relaxed);
         shadowRays.fetch_add(tileRays.shadow, std::memory_order_relaxed);
     });
     if (rays) *rays = {primaryRays.load(), shadowRays.load()};
     return !cancelled.load();
+}
+}  // namespace
+
+bool Renderer::trace(const FrameScene& frame, const Camera& camera, Image& out, const RenderOptions& options,
+                     const std::atomic<bool>* cancel, RayCounts* rays) {
+    if (options.view != ViewMode::Shaded) {
+        ViewRange range;
+        if (!traceView(frame, camera, options.view, out, &pool_, cancel, &range, rays)) return false;
+        drawViewLegend(out, options.view, range);
+        return true;
+    }
+    out.resize(camera.width, camera.height);
+    const int aa = options.antialias < 1 ? 1 : options.antialias;
+    return forEachTile(pool_, camera, rays, [&](int x0, int y0, int x1, int y1, RayCounts& tileRays) {
+        // The tile is rendered into a local buffer and copied out whole: the
+        // image rows of neighbouring tiles share cache lines, which two threads
+        // writing pixel by pixel would pass back and forth.
+        Rgb8 local[kTileSize * kTileSize];
+        if (!TileRenderer(frame, camera, aa, tileRays).render(x0, y0, x1, y1, local, cancel)) return false;
+        for (int y = y0; y < y1; ++y) std::copy_n(&local[(y - y0) * kTileSize], x1 - x0, &out.at(x0, y));
+        return true;
+    });
+}
+
+bool Renderer::traceAdding(const FrameScene& frame, const Camera& camera, LinearImage& sum,
+                           const RenderOptions& options, const std::atomic<bool>* cancel, RayCounts* rays) {
+    const int aa = options.antialias < 1 ? 1 : options.antialias;
+    return forEachTile(pool_, camera, rays, [&](int x0, int y0, int x1, int y1, RayCounts& tileRays) {
+        LinearRgb local[kTileSize * kTileSize];
+        if (!TileRenderer(frame, camera, aa, tileRays).render(x0, y0, x1, y1, local, cancel)) return false;
+        // Each pixel belongs to one tile, so the sums do not depend on the thread that adds.
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x) {
+                const LinearRgb& c = local[(y - y0) * kTileSize + (x - x0)];
+                LinearRgb& s = sum.at(x, y);
+                s = {s.r + c.r, s.g + c.g, s.b + c.b};
+            }
+        return true;
+    });
 }
 
 /// The single-ray reference path over the whole image (tests compare it with trace()).
@@ -208,20 +284,64 @@ void traceReference(const FrameScene& frame, const Camera& camera, Image& out) {
         }
 }
 
-FrameTimings Renderer::render(const SceneDesc& scene, double t, const Camera& camera, Image& out,
-                              const RenderOptions& options, const std::atomic<bool>* cancel) {
-    FrameTimings timings;
+void Renderer::prepare(const SceneDesc& scene, double t, FrameTimings& timings) {
     auto start = Clock::now();
     evaluateFrame(scene, t, frame_, &pool_);
-    timings.evaluateMs = millisecondsSince(start);
+    timings.evaluateMs += millisecondsSince(start);
 
     start = Clock::now();
     frame_.bvh.update(frame_.primitives, &pool_);
-    timings.buildMs = millisecondsSince(start);
+    timings.buildMs += millisecondsSince(start);
+}
 
-    start = Clock::now();
+FrameTimings Renderer::render(const SceneDesc& scene, double t, const Camera& camera, Image& out,
+                              const RenderOptions& options, const std::atomic<bool>* cancel) {
+    FrameTimings timings;
+    prepare(scene, t, timings);
+    const auto start = Clock::now();
     timings.complete = trace(frame_, camera, out, options, cancel, &timings.rays);
     timings.traceMs = millisecondsSince(start);
+    return timings;
+}
+
+FrameTimings Renderer::renderAveraged(const SceneDesc& scene, std::span<const SubFrame> subFrames, Image& out,
+                                      const RenderOptions& options, const std::atomic<bool>* cancel,
+                                      const std::function<void(int)>& subFrameDone) {
+    FrameTimings timings;
+    if (subFrames.empty()) return timings;
+    // A diagnostic view shows one instant (depths or costs do not average): the middle sub-frame.
+    if (options.view != ViewMode::Shaded) {
+        const SubFrame& middle = subFrames[subFrames.size() / 2];
+        return render(scene, middle.time, middle.camera, out, options, cancel);
+    }
+    const int width = subFrames.front().camera.width, height = subFrames.front().camera.height;
+    sum_.resize(width, height);
+    std::fill(sum_.pixels.begin(), sum_.pixels.end(), LinearRgb{});
+    int done = 0;
+    for (const SubFrame& sub : subFrames) {
+        prepare(scene, sub.time, timings);
+        const auto start = Clock::now();
+        RayCounts rays;
+        timings.complete =
+            traceAdding(frame_, sub.camera.resized(width, height), sum_, options, cancel, &rays);
+        timings.traceMs += millisecondsSince(start);
+        timings.rays.primary += rays.primary;
+        timings.rays.shadow += rays.shadow;
+        if (!timings.complete) return timings;
+        if (subFrameDone) subFrameDone(++done);
+    }
+    // The mean, rounded once.
+    const auto start = Clock::now();
+    out.resize(width, height);
+    const float weight = 1.0f / float(subFrames.size());
+    pool_.parallelFor(std::uint32_t(height), [&](std::uint32_t row) {
+        const int y = int(row);
+        for (int x = 0; x < width; ++x) {
+            const LinearRgb& s = sum_.at(x, y);
+            out.at(x, y) = {toByte(s.r * weight), toByte(s.g * weight), toByte(s.b * weight)};
+        }
+    });
+    timings.traceMs += millisecondsSince(start);
     return timings;
 }
 

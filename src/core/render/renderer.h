@@ -3,17 +3,24 @@
 /// trace the image in tiles over a persistent thread pool. Public API: no
 /// SIMD type appears here, so users compile without the core's CPU flags.
 #include <atomic>
+#include <functional>
+#include <span>
 
 #include "core/render/camera.h"
 #include "core/render/frame_scene.h"
 #include "core/render/image.h"
+#include "core/render/linear_image.h"
 #include "core/render/ray_counts.h"
+#include "core/render/view_mode.h"
 #include "core/util/thread_pool.h"
 
 namespace f2 {
 
 struct RenderOptions {
     int antialias = 1;  ///< N: N x N stratified samples per pixel; 1 = pixel centre (SPEC 2)
+    /// What the pixels show. The diagnostic modes trace one ray per pixel
+    /// centre by the reference path (diagnostic_view.h); antialias is for Shaded.
+    ViewMode view = ViewMode::Shaded;
 };
 
 /// Wall-clock split of one frame, in milliseconds, and the rays it cast.
@@ -22,6 +29,13 @@ struct FrameTimings {
     RayCounts rays;
     bool complete = true;  ///< false when cancelled: the image is partial
     double totalMs() const { return evaluateMs + buildMs + traceMs; }
+};
+
+/// One of the images a frame averages (motion blur): a scene time and the
+/// camera at that time.
+struct SubFrame {
+    double time = 0;  ///< frames, may be fractional (or negative: the first keys hold)
+    Camera camera;
 };
 
 /// Square tiles handed to threads, each rendered into a local buffer and then
@@ -34,7 +48,8 @@ class Renderer {
     /// `threads` = 0 uses every core.
     explicit Renderer(int threads = 0);
 
-    /// Traces a prepared frame (its BVH built) into `out` at the camera's size.
+    /// Traces a prepared frame (its BVH built) into `out` at the camera's size,
+    /// in the view mode of `options` (depth and cost with their legend, view_legend.h).
     /// Returns false if `cancel` was raised (the image is then incomplete).
     bool trace(const FrameScene& frame, const Camera& camera, Image& out, const RenderOptions& options = {},
                const std::atomic<bool>* cancel = nullptr, RayCounts* rays = nullptr);
@@ -44,13 +59,31 @@ class Renderer {
     FrameTimings render(const SceneDesc& scene, double t, const Camera& camera, Image& out,
                         const RenderOptions& options = {}, const std::atomic<bool>* cancel = nullptr);
 
+    /// The mean of the images of `subFrames` (motion blur; all at one image
+    /// size): each is evaluated, built and traced as by render(), its pixels
+    /// (the clamped mean of the anti-aliasing samples) added up in float in
+    /// sub-frame order, and the mean converted to bytes once. The same bytes for
+    /// any thread count; one sub-frame gives render()'s bytes. A diagnostic
+    /// view (options.view) shows the middle sub-frame alone. `subFrameDone`
+    /// (optional) is called on this thread after each sub-frame with the number done.
+    FrameTimings renderAveraged(const SceneDesc& scene, std::span<const SubFrame> subFrames, Image& out,
+                                const RenderOptions& options = {}, const std::atomic<bool>* cancel = nullptr,
+                                const std::function<void(int done)>& subFrameDone = {});
+
     /// The frame evaluated by the last render().
     const FrameScene& frame() const { return frame_; }
     int threadCount() const { return pool_.threadCount(); }
 
    private:
+    /// Evaluates `scene` at `t` into frame_ and updates its BVH (render()'s first two steps).
+    void prepare(const SceneDesc& scene, double t, FrameTimings& timings);
+    /// As trace(), but adds each pixel's colour (before the 8-bit conversion) to `sum`.
+    bool traceAdding(const FrameScene& frame, const Camera& camera, LinearImage& sum,
+                     const RenderOptions& options, const std::atomic<bool>* cancel, RayCounts* rays);
+
     ThreadPool pool_;
     FrameScene frame_;
+    LinearImage sum_;  // renderAveraged's accumulator, kept for its capacity
 };
 
 /// Colour (0..1) of one pixel's sample at image point (px, py): the single-ray

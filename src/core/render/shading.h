@@ -1,10 +1,12 @@
 #pragma once
-/// Phong shading with one shadow ray per directional light (SPEC 3).
+/// Phong shading with one shadow ray per directional light (SPEC 3), and the
+/// point, spot and soft lights of docs/rendering.md.
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "core/render/frame_scene.h"
+#include "core/render/light_sampling.h"
 
 namespace f2 {
 
@@ -54,17 +56,38 @@ inline ShadingPoint shadingPoint(const FrameScene& frame, const Ray& ray, const 
 
 /// One light's part in shading a point, as shadeHit() computed it.
 struct LightTerm {
-    std::size_t light = 0;  ///< index into FrameScene::lights
-    float nDotL = 0;        ///< <= 0: the surface faces away, no shadow ray
-    bool shadowed = false;  ///< the shadow ray met something
-    float diffuse = 0;      ///< intensity * kd * N.L (0 unless lit)
-    float specular = 0;     ///< intensity * ks * (R.V)^n (0 unless lit and R.V > 0)
+    std::size_t light = 0;       ///< FrameScene::lights, then localLights (index - lights.size())
+    Vec3 toLight;                ///< unit, toward the light (its centre)
+    float distance = kInfinity;  ///< to a point or spot light's centre
+    float intensity = 0;         ///< what arrives, before shadows: after a spot's cone and fade
+    float nDotL = 0;             ///< <= 0: the surface faces away, no shadow ray
+    float visible = 1;           ///< fraction of the light's shadow samples that reach it
+    std::uint32_t rays = 0;      ///< shadow rays cast
+    bool shadowed = false;       ///< none did
+    float diffuse = 0;           ///< intensity * visible * kd * N.L (0 unless lit)
+    float specular = 0;          ///< intensity * visible * ks * (R.V)^n (0 unless lit and R.V > 0)
 };
 
+/// Adds a lit light's diffuse and specular terms (SPEC 3) to the sums.
+inline void addPhong(LightTerm& term, const Material& m, Vec3 n, Vec3 toEye, float& diffuse,
+                     float& specular) {
+    const float intensity = term.intensity * term.visible;
+    term.diffuse = intensity * m.kd * term.nDotL;
+    diffuse += term.diffuse;
+    Vec3 reflected = n * (2 * term.nDotL) - term.toLight;
+    float rDotV = dot(reflected, toEye);
+    if (rDotV > 0 && m.ks > 0) {
+        term.specular = std::min(intensity * m.ks, kMaxLight) * std::pow(rDotV, m.n);
+        specular += term.specular;
+    }
+}
+
 /// Colour (0..1, unclamped) of the nearest hit `hit` of `ray`; onLight(term)
-/// sees each light's LightTerm (the --pixel report).
-template <class OnLight>
-inline Vec3 shadeHit(const FrameScene& frame, const Ray& ray, const HitRecord& hit, OnLight&& onLight) {
+/// sees each light's LightTerm (the --pixel report); the shadow rays'
+/// traversals add their work to `count` (TraversalCount: the cost view).
+template <class OnLight, class Count>
+inline Vec3 shadeHit(const FrameScene& frame, const Ray& ray, const HitRecord& hit, OnLight&& onLight,
+                     Count& count) {
     const Surface& surface = frame.surfaces[hit.primitive];
     const Material& m = surface.material;
     const ShadingPoint s = shadingPoint(frame, ray, hit);
@@ -77,23 +100,58 @@ inline Vec3 shadeHit(const FrameScene& frame, const Ray& ray, const HitRecord& h
         const LightSample& light = frame.lights[i];
         LightTerm term;
         term.light = i;
+        term.toLight = light.toLight;
+        term.intensity = light.intensity;
         term.nDotL = dot(n, light.toLight);
         if (term.nDotL > 0) {
-            term.shadowed = frame.bvh.occluded({s.shadowOrigin, light.toLight}, 0.0f, kInfinity, s.skip);
-            if (!term.shadowed) {
-                term.diffuse = light.intensity * m.kd * term.nDotL;
-                diffuse += term.diffuse;
-                Vec3 reflected = n * (2 * term.nDotL) - light.toLight;
-                float rDotV = dot(reflected, toEye);
-                if (rDotV > 0 && m.ks > 0) {
-                    term.specular = std::min(light.intensity * m.ks, kMaxLight) * std::pow(rDotV, m.n);
-                    specular += term.specular;
+            if (light.sampleCount == 0) {
+                term.rays = 1;
+                term.shadowed =
+                    frame.bvh.occluded({s.shadowOrigin, light.toLight}, 0.0f, kInfinity, s.skip, count);
+            } else {
+                const SampledShadow shadow =
+                    visibleSunSamples(frame, light, s.shadowOrigin, n, s.skip, count);
+                term.rays = shadow.rays;
+                term.visible = float(shadow.visible) / float(light.sampleCount);
+                term.shadowed = shadow.visible == 0;
+            }
+            if (!term.shadowed) addPhong(term, m, n, toEye, diffuse, specular);
+        }
+        onLight(term);
+    }
+    for (std::size_t j = 0; j < frame.localLights.size(); ++j) {
+        const LocalLightSample& light = frame.localLights[j];
+        const LocalLightView view = viewLocalLight(light, s.shadowOrigin);
+        LightTerm term;
+        term.light = frame.lights.size() + j;
+        term.toLight = view.toLight;
+        term.distance = view.distance;
+        term.nDotL = dot(n, view.toLight);
+        if (term.nDotL > 0) {
+            term.intensity = localLightIntensity(light, -dot(view.toLight, light.axis), view.distance);
+            if (term.intensity > 0) {
+                if (light.sampleCount == 0) {
+                    term.rays = 1;
+                    term.shadowed = localLightBlocked(frame, light, view, s.skip, count);
+                } else {
+                    const SampledShadow shadow =
+                        visibleDiscSamples(frame, light, view, s.shadowOrigin, n, s.skip, count);
+                    term.rays = shadow.rays;
+                    term.visible = float(shadow.visible) / float(light.sampleCount);
+                    term.shadowed = shadow.visible == 0;
                 }
+                if (!term.shadowed) addPhong(term, m, n, toEye, diffuse, specular);
             }
         }
         onLight(term);
     }
     return surface.color * std::min(diffuse, kMaxLight) + Vec3{specular, specular, specular};
+}
+
+template <class OnLight>
+inline Vec3 shadeHit(const FrameScene& frame, const Ray& ray, const HitRecord& hit, OnLight&& onLight) {
+    NoTraversalCount none;
+    return shadeHit(frame, ray, hit, onLight, none);
 }
 
 inline Vec3 shadeHit(const FrameScene& frame, const Ray& ray, const HitRecord& hit) {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/math/vec3.h"
+#include "core/scene/light_desc.h"
 
 namespace f2 {
 
@@ -122,6 +123,7 @@ struct CameraDesc {
 struct DirectionalLight {
     float intensity = 0;
     Vec3 direction;  ///< the direction the light travels, as written
+    SoftShadow sun;  ///< `angle`: the sun's angular radius (degrees) and samples per side
 };
 
 struct AnimationProgram;  // anim/animation_program.h
@@ -149,6 +151,7 @@ struct SceneDesc {
     CameraDesc camera;
     float ambient = 0;  ///< sum of all /amb_light
     std::vector<DirectionalLight> lights;
+    std::vector<LocalLight> localLights;  ///< `/point_light` and `/spot_light`, in file order
     Color8 background{0, 0, 0};
     int fps = 24;
     std::vector<SceneObject> objects;

@@ -1,0 +1,37 @@
+#pragma once
+/// Where the objects of a parsed scene are created in its source, from the
+/// parser's own symbol index (core/parse/symbol_index.h): names made by
+/// `/repeat` loops, `{ }` expressions and `/include`d files are found too,
+/// which a search of the text cannot do.
+#include <string>
+#include <unordered_map>
+
+#include "core/parse/diagnostic.h"
+
+namespace f2 {
+struct SymbolIndex;
+}
+
+namespace f2::viewer {
+
+/// The command that created an object.
+struct CreatedAt {
+    SourceLoc loc;     ///< its first character; `file` as diagnostics name it
+    int sameLine = 1;  ///< objects that line created: more than one means a
+                       ///< `/repeat` loop (or a file included more than once)
+};
+
+class SceneLocations {
+   public:
+    /// The creating commands of the objects `index` lists.
+    static SceneLocations fromIndex(const SymbolIndex& index);
+
+    /// Where object `name` was created, if the scene has it.
+    const CreatedAt* object(const std::string& name) const;
+    std::size_t size() const { return objects_.size(); }
+
+   private:
+    std::unordered_map<std::string, CreatedAt> objects_;
+};
+
+}  // namespace f2::viewer
