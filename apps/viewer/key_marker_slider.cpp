@@ -52,11 +52,12 @@ void KeyMarkerSlider::paintEvent(QPaintEvent* event) {
     painter.setRenderHint(QPainter::Antialiasing, true);
     painter.setPen(Qt::NoPen);
     if (loop_) {
-        // A band over the looped frames and a flag above each end, pointing inward.
+        // A bar above the groove over the looped frames (the handle stays
+        // clear) and a flag at each end, pointing inward.
         const int in = positionOf(loop_->first), out = positionOf(loop_->second);
         const int s = kLoopFlagSize;
-        painter.setBrush(QColor(40, 140, 255, 70));
-        painter.drawRect(QRect(QPoint(in, 0), QPoint(out, height() - 1)));
+        painter.setBrush(QColor(40, 140, 255, 110));
+        painter.drawRect(QRect(QPoint(in, 0), QPoint(out, s / 2)));
         painter.setBrush(QColor(40, 140, 255));
         const QPoint inFlag[3] = {{in, 0}, {in + 2 * s, 0}, {in, 2 * s}};
         const QPoint outFlag[3] = {{out, 0}, {out - 2 * s, 0}, {out, 2 * s}};

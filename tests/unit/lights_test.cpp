@@ -22,7 +22,7 @@ TEST(LightCommands, PointAndSpotLightsAreKeptAsWritten) {
         "/sphere s 10 0 0 0\n"
         "/point_light 0.5 1 2 3\n"
         "/point_light 0.25 0 100 0 size 20 4 fade 50 2\n"
-        "/spot_light 0.75 0 200 0 0 -1 0 20 30 tightness 3\n"
+        "/spot_light 0.75 0 200 0 0 -1 0 20 30 tightness 3 fade 100 1 size 10 2\n"
         "/dir_light 0.6 0 -1 1 angle 2 3\n");
     ASSERT_EQ(s.localLights.size(), 3u);
     EXPECT_EQ(s.localLights[0].kind, LocalLightKind::Point);
@@ -37,6 +37,8 @@ TEST(LightCommands, PointAndSpotLightsAreKeptAsWritten) {
     EXPECT_FLOAT_EQ(spot.radius, 20);
     EXPECT_FLOAT_EQ(spot.falloff, 30);
     EXPECT_FLOAT_EQ(spot.tightness, 3);
+    EXPECT_EQ(spot.fade, (Fade{100, 1}));
+    EXPECT_EQ(spot.area, (SoftShadow{10, 2}));
     ASSERT_EQ(s.lights.size(), 1u);
     EXPECT_EQ(s.lights[0].sun, (SoftShadow{2, 3}));
 }
@@ -60,6 +62,8 @@ TEST(LightCommands, BadOptionsAreErrorsAtTheirPlace) {
                           "spot falloff must be at most 90 degrees, got 120");
     test::expectOnlyError("/spot_light 1 0 0 0 0 0 0 10 20\n", 1, 21, "light direction must not be 0 0 0");
     test::expectOnlyError("/spot_light 1 0 0 0 0 -1 0 10\n", 1, 1, "'/spot_light' takes 9 arguments, got 8");
+    test::expectOnlyError("/point_light 1 0 0 0 fade 1 2 fade 1 2 fade 1 2 fade 1 2 fade 1 2\n", 1, 1,
+                          "'/point_light' takes at most 17 arguments with its options, got 19");
 }
 
 TEST(LightCommands, TheDiscPatternIsPovRaysCircularGrid) {

@@ -35,9 +35,10 @@ struct Token {
     int column = 0;  ///< 1-based byte column
 };
 
-/// The longest command has 10 tokens (/camera with 9 arguments); a few more
-/// are stored so that messages can quote them, the rest are only counted.
-inline constexpr int kMaxStoredTokens = 16;
+/// The longest command has 18 tokens (/spot_light with its 9 arguments and
+/// all three options, kMostLightArgs in the parser); a few more are stored so
+/// that messages can quote them, the rest are only counted.
+inline constexpr int kMaxStoredTokens = 20;
 
 /// Tokens of one line; `count` may exceed kMaxStoredTokens (then only the
 /// first kMaxStoredTokens are in `tokens`). No heap allocation.

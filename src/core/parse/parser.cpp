@@ -786,8 +786,19 @@ class Parser : private ExpansionSink {
             expectArgs({fixed});
             return false;
         }
+        if (argCount() > kMostLightArgs) {
+            error(commandPos(), quoteToken(commandText()) + " takes at most " +
+                                    std::to_string(kMostLightArgs) + " arguments with its options, got " +
+                                    std::to_string(argCount()));
+            return false;
+        }
         return lightAllowed();
     }
+
+    /// The most arguments of a light command: /spot_light's 9 and its three
+    /// options (tightness k, fade d p, size s n). Every one is stored (kMaxStoredTokens).
+    static constexpr int kMostLightArgs = 9 + 2 + 3 + 3;
+    static_assert(kMostLightArgs + 1 <= kMaxStoredTokens);
 
     /// The largest angular radius of a soft sun (degrees): wider is no longer a sun.
     static constexpr float kMaxSunRadius = 45.0f;
