@@ -4,13 +4,17 @@
 /// (FrameScene). Refilled in place each frame; its vectors keep their
 /// capacity so steady-state frames do not allocate.
 #include <cstdint>
+#include <memory>
 #include <vector>
 
+#include "core/anim/track.h"
 #include "core/geometry/primitive.h"
 #include "core/math/transform.h"
 #include "core/scene/scene_desc.h"
 
 namespace f2 {
+
+struct AnimationProgram;  // animation_program.h
 
 /// Shading inputs of one primitive.
 struct Surface {
@@ -63,6 +67,12 @@ struct EvaluatedFrame {
     Vec3 background;  ///< 0..1
     /// World root frames of attached objects (SPEC 9.2), indexed by object.
     std::vector<Transform> attachedRoots;
+    /// Where the time falls in each key layout of the scene's animation
+    /// (AnimationProgram::segmentsAt): scratch of the evaluation.
+    std::vector<TrackSegment> segments;
+    /// The program that filled this frame last: when it fills it again, the
+    /// surfaces and the primitives of objects that never move are in place.
+    std::shared_ptr<const AnimationProgram> filledBy;
 };
 
 }  // namespace f2

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/anim/animation_program.h"
 #include "core/anim/light_frame.h"
 #include "core/anim/track.h"
 #include "core/scene/models.h"
@@ -10,10 +11,6 @@ namespace f2 {
 
 namespace {
 Vec3 toUnitColor(Color8 c) { return Vec3{float(c.r), float(c.g), float(c.b)} / 255.0f; }
-
-Surface surfaceOf(const Appearance& look) {
-    return {toUnitColor(look.color), look.material, toUnitColor(look.checker.color), look.checker.size};
-}
 
 }  // namespace
 
@@ -30,14 +27,7 @@ std::array<Transform, kPartCount> modelPartFrames(const SceneObject& object, con
         int index = int(part.id);
         Pose motion = evaluateTrack(object.partTracks[index], t, Pose{});
         const Transform& worldFromParent = part.parent < 0 ? worldFromRoot : worldFromPart[part.parent];
-        // parent . translate(pivot + offset) . rotate(rotation)  (SPEC 5)
-        Vec3 origin = part.pivot + motion.position;
-        if (motion.rotation == Vec3{}) {  // most parts of most frames: no matrix product
-            worldFromPart[index] = worldFromParent.translated(origin);
-        } else {
-            worldFromPart[index] =
-                worldFromParent * Transform{rotationFromEulerDegrees(motion.rotation), origin};
-        }
+        worldFromPart[index] = childFrame(worldFromParent, part.pivot + motion.position, motion.rotation);
     }
     return worldFromPart;
 }
@@ -79,36 +69,6 @@ Vec3 partShapeCentre(ObjectKind kind, int part, const Transform& worldFromPart) 
 }
 
 namespace {
-/// Writes the primitives of one object placed at `worldFromObject` at `out`
-/// (primitiveCountOf(kind) slots).
-void evaluateObject(const SceneObject& object, const Transform& worldFromObject, double t, Primitive* prims,
-                    Surface* surfaces) {
-    if (!isModel(object.kind)) {
-        *prims = makePrimitive(shapeKindOf(object.kind), object.size, worldFromObject);
-        *surfaces = surfaceOf(object.appearance[0]);
-        return;
-    }
-    auto worldFromPart = modelPartFrames(object, worldFromObject, t);
-    for (const ModelShape& shape : modelOf(object.kind).shapes) {
-        const Transform& partFrame = worldFromPart[int(shape.part)];
-        *prims++ = makePrimitive(shape.kind, shape.size, partFrame.translated(shape.centre));
-        const Appearance& look = object.appearance[int(shape.part)];
-        // The eyes keep their own plain colour, painted or chequered head alike.
-        *surfaces++ =
-            shape.ownColor ? Surface{toUnitColor(shape.color), look.material, Vec3{}, 0.0f} : surfaceOf(look);
-    }
-}
-
-/// Starts loading the key frames of an object evaluated soon: each track's
-/// keys are a heap block of their own, and waiting for them one object at a
-/// time was most of the evaluation of a large scene.
-void prefetchKeys(const SceneObject& object) {
-    __builtin_prefetch(object.track.keys.data());
-    for (const Track& track : object.partTracks) __builtin_prefetch(track.keys.data());
-}
-
-// Objects ahead whose keys are prefetched.
-constexpr std::size_t kPrefetchAhead = 8;
 // Objects per parallel work item: big enough to hide the hand-out cost.
 constexpr std::size_t kObjectsPerChunk = 256;
 }  // namespace
@@ -120,27 +80,23 @@ void evaluateFrame(const SceneDesc& scene, double t, EvaluatedFrame& frame, Thre
 
     // Each object owns a fixed run of primitive slots, so objects can be
     // evaluated in any order, in parallel, straight into place.
-    const std::size_t objectCount = scene.objects.size();
-    frame.firstPrimitive.resize(objectCount + 1);
-    std::size_t total = 0;
-    for (std::size_t i = 0; i < objectCount; ++i) {
-        frame.firstPrimitive[i] = std::uint32_t(total);
-        total += primitiveCountOf(scene.objects[i].kind);
-    }
-    frame.firstPrimitive[objectCount] = std::uint32_t(total);
+    std::shared_ptr<const AnimationProgram> program = animationProgramOf(scene);
+    const bool refill = frame.filledBy == program;
+    frame.filledBy = nullptr;  // until the frame is whole again
+    frame.firstPrimitive = program->firstPrimitive;
+    const std::size_t total = program->firstPrimitive.back();
     frame.primitives.resize(total);
     frame.surfaces.resize(total);
     // Attached objects need their parents' frames first: one pass in order.
     attachedRootFrames(scene, t, frame.attachedRoots);
+    // Where t falls among the keys, once per key layout.
+    program->segmentsAt(t, frame.segments);
 
+    const std::size_t objectCount = scene.objects.size();
     auto evaluateChunk = [&](std::uint32_t chunk) {
-        std::size_t end = std::min(objectCount, (chunk + 1) * kObjectsPerChunk);
-        for (std::size_t i = chunk * kObjectsPerChunk; i < end; ++i) {
-            if (i + kPrefetchAhead < end) prefetchKeys(scene.objects[i + kPrefetchAhead]);
-            evaluateObject(scene.objects[i], worldFromRoot(scene, i, t, frame.attachedRoots), t,
-                           &frame.primitives[frame.firstPrimitive[i]],
-                           &frame.surfaces[frame.firstPrimitive[i]]);
-        }
+        const std::size_t begin = chunk * kObjectsPerChunk;
+        program->evaluateObjects(begin, std::min(objectCount, begin + kObjectsPerChunk),
+                                 frame.segments.data(), refill, frame);
     };
     std::uint32_t chunks = std::uint32_t((objectCount + kObjectsPerChunk - 1) / kObjectsPerChunk);
     if (pool) {
@@ -148,6 +104,7 @@ void evaluateFrame(const SceneDesc& scene, double t, EvaluatedFrame& frame, Thre
     } else {
         for (std::uint32_t c = 0; c < chunks; ++c) evaluateChunk(c);
     }
+    frame.filledBy = std::move(program);
 }
 
 }  // namespace f2

@@ -39,8 +39,10 @@ inline Transform worldFromRoot(const SceneDesc& scene, std::size_t i, double t,
 Vec3 partShapeCentre(ObjectKind kind, int part, const Transform& worldFromPart);
 
 /// Fills `frame` (primitives, surfaces, lights) for time `t` in frames, on the
-/// pool's threads when one is given. The BVH is the renderer's business
-/// (FrameScene::bvh, updated from frame.primitives).
+/// pool's threads when one is given, from the scene's compiled animation
+/// (animation_program.h; compiled by the first call for a scene). Gives the
+/// bits that the object-by-object functions above give. The BVH is the
+/// renderer's business (FrameScene::bvh, updated from frame.primitives).
 void evaluateFrame(const SceneDesc& scene, double t, EvaluatedFrame& frame, ThreadPool* pool = nullptr);
 
 }  // namespace f2

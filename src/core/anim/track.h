@@ -1,5 +1,12 @@
 #pragma once
 /// Key-frame interpolation of one target (SPEC 6, modes per key SPEC 9.3).
+/// Evaluation is in two steps so that tracks with the same key frames and
+/// modes share the first: `segmentAt` finds where a time falls among the key
+/// frames (which keys, which fraction), `poseInSegment` blends the poses of
+/// those keys.
+#include <cstddef>
+#include <cstdint>
+
 #include "core/scene/scene_desc.h"
 
 namespace f2 {
@@ -19,6 +26,81 @@ double easeFraction(double u);
 double interpolationWeight(Interpolation mode, double u);
 
 /// Uniform Catmull-Rom between p1 and p2 with neighbours p0, p3, at u in [0, 1].
-double catmullRom(double p0, double p1, double p2, double p3, double u);
+/// Inline: evaluation computes it for six channels at once.
+inline double catmullRom(double p0, double p1, double p2, double p3, double u) {
+    double u2 = u * u, u3 = u2 * u;
+    return 0.5 * (2.0 * p1 + (p2 - p0) * u + (2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3) * u2 +
+                  (3.0 * p1 - p0 - 3.0 * p2 + p3) * u3);
+}
+
+/// Where a time falls among the key frames of a track (at least one key): the
+/// keys whose poses make the pose at that time, and how.
+struct TrackSegment {
+    enum class Kind : std::uint8_t {
+        Hold,    ///< exactly key p1's pose (before the first key, after the last, or a step)
+        Blend,   ///< p1 + (p2 - p1)·weight
+        Spline,  ///< Catmull-Rom through p0, p1, p2, p3 at fraction `weight`
+    };
+    Kind kind = Kind::Hold;
+    std::uint32_t p0 = 0, p1 = 0, p2 = 0, p3 = 0;  ///< key indices
+    double weight = 0;                             ///< w(u) for Blend, u for Spline
+};
+
+/// The segment of time `t` among `keyCount` keys (at least one) whose frames,
+/// sorted and unique, are `frameOf(i)` and whose segment modes are `modeOf(i)`
+/// (the mode from key i to key i + 1). NaN gives the first key.
+template <class FrameOf, class ModeOf>
+TrackSegment segmentAt(std::size_t keyCount, FrameOf frameOf, ModeOf modeOf, double t) {
+    const std::uint32_t last = std::uint32_t(keyCount - 1);
+    // `!(t > first)` also sends NaN to the first key, so the search below
+    // always finds a key after t.
+    if (!(t > frameOf(0))) return {};
+    if (t >= frameOf(last)) return {TrackSegment::Kind::Hold, last, last, last, last, 0};
+    // First key strictly after t (frameOf(0) <= t < frameOf(last)); the segment is [i1, i2].
+    std::uint32_t lo = 1, hi = last;
+    while (lo < hi) {
+        const std::uint32_t mid = lo + (hi - lo) / 2;
+        if (t < frameOf(mid))
+            hi = mid;
+        else
+            lo = mid + 1;
+    }
+    const std::uint32_t i2 = lo, i1 = i2 - 1;
+    const double u = (t - frameOf(i1)) / double(frameOf(i2) - frameOf(i1));
+    const Interpolation mode = modeOf(i1);
+    if (mode == Interpolation::Step)
+        return {TrackSegment::Kind::Hold, i1, i1, i1, i1, 0};  // until the next key
+    if (mode == Interpolation::Spline) {
+        // The neighbours are the keys around, whatever their own modes; an end
+        // key stands in for a missing one.
+        return {TrackSegment::Kind::Spline, i1 == 0 ? i1 : i1 - 1, i1, i2, i2 < last ? i2 + 1 : i2, u};
+    }
+    return {TrackSegment::Kind::Blend, i1, i1, i2, i2, interpolationWeight(mode, u)};
+}
+
+/// Channel c (0..5) of a pose: position x, y, z, then rotation x, y, z.
+inline double poseChannel(const Pose& pose, int c) { return c < 3 ? pose.position[c] : pose.rotation[c - 3]; }
+
+/// The pose in `segment` of keys whose poses are `poseOf(i)`.
+template <class PoseOf>
+Pose poseInSegment(const TrackSegment& segment, PoseOf poseOf) {
+    const Pose& a = poseOf(segment.p1);
+    if (segment.kind == TrackSegment::Kind::Hold) return a;
+    const Pose& b = poseOf(segment.p2);
+    double out[6];
+    if (segment.kind == TrackSegment::Kind::Spline) {
+        const Pose& p0 = poseOf(segment.p0);
+        const Pose& p3 = poseOf(segment.p3);
+        for (int c = 0; c < 6; ++c)
+            out[c] = catmullRom(poseChannel(p0, c), poseChannel(a, c), poseChannel(b, c), poseChannel(p3, c),
+                                segment.weight);
+    } else {
+        for (int c = 0; c < 6; ++c) {
+            const double from = poseChannel(a, c), to = poseChannel(b, c);
+            out[c] = from + (to - from) * segment.weight;
+        }
+    }
+    return {{float(out[0]), float(out[1]), float(out[2])}, {float(out[3]), float(out[4]), float(out[5])}};
+}
 
 }  // namespace f2

@@ -1,9 +1,12 @@
 #pragma once
 /// The parsed scene: what the file says, before any animation is evaluated.
 /// Produced by the parser, evaluated at a time by anim/frame_builder; plain
-/// data, no behaviour.
+/// data, no behaviour (besides the cache of its animation compiled for
+/// evaluation, SceneDesc::animation).
 #include <array>
+#include <atomic>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -135,6 +138,27 @@ struct DirectionalLight {
     SoftShadow sun;  ///< `angle`: the sun's angular radius (degrees) and samples per side
 };
 
+struct AnimationProgram;  // anim/animation_program.h
+
+/// Where a scene keeps the compiled form of its animation
+/// (anim/animation_program.h), made by its first evaluation; thread-safe. A
+/// copy starts empty: the objects of a scene must not change once it has been
+/// evaluated, so a changed scene is a changed copy, compiled anew.
+class AnimationCache {
+   public:
+    AnimationCache() = default;
+    AnimationCache(const AnimationCache&) {}
+    AnimationCache& operator=(const AnimationCache&) {
+        program_.store(nullptr);
+        return *this;
+    }
+    std::shared_ptr<const AnimationProgram> get() const { return program_.load(); }
+    void set(std::shared_ptr<const AnimationProgram> program) const { program_.store(std::move(program)); }
+
+   private:
+    mutable std::atomic<std::shared_ptr<const AnimationProgram>> program_;
+};
+
 struct SceneDesc {
     CameraDesc camera;
     float ambient = 0;  ///< sum of all /amb_light
@@ -146,6 +170,8 @@ struct SceneDesc {
     /// Indices of the attached objects, each after the object it rides on
     /// when that one is attached too: the order in which to evaluate them.
     std::vector<std::uint32_t> attachOrder;
+    /// The objects' animation compiled for evaluation (anim/frame_builder).
+    AnimationCache animation;
 
     /// Last frame of the animation: the largest key frame of the scene (0 if none).
     int lastFrame() const;

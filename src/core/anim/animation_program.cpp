@@ -1,0 +1,218 @@
+#include "core/anim/animation_program.h"
+
+#include <cstring>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+
+#include "core/scene/models.h"
+
+namespace f2 {
+
+namespace {
+Vec3 toUnitColor(Color8 c) { return Vec3{float(c.r), float(c.g), float(c.b)} / 255.0f; }
+
+/// Shading inputs of a primitive object (`shape` null) or of one shape of a model.
+Surface surfaceOf(const SceneObject& object, const ModelShape* shape) {
+    const Appearance& look = object.appearance[shape ? int(shape->part) : 0];
+    // The eyes keep their own plain colour, painted or chequered head alike.
+    if (shape && shape->ownColor) return {toUnitColor(shape->color), look.material, Vec3{}, 0.0f};
+    return {toUnitColor(look.color), look.material, toUnitColor(look.checker.color), look.checker.size};
+}
+
+/// The bytes of a value, as a key for the tables that store equal things once
+/// (padding bytes, if any, can only make two equal things be stored twice).
+template <class T>
+void appendBytes(std::string& key, const T& value) {
+    key.append(reinterpret_cast<const char*>(&value), sizeof value);
+}
+
+/// Compiles the scene's tracks into the program's tables.
+class Compiler {
+   public:
+    explicit Compiler(AnimationProgram& program) : p_(program) {}
+
+    /// kAnimated | track for two keys or more; else `kConstant` (no keys, or one).
+    std::uint32_t animatedTrack(const Track& track) {
+        if (track.keys.size() < 2) return 0;
+        const auto index = std::uint32_t(p_.tracks.size());
+        p_.tracks.push_back({layoutOf(track), std::uint32_t(p_.poses.size())});
+        for (const Key& key : track.keys) p_.poses.push_back(key.pose);
+        return AnimationProgram::kAnimated | index;
+    }
+
+    /// Index in constantMotions of a part's constant pose (rest, or its one key).
+    std::uint32_t constantMotion(const Track& track) {
+        const Pose pose = track.keys.empty() ? Pose{} : track.keys.front().pose;
+        std::string key;
+        appendBytes(key, pose);
+        auto [it, added] = motionIndex_.try_emplace(std::move(key), std::uint32_t(p_.constantMotions.size()));
+        if (added) {
+            // As modelPartFrames computes it: no matrix for zero angles.
+            const bool rotated = !(pose.rotation == Vec3{});
+            p_.constantMotions.push_back(
+                {pose.position, rotated ? rotationFromEulerDegrees(pose.rotation) : Mat3{}, rotated});
+        }
+        return it->second;
+    }
+
+    /// First index in `surfaces` of an object's surfaces (equal runs stored once).
+    std::uint32_t surfaces(const SceneObject& object) {
+        Surface run[6];
+        std::size_t count = 0;
+        if (isModel(object.kind)) {
+            for (const ModelShape& shape : modelOf(object.kind).shapes)
+                run[count++] = surfaceOf(object, &shape);
+        } else {
+            run[count++] = surfaceOf(object, nullptr);
+        }
+        std::string key;
+        for (std::size_t i = 0; i < count; ++i) appendBytes(key, run[i]);
+        auto [it, added] = surfaceIndex_.try_emplace(std::move(key), std::uint32_t(p_.surfaces.size()));
+        if (added) p_.surfaces.insert(p_.surfaces.end(), run, run + count);
+        return it->second;
+    }
+
+   private:
+    std::uint32_t layoutOf(const Track& track) {
+        std::string key;
+        for (std::size_t i = 0; i < track.keys.size(); ++i) {
+            appendBytes(key, track.keys[i].frame);
+            appendBytes(key, track.modeAfter(i));
+        }
+        auto [it, added] = layoutIndex_.try_emplace(std::move(key), std::uint32_t(p_.layouts.size()));
+        if (added) {
+            p_.layouts.push_back({std::uint32_t(p_.frames.size()), std::uint32_t(track.keys.size())});
+            for (std::size_t i = 0; i < track.keys.size(); ++i) {
+                p_.frames.push_back(track.keys[i].frame);
+                p_.modes.push_back(track.modeAfter(i));
+            }
+        }
+        return it->second;
+    }
+
+    AnimationProgram& p_;
+    std::unordered_map<std::string, std::uint32_t> layoutIndex_, motionIndex_, surfaceIndex_;
+};
+
+}  // namespace
+
+std::shared_ptr<const AnimationProgram> AnimationProgram::compile(const SceneDesc& scene) {
+    auto program = std::make_shared<AnimationProgram>();
+    AnimationProgram& p = *program;
+    const std::size_t count = scene.objects.size();
+    p.kinds.resize(count);
+    p.sizes.resize(count);
+    p.rootSource.resize(count);
+    p.constantRoots.resize(count);
+    p.partSource.resize(count);
+    p.firstSurface.resize(count);
+    p.firstPrimitive.resize(count + 1);
+    p.still.resize(count);
+    Compiler compiler(p);
+    std::uint32_t primitives = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        const SceneObject& object = scene.objects[i];
+        p.kinds[i] = object.kind;
+        p.sizes[i] = object.size;
+        p.firstPrimitive[i] = primitives;
+        primitives += std::uint32_t(primitiveCountOf(object.kind));
+        if (object.attachedTo) {
+            p.rootSource[i] = kAttached;
+        } else if (const std::uint32_t track = compiler.animatedTrack(object.track)) {
+            p.rootSource[i] = track;
+        } else {
+            // As objectFrame computes it from the rest pose or the one key.
+            const Pose pose = object.track.keys.empty() ? object.rest : object.track.keys.front().pose;
+            p.rootSource[i] = kConstantRoot;
+            p.constantRoots[i] = Transform::fromPose(pose.position, pose.rotation);
+        }
+        bool still = p.rootSource[i] == kConstantRoot;
+        if (isModel(object.kind)) {
+            for (int part = 0; part < kPartCount; ++part) {
+                const Track& track = object.partTracks[std::size_t(part)];
+                const std::uint32_t animated = compiler.animatedTrack(track);
+                p.partSource[i][std::size_t(part)] = animated ? animated : compiler.constantMotion(track);
+                still = still && !animated;
+            }
+        }
+        p.still[i] = still;
+        p.firstSurface[i] = compiler.surfaces(object);
+    }
+    p.firstPrimitive[count] = primitives;
+    return program;
+}
+
+void AnimationProgram::segmentsAt(double t, std::vector<TrackSegment>& segments) const {
+    segments.resize(layouts.size());
+    for (std::size_t l = 0; l < layouts.size(); ++l) {
+        const int* keyFrames = &frames[layouts[l].first];
+        const Interpolation* keyModes = &modes[layouts[l].first];
+        segments[l] = segmentAt(
+            layouts[l].count, [keyFrames](std::uint32_t i) { return keyFrames[i]; },
+            [keyModes](std::uint32_t i) { return keyModes[i]; }, t);
+    }
+}
+
+void AnimationProgram::evaluateObjects(std::size_t begin, std::size_t end, const TrackSegment* segments,
+                                       bool refill, EvaluatedFrame& frame) const {
+    for (std::size_t i = begin; i < end; ++i) {
+        if (refill && still[i]) continue;
+        // The object's root frame.
+        const std::uint32_t root = rootSource[i];
+        Transform worldFromRoot;
+        if (root == kConstantRoot) {
+            worldFromRoot = constantRoots[i];
+        } else if (root == kAttached) {
+            worldFromRoot = frame.attachedRoots[i];
+        } else {
+            const Pose pose = trackPose(root & ~kAnimated, segments);
+            worldFromRoot = Transform::fromPose(pose.position, pose.rotation);
+        }
+
+        const std::uint32_t first = firstPrimitive[i];
+        Primitive* prims = &frame.primitives[first];
+        const Surface* look = &surfaces[firstSurface[i]];
+        const ObjectKind kind = kinds[i];
+        if (!isModel(kind)) {
+            *prims = makePrimitive(shapeKindOf(kind), sizes[i], worldFromRoot);
+            if (!refill) frame.surfaces[first] = *look;
+            continue;
+        }
+
+        // Part frames, parents first (SPEC 5).
+        const ModelDef& model = modelOf(kind);
+        std::array<Transform, kPartCount> worldFromPart;
+        for (const ModelPart& part : model.parts) {
+            const int index = int(part.id);
+            const Transform& worldFromParent = part.parent < 0 ? worldFromRoot : worldFromPart[part.parent];
+            const std::uint32_t source = partSource[i][std::size_t(index)];
+            if (source & kAnimated) {
+                const Pose motion = trackPose(source & ~kAnimated, segments);
+                worldFromPart[index] =
+                    childFrame(worldFromParent, part.pivot + motion.position, motion.rotation);
+            } else {
+                const ConstantMotion& motion = constantMotions[source];
+                worldFromPart[index] = childFrame(worldFromParent, part.pivot + motion.offset,
+                                                  motion.rotated ? &motion.rotation : nullptr);
+            }
+        }
+        for (const ModelShape& shape : model.shapes)
+            *prims++ = makePrimitive(shape.kind, shape.size,
+                                     worldFromPart[int(shape.part)].translated(shape.centre));
+        if (!refill) std::memcpy(&frame.surfaces[first], look, model.shapes.size() * sizeof(Surface));
+    }
+}
+
+std::shared_ptr<const AnimationProgram> animationProgramOf(const SceneDesc& scene) {
+    std::shared_ptr<const AnimationProgram> program = scene.animation.get();
+    // A scene given objects after its first evaluation is compiled again
+    // (changing existing ones is not allowed: SceneDesc::animation).
+    if (!program || program->kinds.size() != scene.objects.size()) {
+        program = AnimationProgram::compile(scene);
+        scene.animation.set(program);
+    }
+    return program;
+}
+
+}  // namespace f2

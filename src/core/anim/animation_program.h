@@ -1,0 +1,117 @@
+#pragma once
+/// A scene's animation compiled for evaluation, once per scene (on its first
+/// evaluation, then kept with it): what evaluating a frame reads, laid out
+/// for that and nothing else.
+///
+/// The parser's SceneDesc is written for the language: one 300-byte
+/// SceneObject per object, each track's keys in a heap block of its own.
+/// Evaluation is bound by memory, so the program keeps
+/// - the keys' poses of every animated track in one array, in scene order, so
+///   that a frame streams through them;
+/// - each distinct sequence of key frames and segment modes once (a key
+///   layout): where a time falls among the keys is found once per layout and
+///   frame (a grid of robots keyed alike has two layouts, whatever its size);
+/// - what does not move as constants: a root frame without keys (or with one)
+///   as its transform, a part without keys (or with one) as its rotation
+///   matrix, every surface (identical surfaces stored once).
+/// Results are those of evaluateTrack, modelPartFrames and makePrimitive,
+/// bit for bit (tests/unit/animation_program_test.cpp).
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "core/anim/evaluated_frame.h"
+#include "core/anim/track.h"
+#include "core/math/transform.h"
+#include "core/scene/scene_desc.h"
+
+namespace f2 {
+
+struct AnimationProgram {
+    /// A track with two keys or more: its key layout and its first pose in `poses`.
+    struct AnimatedTrack {
+        std::uint32_t layout;
+        std::uint32_t firstPose;
+    };
+    /// Keys `[first, first + count)` of `frames` and `modes`.
+    struct KeyLayout {
+        std::uint32_t first;
+        std::uint32_t count;
+    };
+    /// A part's constant motion (no keys: rest, or one key): offset and rotation.
+    struct ConstantMotion {
+        Vec3 offset;
+        Mat3 rotation;
+        bool rotated = false;  ///< rotation angles not all zero (else no matrix product)
+    };
+
+    /// Where a root or a part gets its pose: `kAnimated | track index` or a
+    /// constant (for a part: an index in `constantMotions`).
+    static constexpr std::uint32_t kAnimated = 0x8000'0000u;
+    /// A root frame taken from `EvaluatedFrame::attachedRoots` (SPEC 9.2).
+    static constexpr std::uint32_t kAttached = 0x7fff'ffffu;
+    /// A root frame that does not move: `constantRoots[object]`.
+    static constexpr std::uint32_t kConstantRoot = 0;
+
+    // Per object, in scene order.
+    std::vector<ObjectKind> kinds;
+    std::vector<Vec3> sizes;                ///< as SceneObject::size
+    std::vector<std::uint32_t> rootSource;  ///< kAnimated | track, kConstantRoot, kAttached
+    std::vector<Transform> constantRoots;   ///< the root frame when kConstantRoot
+    std::vector<std::array<std::uint32_t, kPartCount>>
+        partSource;                             ///< models: kAnimated | track, or a constant
+    std::vector<std::uint32_t> firstSurface;    ///< the object's surfaces in `surfaces`, one per primitive
+    std::vector<std::uint32_t> firstPrimitive;  ///< as EvaluatedFrame::firstPrimitive (objects + 1)
+    std::vector<std::uint8_t> still;            ///< 1: neither the object nor a part of it ever moves
+
+    // Shared tables.
+    std::vector<AnimatedTrack> tracks;
+    std::vector<Pose> poses;  ///< keys' poses, track after track in scene order
+    std::vector<KeyLayout> layouts;
+    std::vector<int> frames;           ///< key frames of the layouts
+    std::vector<Interpolation> modes;  ///< mode from each key to the next, of the layouts
+    std::vector<ConstantMotion> constantMotions;
+    std::vector<Surface> surfaces;
+
+    /// Compiles `scene` (its objects; the camera and lights are read per frame).
+    static std::shared_ptr<const AnimationProgram> compile(const SceneDesc& scene);
+
+    /// Where time t falls in every layout, into `segments` (one per layout).
+    void segmentsAt(double t, std::vector<TrackSegment>& segments) const;
+
+    /// Pose of animated track `track` with the layouts' `segments` of this frame.
+    Pose trackPose(std::uint32_t track, const TrackSegment* segments) const {
+        const AnimatedTrack& at = tracks[track];
+        const Pose* keys = &poses[at.firstPose];
+        return poseInSegment(segments[at.layout], [keys](std::uint32_t i) -> const Pose& { return keys[i]; });
+    }
+
+    /// Writes the primitives and surfaces of objects [begin, end) into `frame`
+    /// (sized by the caller), with this frame's `segments` and, for attached
+    /// objects, `frame.attachedRoots`. `refill`: the frame already holds this
+    /// program's surfaces and still objects (EvaluatedFrame::filledBy), which
+    /// are then not written again.
+    void evaluateObjects(std::size_t begin, std::size_t end, const TrackSegment* segments, bool refill,
+                         EvaluatedFrame& frame) const;
+};
+
+/// `worldFromParent · translate(origin) · rotate(rotation)` (SPEC 5); no
+/// rotation (null) makes no matrix product.
+inline Transform childFrame(const Transform& worldFromParent, Vec3 origin, const Mat3* rotation) {
+    return rotation ? worldFromParent * Transform{*rotation, origin} : worldFromParent.translated(origin);
+}
+
+/// The same with the rotation's angles (degrees): zero angles, as most parts
+/// have in most frames, make no matrix.
+inline Transform childFrame(const Transform& worldFromParent, Vec3 origin, Vec3 rotationDegrees) {
+    if (rotationDegrees == Vec3{}) return worldFromParent.translated(origin);
+    const Mat3 rotation = rotationFromEulerDegrees(rotationDegrees);
+    return childFrame(worldFromParent, origin, &rotation);
+}
+
+/// The program of `scene`: compiled on the first call and kept with the scene
+/// (SceneDesc::animation) for the next ones; thread-safe.
+std::shared_ptr<const AnimationProgram> animationProgramOf(const SceneDesc& scene);
+
+}  // namespace f2
