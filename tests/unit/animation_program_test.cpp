@@ -42,9 +42,10 @@ EvaluatedFrame referenceFrame(const SceneDesc& scene, double t) {
             const Transform& part = worldFromPart[int(shape.part)];
             frame.primitives.push_back(makePrimitive(shape.kind, shape.size, part.translated(shape.centre)));
             const Appearance& look = object.appearance[int(shape.part)];
-            frame.surfaces.push_back(shape.ownColor ? Surface{unitColor(shape.color), look.material, Vec3{}, 0.0f}
-                                                    : Surface{unitColor(look.color), look.material,
-                                                              unitColor(look.checker.color), look.checker.size});
+            frame.surfaces.push_back(shape.ownColor
+                                         ? Surface{unitColor(shape.color), look.material, Vec3{}, 0.0f}
+                                         : Surface{unitColor(look.color), look.material,
+                                                   unitColor(look.checker.color), look.checker.size});
         }
     }
     return frame;
@@ -66,7 +67,8 @@ void expectSameFrame(const EvaluatedFrame& reference, const EvaluatedFrame& fram
         const Surface &s = reference.surfaces[i], &r = frame.surfaces[i];
         ASSERT_TRUE(sameBits(s.color, r.color) && sameBits(s.material.ka, r.material.ka) &&
                     sameBits(s.material.kd, r.material.kd) && sameBits(s.material.ks, r.material.ks) &&
-                    sameBits(s.material.n, r.material.n) && sameBits(s.material.reflection, r.material.reflection) &&
+                    sameBits(s.material.n, r.material.n) &&
+                    sameBits(s.material.reflection, r.material.reflection) &&
                     sameBits(s.checkerColor, r.checkerColor) && sameBits(s.checkerSize, r.checkerSize))
             << what << ": surface " << i;
     }
