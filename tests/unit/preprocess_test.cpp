@@ -107,6 +107,13 @@ TEST(Expressions, ErrorsPointIntoTheExpression) {
     expectError("/sphere s (1 - 2) 0 0 0\n", 1, 11, "radius must be > 0, got -1");
 }
 
+TEST(Expressions, AnUnknownCommandIsOneErrorNotOnePerArgument) {
+    // Its arguments are not evaluated: nothing would use their values.
+    expectError("/sphre s (1/0) 0 0 0\n", 1, 1, "unknown command '/sphre' (did you mean '/sphere'?)");
+    expectError("/frob a{z} (y)\n", 1, 1, "unknown command '/frob'");
+    expectError("State: R (running)\n", 1, 1, "expected a command starting with '/', got 'State:'");
+}
+
 TEST(Expressions, IntegerFieldsTakeValuesWithinOneMillionth) {
     EXPECT_EQ(parseOk("/fps (24.0000004)\n").fps, 24);
     EXPECT_EQ(parseOk("/fps (100 / 3 * 3)\n").fps, 100);

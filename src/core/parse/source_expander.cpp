@@ -280,7 +280,7 @@ bool SourceExpander::next(LogicalLine& out) {
         } else if (command == "/include") {
             runInclude(line.text, out);
         } else {
-            evaluateTokens(out, 1);
+            if (sink_.knowsCommand(command)) evaluateTokens(out, 1);
             return true;
         }
     }
