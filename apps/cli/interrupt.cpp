@@ -6,11 +6,13 @@ namespace f2::cli {
 
 namespace {
 std::atomic<bool> gInterrupted{false};
-volatile sig_atomic_t gSignal = 0;
-static_assert(std::atomic<bool>::is_always_lock_free, "set from a signal handler");
+std::atomic<int> gSignal{0};
+static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<int>::is_always_lock_free,
+              "set from a signal handler");
 
 extern "C" void onInterrupt(int signal) {
-    gSignal = signal;
+    int none = 0;
+    gSignal.compare_exchange_strong(none, signal);  // the first one decides the exit code
     gInterrupted.store(true);
 }
 }  // namespace
@@ -22,9 +24,14 @@ void installInterruptHandlers() {
     action.sa_flags = 0;  // no SA_RESTART: a blocked write returns and the loop sees the flag
     sigaction(SIGINT, &action, nullptr);
     sigaction(SIGTERM, &action, nullptr);
+    // A closed terminal or ssh session: the same clean stop, unless the user
+    // asked to ignore it (`nohup f2 render ...` must go on rendering).
+    struct sigaction hangup {};
+    if (sigaction(SIGHUP, nullptr, &hangup) == 0 && hangup.sa_handler != SIG_IGN)
+        sigaction(SIGHUP, &action, nullptr);
 }
 
 const std::atomic<bool>& interruptFlag() { return gInterrupted; }
-int interruptSignal() { return int(gSignal); }
+int interruptSignal() { return gSignal.load(); }
 
 }  // namespace f2::cli

@@ -1,5 +1,6 @@
 #pragma once
-/// Ctrl+C and `kill`: SIGINT and SIGTERM raise a flag that long renders poll,
+/// Ctrl+C, `kill` and a closed terminal: SIGINT, SIGTERM and SIGHUP (unless
+/// ignored, as under nohup) raise a flag that long renders poll,
 /// so they stop between (or inside) frames and clean up their files instead
 /// of dying with a half-written one.
 #include <atomic>
@@ -8,9 +9,9 @@ namespace f2::cli {
 
 /// Installs the handlers (idempotent).
 void installInterruptHandlers();
-/// Raised by the first SIGINT/SIGTERM; handed to Renderer::render as `cancel`.
+/// Raised by the first SIGINT/SIGTERM/SIGHUP; handed to Renderer::render as `cancel`.
 const std::atomic<bool>& interruptFlag();
-/// The signal that raised the flag (0 if none); the exit code is 128 + it.
+/// The first signal that raised the flag (0 if none); the exit code is 128 + it.
 int interruptSignal();
 
 }  // namespace f2::cli
