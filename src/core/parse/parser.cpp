@@ -939,8 +939,8 @@ class Parser : private ExpansionSink {
                                      [](const LocalLight& l) { return l.intensity > 0; });
         if (!lit) {
             warning(books_.front().defined,
-                    "the scene has no light (no '/amb_light' or '/dir_light' with an intensity > 0): "
-                    "every object renders black");
+                    "the scene has no light (no '/amb_light', '/dir_light', '/point_light' or "
+                    "'/spot_light' with an intensity > 0): every object renders black");
         }
     }
 
