@@ -234,15 +234,19 @@ TEST(Repeat, EndTakesNoArguments) {
     EXPECT_EQ(r.diagnostics[1].format(), "t.f2:2:6: error: '/end' takes no arguments (in /repeat i = 2)");
 }
 
+/// `text` gives exactly the one diagnostic `message`, before its loops ran.
+void expectRefusedAtOnce(std::string_view text, std::string_view message) {
+    const ParseResult r = parseScene(text, kFile);
+    ASSERT_EQ(r.diagnostics.size(), 1u) << dump(r);
+    EXPECT_EQ(r.diagnostics[0].format(), message);
+    EXPECT_LT(r.linesRead, 10u);
+}
+
 TEST(Repeat, AHugeLoopFailsBeforeItRuns) {
     // 1e12 passes of one line each: refused at once, nothing is run.
-    ParseResult r = parseScene("/repeat i 0 1e12\n/sphere s{i} 1 0 0 0\n/end\n", kFile);
-    ASSERT_EQ(r.diagnostics.size(), 1u) << dump(r);
-    EXPECT_EQ(
-        r.diagnostics[0].format(),
-        "t.f2:1:1: error: this loop would read at least 2000000000002 lines (1000000000001 passes) after 1, "
-        "more than the limit of 10000000 lines read in all");
-    EXPECT_LT(r.linesRead, 10u);
+    expectRefusedAtOnce("/repeat i 0 1e12\n/sphere s{i} 1 0 0 0\n/end\n",
+                        "t.f2:1:1: error: this loop would read at least 2000000000002 lines (1000000000001 "
+                        "passes) after 1, more than the limit of 10000000 lines read in all");
     // An empty body still costs its /end per pass.
     expectError("/repeat i 0 1e12\n/end\n", 1, 1, "this loop would read at least 1000000000001 lines");
     // Nested, the inner loop's bounds numbers: the outer loop counts its
@@ -267,13 +271,10 @@ TEST(Repeat, AHugeLoopFailsBeforeItRuns) {
 TEST(Repeat, InnerLoopsWithNumbersForBoundsAreForeseen) {
     // 5,000 x 5,000 passes of a comment: refused before the first line is read,
     // not after ten million of them.
-    ParseResult r = parseScene("/repeat a 1 5000\n/repeat b 1 5000\n#\n/end\n/end\n", kFile);
-    ASSERT_EQ(r.diagnostics.size(), 1u) << dump(r);
-    EXPECT_EQ(
-        r.diagnostics[0].format(),
-        "t.f2:1:1: error: this loop would read at least 50010000 lines (5000 passes) after 1, more than "
-        "the limit of 10000000 lines read in all");
-    EXPECT_LT(r.linesRead, 10u);
+    expectRefusedAtOnce(
+        "/repeat a 1 5000\n/repeat b 1 5000\n#\n/end\n/end\n",
+        "t.f2:1:1: error: this loop would read at least 50010000 lines (5000 passes) after 1, "
+        "more than the limit of 10000000 lines read in all");
     // Three deep: each level multiplies.
     expectError("/repeat a 1 300\n/repeat b 1 300\n/repeat c 1 300\n/end\n/end\n/end\n", 1, 1,
                 "at least 27180600 lines (300 passes)");
