@@ -5,10 +5,10 @@
 
 #include "commands.h"
 #include "io/atomic_file.h"
+#include "io/output_target.h"
 #include "io/pov_export.h"
 #include "io/prims_export.h"
 #include "options.h"
-#include "output_kind.h"
 #include "scene_source.h"
 
 namespace f2::cli {
@@ -28,7 +28,7 @@ bool writeOutput(const std::string& text, const std::string& path, std::string& 
         if (!std::cout) error = "cannot write to standard output";
         return bool(std::cout);
     }
-    if (!createParentDirectory(path, error)) return false;
+    if (!createDirectoryOf(path, error)) return false;
     AtomicFile file(path);  // never a half-written scene, even on Ctrl+C
     if (!file.ok()) {
         error = file.error();

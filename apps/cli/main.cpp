@@ -24,19 +24,19 @@ int main(int argc, char** argv) {
         std::cerr << app.help();
         return f2::cli::kUsageError;
     }
-    // CLI11 would only say "a subcommand is required"; name the unknown word.
-    if (argc > 1 && argv[1][0] != '-') {
-        bool known = false;
-        std::string names;
-        for (const auto& command : commands) {
-            known = known || command.app->get_name() == argv[1];
-            names += (names.empty() ? "" : ", ") + command.app->get_name();
-        }
-        if (!known) {
-            return f2::cli::usageError(
-                "", "unknown command '" + std::string(argv[1]) + "' (expected " + names + ")");
-        }
+    // CLI11 would only say "a subcommand is required"; name the unknown option or word.
+    std::string names;
+    bool known = false;
+    for (const auto& command : commands) {
+        known = known || command.app->get_name() == argv[1];
+        names += (names.empty() ? "" : ", ") + command.app->get_name();
     }
+    const std::string first = argv[1];
+    if (first.rfind('-', 0) == 0 && first != "-h" && first != "--help" && first != "--version")
+        return f2::cli::usageError(
+            "", "unknown option '" + first + "'; a command comes first (" + names + "), then its options");
+    if (first.rfind('-', 0) != 0 && !known)
+        return f2::cli::usageError("", "unknown command '" + first + "' (expected " + names + ")");
     try {
         app.parse(argc, argv);
     } catch (const CLI::Success& e) {

@@ -215,12 +215,16 @@ TEST(DidYouMean, Parts) {
 
 TEST(SceneWarnings, NoLightMeansEveryObjectIsBlack) {
     const Lines black{
-        "1:9: warning: the scene has no light (no '/amb_light' or '/dir_light' with an intensity > 0): every "
-        "object renders black"};
+        "1:9: warning: the scene has no light (no '/amb_light', '/dir_light', '/point_light' or "
+        "'/spot_light' with an intensity > 0): every object renders black"};
     EXPECT_EQ(messages("/sphere s 1 0 0 5\n/sphere t 1 0 0 9\n"), black);
     EXPECT_EQ(messages("/sphere s 1 0 0 5\n/amb_light 0\n/dir_light 0 0 0 1\n"), black);
     EXPECT_EQ(messages("/sphere s 1 0 0 5\n/amb_light 0.1\n"), Lines{});
     EXPECT_EQ(messages("/sphere s 1 0 0 5\n/dir_light 1 0 0 1\n"), Lines{});
+    // Point and spot lights light a scene too; at intensity 0 they do not.
+    EXPECT_EQ(messages("/sphere s 1 0 0 5\n/point_light 0.5 0 9 0\n"), Lines{});
+    EXPECT_EQ(messages("/sphere s 1 0 0 5\n/spot_light 0.8 0 9 0 0 -1 0 20 30\n"), Lines{});
+    EXPECT_EQ(messages("/sphere s 1 0 0 5\n/point_light 0 0 9 0\n/spot_light 0 0 9 0 0 -1 0 20 30\n"), black);
     // The scene is still used.
     EXPECT_TRUE(parseScene("/sphere s 1 0 0 5\n", kFile).ok());
 }
