@@ -197,6 +197,17 @@ TEST(DidYouMean, NamesDifferingInCaseOrByATypo) {
                "5:8: error: unknown name 'q'"}));
 }
 
+TEST(DidYouMean, TheCameraWhereTheCommandTakesIt) {
+    EXPECT_EQ(messages("/sphere s 1 0 0 5\n/amb_light 1\n/key 0 Camera\n/interp camra ease\n/attach Camera s\n"),
+              (Lines{"3:8: error: unknown name 'Camera' (did you mean 'camera'?)",
+                     "4:9: error: unknown name 'camra' (did you mean 'camera'?)",
+                     "5:9: error: unknown name 'Camera' (did you mean 'camera'?)"}));
+    // /paint does not take the camera: no such hint; an object's name still wins a tie.
+    EXPECT_EQ(messages("/sphere camera1 1 0 0 5\n/amb_light 1\n/paint Camera 1 1 1\n/key 0 camera2\n"),
+              (Lines{"3:8: error: unknown name 'Camera' (did you mean 'camera1'?)",
+                     "4:8: error: unknown name 'camera2' (did you mean 'camera1'?)"}));
+}
+
 TEST(DidYouMean, Parts) {
     const std::string robot = "/robot r1 0 0 0\n";
     EXPECT_EQ(messages(robot + "/key 0 r1.Head\n"),
