@@ -54,8 +54,11 @@ layer_of_include() {
 # C++ sources under the given folders, sorted.
 sources() { find "$@" -type f \( -name '*.h' -o -name '*.cpp' \) | sort; }
 
-# Quoted includes of a file, one per line.
-includes_of() { sed -n 's/^[[:space:]]*#[[:space:]]*include[[:space:]]*"\([^"]*\)".*/\1/p' "$1"; }
+# Includes of a file, one per line: quoted ones, and project headers in <>.
+includes_of() {
+  sed -n -e 's/^[[:space:]]*#[[:space:]]*include[[:space:]]*"\([^"]*\)".*/\1/p' \
+    -e 's/^[[:space:]]*#[[:space:]]*include[[:space:]]*<\(\(core\|io\|lsp\)\/[^>]*\)>.*/\1/p' "$1"
+}
 
 # 1. Layers: no include up or sideways; the folder graph has no cycle.
 edges=$(mktemp)
@@ -68,6 +71,10 @@ while IFS= read -r file; do
     continue
   fi
   while IFS= read -r inc; do
+    if [[ "$inc" == *../* ]]; then
+      fail "$file: includes \"$inc\": name project headers from src/ (\"core/x/y.h\"), not by a relative path"
+      continue
+    fi
     to=$(layer_of_include "$inc")
     [[ -n "$to" && "$to" != "$from" ]] || continue
     if [[ -z "${rank[$to]+set}" ]]; then

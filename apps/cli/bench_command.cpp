@@ -128,7 +128,8 @@ Command addBenchCommand(CLI::App& app) {
         "Measure frames per second of whole frames (evaluate + build + trace), or run the FPS study");
     sub->footer(kFooter);
     auto* file = sub->add_option("scene", args->scene,
-                                 "Scene file; '-' reads standard input; none = the default scene");
+                                 "Scene file; '-' reads standard input; none = the default scene")
+                     ->check(nonEmptyPath("measure the default scene"));
     auto* generated = sub->add_option("--scene", args->generated,
                                       "Generated scene robots:N or spheres:N instead of a file");
     file->excludes(generated);

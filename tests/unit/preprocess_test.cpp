@@ -107,6 +107,13 @@ TEST(Expressions, ErrorsPointIntoTheExpression) {
     expectError("/sphere s (1 - 2) 0 0 0\n", 1, 11, "radius must be > 0, got -1");
 }
 
+TEST(Expressions, AnUnknownCommandIsOneErrorNotOnePerArgument) {
+    // Its arguments are not evaluated: nothing would use their values.
+    expectError("/sphre s (1/0) 0 0 0\n", 1, 1, "unknown command '/sphre' (did you mean '/sphere'?)");
+    expectError("/frob a{z} (y)\n", 1, 1, "unknown command '/frob'");
+    expectError("State: R (running)\n", 1, 1, "expected a command starting with '/', got 'State:'");
+}
+
 TEST(Expressions, IntegerFieldsTakeValuesWithinOneMillionth) {
     EXPECT_EQ(parseOk("/fps (24.0000004)\n").fps, 24);
     EXPECT_EQ(parseOk("/fps (100 / 3 * 3)\n").fps, 100);
@@ -251,6 +258,18 @@ TEST(Repeat, AHugeLoopFailsBeforeItRuns) {
             l.maxExpandedLines = 10;
             return l;
         }());
+}
+
+TEST(Repeat, AStepTooSmallToMoveTheValueIsCountedAtOnce) {
+    // 1e16 + k * 1e-10 stays 1e16 for about 10^10 passes: counted, not walked.
+    expectError("/repeat i 1e16 1e16 1e-10\n/end\n", 1, 1,
+                "this loop would read at least 10000000001 lines (10000000001 passes)");
+    // Here it never moves: the count stops at 2^53, far beyond any limit.
+    expectError("/repeat i -1e30 -1e30 -1e-5\n/end\n", 1, 1,
+                "this loop would read at least 9007199254740992");
+    // Rounding near the end of an ordinary loop still gives the exact count.
+    EXPECT_EQ(parseOk("/repeat x 1 0 -0.1\n/sphere s{round(x*10)} 1 0 0 0\n/end\n").objects.size(), 11u);
+    EXPECT_EQ(parseOk("/repeat x 0 0.3 0.1\n/sphere s{round(x*10)} 1 0 0 0\n/end\n").objects.size(), 3u);
 }
 
 TEST(Repeat, TheLineLimitCountsEveryPass) {

@@ -222,6 +222,10 @@ class Parser : private ExpansionSink {
     void expansionError(Pos pos, std::string message) override {
         report(Severity::Error, pos, message + expander_.loopNote(), false);
     }
+    bool knowsCommand(std::string_view command) const override {
+        return std::any_of(kCommands.begin(), kCommands.end(),
+                           [command](const CommandName& c) { return c.name == command; });
+    }
 
     /// "3:5", or "FILE:3:5" when `p` is in another file than the current line.
     std::string posText(Pos p) const {

@@ -42,14 +42,31 @@ std::string_view firstWord(std::string_view line) {
 /// from + k·step has not passed `to`. Exact for any count a scene can run;
 /// beyond 2^53 only its size matters (it breaks the line limit).
 double loopPasses(double from, double to, double step) {
-    auto within = [&](double v) { return step > 0 ? v <= to : v >= to; };
-    if (!within(from)) return 0;
+    // from + k·step, rounded as the loop computes it, never moves back as k
+    // grows, so "within" holds for k = 0 … n−1 and fails from n on, and n is
+    // found by search in at most ~110 steps. (Walking k one by one near the
+    // estimate hung on `/repeat i 1e16 1e16 1e-10`, where adding the step
+    // changes nothing for 10^10 passes.)
+    auto within = [&](double k) {
+        const double v = from + k * step;
+        return step > 0 ? v <= to : v >= to;
+    };
+    if (!within(0)) return 0;
+    constexpr double kExactCounts = 9e15;  // below 2^53: every whole k is a double
     const double span = std::floor((to - from) / step);
-    if (!(span < 9e15)) return span + 1;
-    double n = span + 1;
-    while (n > 0 && !within(from + (n - 1) * step)) --n;
-    while (within(from + n * step)) ++n;
-    return n;
+    if (!(span < kExactCounts)) return span + 1;
+    double inside = 0;                         // within(inside) holds
+    double outside = std::max(span, 0.0) + 1;  // first guess of n
+    for (double gap = 1; within(outside); gap *= 2) {
+        inside = outside;
+        outside += gap;
+        if (outside >= kExactCounts) return outside;
+    }
+    while (outside - inside > 1) {
+        const double middle = std::floor(inside + (outside - inside) / 2);
+        (within(middle) ? inside : outside) = middle;
+    }
+    return outside;
 }
 
 /// A whole number in decimal digits, never in exponent form ("r{1e3}" is r1000).
@@ -263,7 +280,7 @@ bool SourceExpander::next(LogicalLine& out) {
         } else if (command == "/include") {
             runInclude(line.text, out);
         } else {
-            evaluateTokens(out, 1);
+            if (sink_.knowsCommand(command)) evaluateTokens(out, 1);
             return true;
         }
     }
