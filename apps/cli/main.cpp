@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstring>
 #include <iostream>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -64,7 +65,10 @@ int main(int argc, char** argv) {
         // for every usage error; its message names the option.
         std::string command;
         for (const CLI::App* sub : app.get_subcommands()) command = sub->get_name();
-        return f2::cli::usageError(command, e.what());
+        // "--aa: 1 required INT missing" is CLI11's jargon for an option given without its value.
+        static const std::regex kMissingValue(R"(^(\S+): [0-9]+ required \S+ missing$)");
+        return f2::cli::usageError(command,
+                                   std::regex_replace(e.what(), kMissingValue, "$1: the value is missing"));
     }
     for (const auto& command : commands)
         if (command.app->parsed()) return checkedStandardOutput(command.app->get_name(), command.run());
