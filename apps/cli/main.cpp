@@ -1,11 +1,30 @@
 // f2 — the command-line front door. Argument parsing only; the work is in f2::core.
 #include <CLI/CLI.hpp>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <iostream>
+#include <regex>
 #include <string>
 #include <vector>
 
 #include "commands.h"
 #include "options.h"
+
+namespace {
+/// A command that did its work but whose standard output was lost (`f2 info >
+/// /dev/full`, a full disk) has failed: exit 1 with the reason, as coreutils
+/// do, instead of 0 without the output it promised.
+int checkedStandardOutput(const std::string& command, int status) {
+    errno = 0;
+    const bool lost = std::fflush(stdout) != 0 || std::ferror(stdout) || !std::cout.good();
+    if (!lost || status != 0) return status;
+    const int cause = errno;
+    std::cerr << "f2 " << command << ": cannot write to standard output"
+              << (cause != 0 ? std::string(": ") + std::strerror(cause) : std::string()) << '\n';
+    return 1;
+}
+}  // namespace
 
 int main(int argc, char** argv) {
     CLI::App app{
@@ -46,9 +65,12 @@ int main(int argc, char** argv) {
         // for every usage error; its message names the option.
         std::string command;
         for (const CLI::App* sub : app.get_subcommands()) command = sub->get_name();
-        return f2::cli::usageError(command, e.what());
+        // "--aa: 1 required INT missing" is CLI11's jargon for an option given without its value.
+        static const std::regex kMissingValue(R"(^(\S+): [0-9]+ required \S+ missing$)");
+        return f2::cli::usageError(command,
+                                   std::regex_replace(e.what(), kMissingValue, "$1: the value is missing"));
     }
     for (const auto& command : commands)
-        if (command.app->parsed()) return command.run();
+        if (command.app->parsed()) return checkedStandardOutput(command.app->get_name(), command.run());
     return 1;
 }

@@ -60,8 +60,12 @@ int interruptedExit() { return 128 + (interruptSignal() ? interruptSignal() : 2)
 
 std::string describe(const AnimationJob& job) {
     std::ostringstream s;
-    s << job.loaded->name << " frames " << job.range.first << "-" << job.range.lastRendered();
-    if (job.range.step > 1) s << " every " << job.range.step;
+    if (job.range.first == job.range.lastRendered()) {
+        s << job.loaded->name << " frame " << job.range.first;  // not "frames 5-5 every 10"
+    } else {
+        s << job.loaded->name << " frames " << job.range.first << "-" << job.range.lastRendered();
+        if (job.range.step > 1) s << " every " << job.range.step;
+    }
     if (job.range.shardCount > 1) s << " shard " << job.range.shardIndex << "/" << job.range.shardCount;
     s << " (" << job.view.width << "x" << job.view.height << ", " << job.range.outputFps << " fps, aa "
       << job.antialias;
@@ -300,8 +304,8 @@ Command addRenderCommand(CLI::App& app) {
             ->check(finiteNumberIn(0.0, 1e7, "a frame time"));
     sub->add_option("--frames", args->frames,
                     "Frames of a sequence or video: FIRST-LAST, FIRST or FIRST- (default: 0 to the last key "
-                    "frame), then optionally :STEP for every STEP-th frame (0-239:4); numbered at the output "
-                    "--fps")
+                    "frame), then optionally :STEP for every STEP-th frame of a sequence (0-239:4); numbered "
+                    "at the output --fps")
         ->excludes(sub->get_option("--frame"));
     sub->add_option("-o,--output", args->output,
                     "Output: .png, '-' (PNG to standard output), numbered PNG pattern, .mp4, .webm or .gif "

@@ -53,6 +53,11 @@ TEST(CreatingCommandErrors, EveryKindOfErrorStillRegistersTheName) {
     // Bad numbers, bad sizes.
     EXPECT_EQ(messages("/sphere s -1 0 x 0\n/paint s 1 1 1\n"),
               (Lines{"1:11: error: radius must be > 0, got -1", "1:16: error: expected a number, got 'x'"}));
+    // Errors in expressions (second edition) and non-finite numbers.
+    EXPECT_EQ(messages("/robot Q 0 0 (1/0)\n/key 0 Q.head\n/sphere b (n) 0 0 0\n/paint b 1 1 1\n"
+                       "/box c 1 1 1 0 0 0 1 nan 0\n/paint c 1 1 1\n"),
+              (Lines{"1:16: error: division by zero", "3:12: error: unknown variable 'n'",
+                     "5:22: error: expected a finite number, got 'nan'"}));
     // Beyond the object limit.
     ParseLimits one;
     one.maxObjects = 1;
@@ -195,6 +200,18 @@ TEST(DidYouMean, NamesDifferingInCaseOrByATypo) {
             "/sphere ball 1 0 0 0\n/sphere s 1 0 0 0\n/paint xyz 1 1 1\n/paint r1 1 1 1\n/paint q 1 1 1\n"),
         (Lines{"3:8: error: unknown name 'xyz'", "4:8: error: unknown name 'r1'",
                "5:8: error: unknown name 'q'"}));
+}
+
+TEST(DidYouMean, TheCameraWhereTheCommandTakesIt) {
+    EXPECT_EQ(
+        messages("/sphere s 1 0 0 5\n/amb_light 1\n/key 0 Camera\n/interp camra ease\n/attach Camera s\n"),
+        (Lines{"3:8: error: unknown name 'Camera' (did you mean 'camera'?)",
+               "4:9: error: unknown name 'camra' (did you mean 'camera'?)",
+               "5:9: error: unknown name 'Camera' (did you mean 'camera'?)"}));
+    // /paint does not take the camera: no such hint; an object's name still wins a tie.
+    EXPECT_EQ(messages("/sphere camera1 1 0 0 5\n/amb_light 1\n/paint Camera 1 1 1\n/key 0 camera2\n"),
+              (Lines{"3:8: error: unknown name 'Camera' (did you mean 'camera1'?)",
+                     "4:8: error: unknown name 'camera2' (did you mean 'camera1'?)"}));
 }
 
 TEST(DidYouMean, Parts) {
