@@ -290,6 +290,9 @@ TEST(SceneWarnings, ASecondInterpForTheSameTarget) {
     EXPECT_EQ(r.scene->objects[0].track.interpolation, Interpolation::Linear);  // the last one wins
     EXPECT_EQ(r.scene->objects[0].partTracks[static_cast<std::size_t>(PartId::LHand)].interpolation,
               Interpolation::Spline);
+    // The camera is a target like any other.
+    EXPECT_EQ(messages("/sphere s 1 0 0 5\n/amb_light 1\n/interp camera ease\n/interp camera spline\n"),
+              (Lines{"4:9: warning: interpolation of 'camera' is given again; it replaces the one at 3:9"}));
     // A broken /interp does not count as the first.
     EXPECT_EQ(messages("/robot r1 0 0 0\n/amb_light 1\n/interp r1 cubic\n/interp r1 ease\n"),
               (Lines{"3:12: error: unknown interpolation 'cubic' (expected linear, ease, ease_in, ease_out, "
