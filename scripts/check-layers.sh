@@ -4,7 +4,8 @@
 #     folder, never up and never sideways, so the folders form no cycle;
 #  2. SIMD types stay private: a core header that includes core/simd/, directly
 #     or through another header, is private, and the front ends (src/io, apps,
-#     lsp, fuzz) include no private header;
+#     lsp, fuzz, and the viewer's and language server's tests, built without
+#     the core's CPU flags) include no private header;
 #  3. with a compiler given (CXX=...), every public core header compiles on its
 #     own without any -m flag and with the project's warnings.
 # Exit 1 with one line per finding; 0 when the tree is clean.
@@ -119,7 +120,7 @@ while IFS= read -r file; do
       fail "$file: includes \"$inc\", a private core header (it reaches core/simd/, whose types depend on -march)"
     fi
   done < <(includes_of "$file")
-done < <(sources src/io src/lsp apps fuzz)
+done < <(sources src/io src/lsp apps fuzz tests/viewer tests/lsp)
 
 # 3. Public headers compile alone, with no CPU flag.
 if [[ -n "$cxx" ]]; then

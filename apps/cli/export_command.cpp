@@ -1,5 +1,7 @@
 // f2 export: one evaluated frame as a scene for another renderer — POV-Ray
 // (--pov) or the Embree peer's primitive list (--prims).
+#include <cerrno>
+#include <cstring>
 #include <iostream>
 #include <memory>
 
@@ -24,8 +26,11 @@ struct ExportArgs {
 
 bool writeOutput(const std::string& text, const std::string& path, std::string& error) {
     if (path == "-") {
+        errno = 0;
         std::cout << text << std::flush;
-        if (!std::cout) error = "cannot write to standard output";
+        if (!std::cout)
+            error = std::string("cannot write to standard output") +
+                    (errno ? ": " + std::string(std::strerror(errno)) : "");
         return bool(std::cout);
     }
     if (!createDirectoryOf(path, error)) return false;

@@ -1,5 +1,8 @@
 // f2 — the command-line front door. Argument parsing only; the work is in f2::core.
 #include <CLI/CLI.hpp>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <iostream>
 #include <regex>
 #include <string>
@@ -21,6 +24,19 @@ std::string unexpectedArguments(const std::vector<std::string>& extras) {
     return (allOptions ? (many ? "unknown options " : "unknown option ")
                        : (many ? "unexpected arguments " : "unexpected argument ")) +
            quoted;
+}
+
+/// A command that did its work but whose standard output was lost (`f2 info >
+/// /dev/full`, a full disk) has failed: exit 1 with the reason, as coreutils
+/// do, instead of 0 without the output it promised.
+int checkedStandardOutput(const std::string& command, int status) {
+    errno = 0;
+    const bool lost = std::fflush(stdout) != 0 || std::ferror(stdout) || !std::cout.good();
+    if (!lost || status != 0) return status;
+    const int cause = errno;
+    std::cerr << "f2 " << command << ": cannot write to standard output"
+              << (cause != 0 ? std::string(": ") + std::strerror(cause) : std::string()) << '\n';
+    return 1;
 }
 }  // namespace
 
@@ -78,6 +94,6 @@ int main(int argc, char** argv) {
                                    std::regex_replace(e.what(), kMissingValue, "$1: the value is missing"));
     }
     for (const auto& command : commands)
-        if (command.app->parsed()) return command.run();
+        if (command.app->parsed()) return checkedStandardOutput(command.app->get_name(), command.run());
     return 1;
 }

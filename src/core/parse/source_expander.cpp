@@ -77,6 +77,25 @@ std::string wholeText(double whole) {
     return std::string(buffer.data(), static_cast<std::size_t>(n > 0 ? n : 0));
 }
 
+/// Passes of a `/repeat` line whose bounds are numbers written out (no
+/// expression, no variable) and that cannot fail, else nullopt: such an inner
+/// loop runs the same passes on every pass of the loops around it.
+std::optional<double> literalLoopPasses(std::string_view line) {
+    LineTokens tokens;
+    tokenizeLine(line, tokens);
+    if (tokens.count != 4 && tokens.count != 5) return std::nullopt;
+    const std::string_view variable = tokens.tokens[1].text;
+    if (!isVariableName(variable) || Variables::isPredefined(variable)) return std::nullopt;
+    double bounds[3] = {0, 0, 1};
+    for (int i = 2; i < tokens.count; ++i) {
+        const ParsedNumber n = parseNumber(tokens.tokens[static_cast<std::size_t>(i)].text);
+        if (n.status != NumberStatus::Ok) return std::nullopt;
+        bounds[i - 2] = n.value;
+    }
+    if (bounds[2] == 0) return std::nullopt;
+    return loopPasses(bounds[0], bounds[1], bounds[2]);
+}
+
 }  // namespace
 
 FileRead readSourceFile(const std::string& path, std::size_t maxBytes) {
@@ -139,6 +158,10 @@ struct SourceExpander::LoopInfo {
     LineReader afterEnd{std::string_view()};  ///< reader state just after the /end line
     std::uint64_t passLines = 0;  ///< lines every pass reads: the body outside inner loops, and the /end
     std::uint64_t passBytes = 0;
+    /// The same with every pass of the inner loops whose bounds are numbers
+    /// (literalLoopPasses), valid when `innerDepth` more loops may still nest.
+    double deepLines = 0, deepBytes = 0;
+    int innerDepth = 0;
 };
 
 struct SourceExpander::SourceFile {
@@ -149,10 +172,14 @@ struct SourceExpander::SourceFile {
     std::unordered_map<int, LoopInfo> loops;  ///< by the line number of the /repeat
 
     /// Pairs each /repeat with its /end (a /repeat left open has no entry).
-    void findLoops(std::uint64_t& lineCount) {
+    /// A line longer than `maxLineBytes` is refused when read, so a loop on it never runs.
+    void findLoops(std::uint64_t& lineCount, std::size_t maxLineBytes) {
         struct Open {
             int line;
-            std::uint64_t lines, bytes;
+            std::uint64_t lines = 0, bytes = 0;
+            double deepLines = 0, deepBytes = 0;
+            int innerDepth = 0;
+            std::optional<double> passes;  ///< when its bounds are numbers
         };
         std::vector<Open> open;
         LineReader reader(text);
@@ -164,14 +191,33 @@ struct SourceExpander::SourceFile {
             if (word == "/end" && !open.empty()) {
                 const Open o = open.back();
                 open.pop_back();
-                loops[o.line] = LoopInfo{reader, o.lines + 1, o.bytes + bytes};
+                const LoopInfo info{reader,
+                                    o.lines + 1,
+                                    o.bytes + bytes,
+                                    o.deepLines + 1,
+                                    o.deepBytes + static_cast<double>(bytes),
+                                    o.innerDepth};
+                loops[o.line] = info;
+                if (!open.empty() && o.passes) {
+                    Open& outer = open.back();
+                    outer.deepLines += *o.passes * info.deepLines;
+                    outer.deepBytes += *o.passes * info.deepBytes;
+                    outer.innerDepth = std::max(outer.innerDepth, o.innerDepth + 1);
+                }
                 continue;
             }
             if (!open.empty()) {
                 open.back().lines += 1;
                 open.back().bytes += bytes;
+                open.back().deepLines += 1;
+                open.back().deepBytes += static_cast<double>(bytes);
             }
-            if (word == "/repeat") open.push_back({line.number, 0, 0});
+            if (word == "/repeat") {
+                Open o;
+                o.line = line.number;
+                if (line.text.size() <= maxLineBytes) o.passes = literalLoopPasses(line.text);
+                open.push_back(o);
+            }
         }
     }
 };
@@ -202,7 +248,7 @@ void SourceExpander::start(std::string_view text, std::string name,
     source->text = text;
     source->directory = std::filesystem::path(name).parent_path().string();
     source->identity = identity;
-    source->findLoops(linesInFiles_);
+    source->findLoops(linesInFiles_, limits_.maxLineBytes);
     fileBytes_ += text.size();
     const int nameIndex = addFile(std::move(name));
     fileStack_.push_back({source.get(), LineReader(source->text), nameIndex, 0});
@@ -474,8 +520,12 @@ void SourceExpander::runRepeat(const LogicalLine& line, int lineNumber) {
     if (passes == 0) return skipLoop(info);
     // The limits are checked before the first pass: every pass reads at least
     // its own lines, so a loop that cannot fit fails now, not after an hour.
-    const double lines = passes * static_cast<double>(info.passLines);
-    const double bytes = passes * static_cast<double>(info.passBytes);
+    // Inner loops with numbers for bounds count too, unless they would nest
+    // too deep (then they are skipped with an error, and read nothing).
+    const bool deep = loopStack_.size() + 1 + static_cast<std::size_t>(info.innerDepth) <=
+                      static_cast<std::size_t>(limits_.maxLoopDepth);
+    const double lines = passes * (deep ? info.deepLines : static_cast<double>(info.passLines));
+    const double bytes = passes * (deep ? info.deepBytes : static_cast<double>(info.passBytes));
     // Reading stops there, as when the limit is reached line by line.
     if (static_cast<double>(linesRead_) + lines > static_cast<double>(limits_.maxLines)) {
         error(commandPos, "this loop would read at least " + wholeText(lines) + " lines (" +
@@ -622,7 +672,7 @@ const SourceExpander::SourceFile* SourceExpander::loadFile(const std::string& pa
     source->text = source->owned;
     source->directory = std::filesystem::path(path).parent_path().string();
     source->identity = std::pair{read.device, read.inode};
-    source->findLoops(linesInFiles_);
+    source->findLoops(linesInFiles_, limits_.maxLineBytes);
     fileBytes_ += source->text.size();
     sources_.push_back(std::move(source));
     return sources_.back().get();
