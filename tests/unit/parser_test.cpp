@@ -1005,7 +1005,7 @@ TEST(ParserLimits, SceneSize) {
 #endif
 #endif
 
-TEST(ParserLimits, ManyLinesParseQuickly) {
+TEST(ParserLimits, AMillionLinesWithOutOfOrderKeysParse) {
     // 1,000,000 lines: 1000 spheres with 999 keys each, half of them out of order.
     std::string text;
     text.reserve(40u << 20);
@@ -1025,13 +1025,8 @@ TEST(ParserLimits, ManyLinesParseQuickly) {
     EXPECT_EQ(r.scene->objects[1].track.keys.size(), 999u);
     EXPECT_EQ(r.scene->objects[1].track.keys.front().frame, 1);
     EXPECT_EQ(r.scene->lastFrame(), 999);
-    // A bound on the time only where it means something: an optimised build
-    // without sanitizers parses this in about a second. Under ASan on a loaded
-    // machine it took 119 s, and CI must not fail by chance, so there it is only printed.
-#if defined(NDEBUG) && !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__) && \
-    !defined(F2_TEST_SANITIZED)
-    EXPECT_LT(seconds, 30.0);
-#endif
+    // No bound on the time, only printed: a unit test must not depend on the
+    // machine's speed or load (0.7 s optimised, 119 s under ASan on a loaded machine).
 }
 
 // Files
