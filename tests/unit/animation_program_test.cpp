@@ -139,14 +139,62 @@ TEST(AnimationProgram, EveryModeAndAttachmentMatchesTheSceneDescBitForBit) {
     expectProgramMatchesReference(test::sceneFromText(kEveryKind), "every kind");
 }
 
+// Parts that only turn about one axis (turn tracks): each axis, every mode,
+// a constant offset, turns past 360 degrees and of exactly 0; and tracks that
+// look alike but must stay on the general path (two axes, a moving offset,
+// and, set below since the language reads -0 as 0, an offset of -0 and other
+// angles of -0).
+constexpr const char* kTurns =
+    "/robot a 0 0 0 0 0 0\n/robot b 200 0 0 0 45 0\n/human h -200 0 0 0 0 0\n/human g 0 0 200 0 0 0\n"
+    "/interp a.head spline\n"
+    "/key 0 a.head 0 0 0 0 0 0\n/key 10 a.head 0 0 0 0 50 0\n/key 20 a.head 0 0 0 0 -400 0\n"
+    "/key 30 a.head 0 0 0 0 90 0 ease_out\n/key 33 a.head 0 0 0 0 0 0\n"
+    "/key 0 a.lhand 3 -2 0.5 -30 0 0 ease\n/key 12 a.lhand 3 -2 0.5 45 0 0 ease_in\n"
+    "/key 14 a.lhand 3 -2 0.5 180 0 0 step\n/key 17 a.lhand 3 -2 0.5 -0 0 0\n"
+    "/key 0 a.rhand 0 0 0 0 0 10\n/key 9 a.rhand 0 0 0 0 0 -725 linear\n/key 12 a.rhand 0 0 0 0 0 270\n"
+    "/key 0 b.rhand 0 0 0 0 0 10\n/key 9 b.rhand 0 0 0 0 0 -10\n"
+    "/key 0 b.lhand 0 0 0 10 5 0\n/key 9 b.lhand 0 0 0 -10 0 0\n"
+    "/key 0 b.head 0 0 0 0 10 0\n/key 9 b.head 0 1 0 0 -10 0\n"
+    "/key 0 h.body\n/key 5 h.body 0 0 0 0 0 0\n/key 0 h.head 0 0 0 0 0 720\n/key 10 h.head 0 0 0 0 0 -90\n"
+    "/interp g.lhand ease\n/key 0 g.lhand 1 2 3 1e-30 0 0\n/key 40 g.lhand 1 2 3 -1e-30 0 0\n";
+
+TEST(AnimationProgram, PartsTurningAboutOneAxisMatchTheSceneDescBitForBit) {
+    SceneDesc scene = test::sceneFromText(kTurns);
+    for (Key& key : scene.objects[1].partTracks[int(PartId::RHand)].keys) key.pose.position.x = -0.0f;
+    for (Key& key : scene.objects[0].partTracks[int(PartId::Head)].keys) key.pose.rotation.z = -0.0f;
+    const auto program = AnimationProgram::compile(scene);
+    // a: head, lhand, rhand; h: body, head; g: lhand. b's three stay general.
+    EXPECT_EQ(program->turnTracks.size(), 6u);
+    EXPECT_EQ(program->tracks.size(), 3u);
+    expectProgramMatchesReference(scene, "turns");
+}
+
+TEST(AnimationProgram, ATurnAboutOneAxisIsTheEulerRotationBitForBit) {
+    const Transform parent = Transform::fromPose({1, -2, 3}, {10, 200, -30});
+    std::vector<float> angles = {0.0f, -0.0f, 90,    180,    270,     -90,
+                                 360,  720,   -1080, 1e-30f, -1e-30f, 359.99997f};
+    for (int i = 0; i <= 20000; ++i) angles.push_back(-1000.0f + 0.1f * float(i) + 1e-3f * float(i % 7));
+    for (float angle : angles) {
+        for (std::uint32_t axis = 0; axis < 3; ++axis) {
+            Vec3 euler{-0.0f, 0.0f, -0.0f};
+            euler[int(axis)] = angle;
+            const Transform want = childFrame(parent, {4, 5, 6}, euler);
+            const Transform got = childFrameTurned(parent, {4, 5, 6}, angle, axis);
+            ASSERT_EQ(std::memcmp(&want, &got, sizeof want), 0) << "angle " << angle << " axis " << axis;
+        }
+    }
+}
+
 TEST(AnimationProgram, TracksKeyedAlikeShareOneLayoutAndEqualSurfacesAreStoredOnce) {
     const SceneDesc scene = test::sceneFromText(benchSceneText({BenchShape::Robots, 200}));
     const auto program = AnimationProgram::compile(scene);
     // Robots: head (ease, 3 keys) and both arms (spline, 5 keys): two layouts;
     // 200 robots of 4 colours and the floor: 5 runs of surfaces.
     EXPECT_EQ(program->layouts.size(), 2u);
-    EXPECT_EQ(program->tracks.size(), 3u * 200u);
-    EXPECT_EQ(program->poses.size(), 13u * 200u);
+    // Each of them only turns about one axis: one angle per key.
+    EXPECT_EQ(program->tracks.size(), 0u);
+    EXPECT_EQ(program->turnTracks.size(), 3u * 200u);
+    EXPECT_EQ(program->angles.size(), 13u * 200u);
     EXPECT_EQ(program->surfaces.size(), 4u * 6u + 1u);
     // The floor and the robots' roots have no keys: constant.
     for (std::uint32_t source : program->rootSource) EXPECT_EQ(source, AnimationProgram::kConstantRoot);

@@ -1,5 +1,6 @@
 #include "core/anim/animation_program.h"
 
+#include <cmath>
 #include <cstring>
 #include <string>
 #include <string_view>
@@ -39,6 +40,36 @@ class Compiler {
         p_.tracks.push_back({layoutOf(track), std::uint32_t(p_.poses.size())});
         for (const Key& key : track.keys) p_.poses.push_back(key.pose);
         return AnimationProgram::kAnimated | index;
+    }
+
+    /// kTurning | turn track for a part track of two keys or more that only
+    /// turns about one axis (AnimationProgram::TurnTrack); else 0.
+    std::uint32_t turnTrack(const Track& track) {
+        if (track.keys.size() < 2) return 0;
+        const Pose& first = track.keys.front().pose;
+        // A blend of equal values gives that value back, except -0 (-0 + 0 is
+        // +0) and what is not finite: such offsets stay on the general path.
+        for (int c = 0; c < 3; ++c) {
+            const float offset = first.position[c];
+            if (!std::isfinite(offset) || (std::signbit(offset) && offset == 0)) return 0;
+        }
+        std::uint32_t axis = 0;
+        for (const Key& key : track.keys) {
+            if (!(key.pose.position == first.position)) return 0;
+            for (std::uint32_t c = 0; c < 3; ++c) {
+                if (key.pose.rotation[int(c)] != 0) axis = c;
+            }
+        }
+        // The other axes' angles are 0 (either sign, as sinCosDegrees takes them) in every key.
+        for (const Key& key : track.keys) {
+            for (std::uint32_t c = 0; c < 3; ++c) {
+                if (c != axis && !(key.pose.rotation[int(c)] == 0)) return 0;
+            }
+        }
+        const auto index = std::uint32_t(p_.turnTracks.size());
+        p_.turnTracks.push_back({layoutOf(track), std::uint32_t(p_.angles.size()), axis, first.position});
+        for (const Key& key : track.keys) p_.angles.push_back(key.pose.rotation[int(axis)]);
+        return AnimationProgram::kTurning | index;
     }
 
     /// Index in constantMotions of a part's constant pose (rest, or its one key).
@@ -131,7 +162,8 @@ std::shared_ptr<const AnimationProgram> AnimationProgram::compile(const SceneDes
         if (isModel(object.kind)) {
             for (int part = 0; part < kPartCount; ++part) {
                 const Track& track = object.partTracks[std::size_t(part)];
-                const std::uint32_t animated = compiler.animatedTrack(track);
+                std::uint32_t animated = compiler.turnTrack(track);
+                if (!animated) animated = compiler.animatedTrack(track);
                 p.partSource[i][std::size_t(part)] = animated ? animated : compiler.constantMotion(track);
                 still = still && !animated;
             }
@@ -187,7 +219,11 @@ void AnimationProgram::evaluateObjects(std::size_t begin, std::size_t end, const
             const int index = int(part.id);
             const Transform& worldFromParent = part.parent < 0 ? worldFromRoot : worldFromPart[part.parent];
             const std::uint32_t source = partSource[i][std::size_t(index)];
-            if (source & kAnimated) {
+            if (source & kTurning) {
+                const TurnTrack& turn = turnTracks[source & ~kTurning];
+                worldFromPart[index] = childFrameTurned(worldFromParent, part.pivot + turn.offset,
+                                                        turnAngle(source & ~kTurning, segments), turn.axis);
+            } else if (source & kAnimated) {
                 const Pose motion = trackPose(source & ~kAnimated, segments);
                 worldFromPart[index] =
                     childFrame(worldFromParent, part.pivot + motion.position, motion.rotation);

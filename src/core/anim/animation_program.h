@@ -11,6 +11,8 @@
 /// - each distinct sequence of key frames and segment modes once (a key
 ///   layout): where a time falls among the keys is found once per layout and
 ///   frame (a grid of robots keyed alike has two layouts, whatever its size);
+/// - a part's track that only turns about one axis as one angle per key
+///   (TurnTrack): one channel to blend, one sine and cosine per frame;
 /// - what does not move as constants: a root frame without keys (or with one)
 ///   as its transform, a part without keys (or with one) as its rotation
 ///   matrix, every surface (identical surfaces stored once).
@@ -39,6 +41,16 @@ struct AnimationProgram {
         std::uint32_t first;
         std::uint32_t count;
     };
+    /// A part's track of two keys or more that only turns about one axis: the
+    /// other two angles are 0 and the offset is the same in every key (a
+    /// swinging arm, a turning head). Its keys are stored as one angle each,
+    /// and a frame blends that one channel and takes one sine and cosine.
+    struct TurnTrack {
+        std::uint32_t layout;
+        std::uint32_t firstAngle;  ///< its keys' angles in `angles`
+        std::uint32_t axis;        ///< 0: x, 1: y, 2: z
+        Vec3 offset;               ///< every key's position
+    };
     /// A part's constant motion (no keys: rest, or one key): offset and rotation.
     struct ConstantMotion {
         Vec3 offset;
@@ -49,6 +61,8 @@ struct AnimationProgram {
     /// Where a root or a part gets its pose: `kAnimated | track index` or a
     /// constant (for a part: an index in `constantMotions`).
     static constexpr std::uint32_t kAnimated = 0x8000'0000u;
+    /// Where a part gets its pose: `kTurning | index in turnTracks`.
+    static constexpr std::uint32_t kTurning = 0x4000'0000u;
     /// A root frame taken from `EvaluatedFrame::attachedRoots` (SPEC 9.2).
     static constexpr std::uint32_t kAttached = 0x7fff'ffffu;
     /// A root frame that does not move: `constantRoots[object]`.
@@ -60,7 +74,7 @@ struct AnimationProgram {
     std::vector<std::uint32_t> rootSource;  ///< kAnimated | track, kConstantRoot, kAttached
     std::vector<Transform> constantRoots;   ///< the root frame when kConstantRoot
     std::vector<std::array<std::uint32_t, kPartCount>>
-        partSource;                             ///< models: kAnimated | track, or a constant
+        partSource;                             ///< models: kAnimated | track, kTurning | turn, or a constant
     std::vector<std::uint32_t> firstSurface;    ///< the object's surfaces in `surfaces`, one per primitive
     std::vector<std::uint32_t> firstPrimitive;  ///< as EvaluatedFrame::firstPrimitive (objects + 1)
     std::vector<std::uint8_t> still;            ///< 1: neither the object nor a part of it ever moves
@@ -71,6 +85,8 @@ struct AnimationProgram {
     std::vector<KeyLayout> layouts;
     std::vector<int> frames;           ///< key frames of the layouts
     std::vector<Interpolation> modes;  ///< mode from each key to the next, of the layouts
+    std::vector<TurnTrack> turnTracks;
+    std::vector<float> angles;  ///< keys' angles of the turn tracks, track after track
     std::vector<ConstantMotion> constantMotions;
     std::vector<Surface> surfaces;
 
@@ -85,6 +101,17 @@ struct AnimationProgram {
         const AnimatedTrack& at = tracks[track];
         const Pose* keys = &poses[at.firstPose];
         return poseInSegment(segments[at.layout], [keys](std::uint32_t i) -> const Pose& { return keys[i]; });
+    }
+
+    /// Angle (degrees) of turn track `turn` with the layouts' `segments` of
+    /// this frame: that channel of trackPose, bit for bit.
+    float turnAngle(std::uint32_t turn, const TrackSegment* segments) const {
+        const TurnTrack& track = turnTracks[turn];
+        const TrackSegment& segment = segments[track.layout];
+        const float* keys = &angles[track.firstAngle];
+        if (segment.kind == TrackSegment::Kind::Hold) return keys[segment.p1];
+        return float(
+            blendInSegment(segment, keys[segment.p0], keys[segment.p1], keys[segment.p2], keys[segment.p3]));
     }
 
     /// Writes the primitives and surfaces of objects [begin, end) into `frame`
@@ -107,6 +134,19 @@ inline Transform childFrame(const Transform& worldFromParent, Vec3 origin, const
 inline Transform childFrame(const Transform& worldFromParent, Vec3 origin, Vec3 rotationDegrees) {
     if (rotationDegrees == Vec3{}) return worldFromParent.translated(origin);
     const Mat3 rotation = rotationFromEulerDegrees(rotationDegrees);
+    return childFrame(worldFromParent, origin, &rotation);
+}
+
+/// The same for a rotation of `degrees` about axis `axis` (0: x, 1: y, 2:
+/// z) alone: rotationFromEulerDegrees with the other angles 0, bit for bit,
+/// for one sine and cosine and a third of the products.
+inline Transform childFrameTurned(const Transform& worldFromParent, Vec3 origin, float degrees,
+                                  std::uint32_t axis) {
+    if (degrees == 0) return worldFromParent.translated(origin);
+    const SinCos turn = sinCosDegrees(degrees), none;
+    const Mat3 rotation = axis == 0   ? rotationFromSinCos(turn, none, none)
+                          : axis == 1 ? rotationFromSinCos(none, turn, none)
+                                      : rotationFromSinCos(none, none, turn);
     return childFrame(worldFromParent, origin, &rotation);
 }
 

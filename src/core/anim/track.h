@@ -78,6 +78,12 @@ TrackSegment segmentAt(std::size_t keyCount, FrameOf frameOf, ModeOf modeOf, dou
     return {TrackSegment::Kind::Blend, i1, i1, i2, i2, interpolationWeight(mode, u)};
 }
 
+/// One channel in a Blend or Spline `segment`, from that channel of keys p0..p3.
+inline double blendInSegment(const TrackSegment& segment, double p0, double p1, double p2, double p3) {
+    if (segment.kind == TrackSegment::Kind::Spline) return catmullRom(p0, p1, p2, p3, segment.weight);
+    return p1 + (p2 - p1) * segment.weight;
+}
+
 /// Channel c (0..5) of a pose: position x, y, z, then rotation x, y, z.
 inline double poseChannel(const Pose& pose, int c) { return c < 3 ? pose.position[c] : pose.rotation[c - 3]; }
 
@@ -87,19 +93,13 @@ Pose poseInSegment(const TrackSegment& segment, PoseOf poseOf) {
     const Pose& a = poseOf(segment.p1);
     if (segment.kind == TrackSegment::Kind::Hold) return a;
     const Pose& b = poseOf(segment.p2);
+    // A Blend segment has p0 = p1 and p3 = p2 (segmentAt).
+    const Pose& p0 = poseOf(segment.p0);
+    const Pose& p3 = poseOf(segment.p3);
     double out[6];
-    if (segment.kind == TrackSegment::Kind::Spline) {
-        const Pose& p0 = poseOf(segment.p0);
-        const Pose& p3 = poseOf(segment.p3);
-        for (int c = 0; c < 6; ++c)
-            out[c] = catmullRom(poseChannel(p0, c), poseChannel(a, c), poseChannel(b, c), poseChannel(p3, c),
-                                segment.weight);
-    } else {
-        for (int c = 0; c < 6; ++c) {
-            const double from = poseChannel(a, c), to = poseChannel(b, c);
-            out[c] = from + (to - from) * segment.weight;
-        }
-    }
+    for (int c = 0; c < 6; ++c)
+        out[c] = blendInSegment(segment, poseChannel(p0, c), poseChannel(a, c), poseChannel(b, c),
+                                poseChannel(p3, c));
     return {{float(out[0]), float(out[1]), float(out[2])}, {float(out[3]), float(out[4]), float(out[5])}};
 }
 

@@ -5,10 +5,6 @@
 
 namespace f2 {
 
-namespace {
-struct SinCos {
-    double s, c;
-};
 // Exact values at multiples of 90 degrees keep axis-aligned scenes free of 1e-17 noise.
 SinCos sinCosDegrees(double deg) {
     if (deg == 0) return {0, 1};  // parts at rest: most angles of a frame
@@ -19,31 +15,16 @@ SinCos sinCosDegrees(double deg) {
     if (r == 180) return {0, -1};
     if (r == 270) return {-1, 0};
     double a = r * kPi / 180.0;
-    return {std::sin(a), std::cos(a)};
+    return {std::sin(a), std::cos(a)};  // GCC makes this one sincos call
 }
-}  // namespace
 
 Mat3 rotationFromEulerDegrees(double rx, double ry, double rz) {
     if (rx == 0 && ry == 0 && rz == 0) return Mat3{};
-    auto [sx, cx] = sinCosDegrees(rx);
-    auto [sy, cy] = sinCosDegrees(ry);
-    auto [sz, cz] = sinCosDegrees(rz);
-    // Rx: y' = y cx - z sx, z' = y sx + z cx
-    // Ry: z' = z cy - x sy, x' = z sy + x cy
-    // Rz: x' = x cz - y sz, y' = x sz + y cz
-    // Product Rz * Ry * Rx written out in double.
-    double m[3][3] = {
-        {cz * cy, cz * sy * sx - sz * cx, cz * sy * cx + sz * sx},
-        {sz * cy, sz * sy * sx + cz * cx, sz * sy * cx - cz * sx},
-        {-sy, cy * sx, cy * cx},
-    };
-    Mat3 out;
-    for (int i = 0; i < 3; ++i) out.row[i] = {float(m[i][0]), float(m[i][1]), float(m[i][2])};
-    return out;
+    return rotationFromSinCos(sinCosDegrees(rx), sinCosDegrees(ry), sinCosDegrees(rz));
 }
 
 Vec3 eulerDegreesFromRotation(const Mat3& rotation) {
-    // The bottom row of Rz * Ry * Rx is (-sy, cy sx, cy cx) (see above), and
+    // The bottom row of Rz * Ry * Rx is (-sy, cy sx, cy cx) (rotationFromSinCos), and
     // its first column (cz cy, sz cy, -sy).
     const Vec3* m = rotation.row;
     constexpr double kDegreesPerRadian = 180.0 / kPi;

@@ -24,6 +24,35 @@ inline constexpr double kPi = 3.14159265358979323846;
 /// R = Rz(rz) * Ry(ry) * Rx(rx), angles in degrees (SPEC 1, POV-Ray's `rotate`).
 /// Computed in double so that 90-degree turns come out exact enough for tests.
 Mat3 rotationFromEulerDegrees(double rx, double ry, double rz);
+
+/// Sine and cosine of an angle.
+struct SinCos {
+    double s = 0, c = 1;
+};
+/// Of an angle in degrees as rotationFromEulerDegrees takes them: exactly
+/// (0, 1) for 0 (either sign), exact at multiples of 90 degrees.
+SinCos sinCosDegrees(double degrees);
+
+/// rotationFromEulerDegrees from its angles' sines and cosines. Inline so that
+/// a caller that knows an angle is 0 ({0, 1}) has the products by 1 folded
+/// away; the arithmetic, and so every bit of the result, stays the same.
+inline Mat3 rotationFromSinCos(SinCos x, SinCos y, SinCos z) {
+    const auto [sx, cx] = x;
+    const auto [sy, cy] = y;
+    const auto [sz, cz] = z;
+    // Rx: y' = y cx - z sx, z' = y sx + z cx
+    // Ry: z' = z cy - x sy, x' = z sy + x cy
+    // Rz: x' = x cz - y sz, y' = x sz + y cz
+    // Product Rz * Ry * Rx written out in double.
+    const double m[3][3] = {
+        {cz * cy, cz * sy * sx - sz * cx, cz * sy * cx + sz * sx},
+        {sz * cy, sz * sy * sx + cz * cx, sz * sy * cx - cz * sx},
+        {-sy, cy * sx, cy * cx},
+    };
+    Mat3 out;
+    for (int i = 0; i < 3; ++i) out.row[i] = {float(m[i][0]), float(m[i][1]), float(m[i][2])};
+    return out;
+}
 inline Mat3 rotationFromEulerDegrees(Vec3 r) { return rotationFromEulerDegrees(r.x, r.y, r.z); }
 
 /// The angles (degrees) that rotationFromEulerDegrees turns back into `rotation`:

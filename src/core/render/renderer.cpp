@@ -128,6 +128,9 @@ class TileRenderer {
                 }
                 ShadowEntries shadowEntry(frame_, lo, hi);
                 for (int k = 0; k < blocks; ++k) {
+                    // Also per block: under 1,000 soft lights (256 shadow rays each) one
+                    // sample pass of a tile takes seconds, and Ctrl+C must stop within one.
+                    if (cancel && cancel->load(std::memory_order_relaxed)) return false;
                     ColorP c = shadeSurfaces(frame_, surfaces_[k], shadowEntry.perLight(), counts_);
                     c = withReflections(frame_, surfaces_[k], c, counts_);
                     if (aa_ > 1) c = clamped(c);  // the average of displayed values
