@@ -163,7 +163,9 @@ class TileRenderer {
                 const LightSample& light = frame.lights[i];
                 // A soft sun's samples all start from the nodes that one of its directions reaches.
                 const std::span<const Vec3> samples =
-                    std::span<const Vec3>(frame.sunDirections).subspan(light.firstSample, light.sampleCount);
+                    light.sampleCount == 0
+                        ? std::span<const Vec3>()
+                        : std::span(&frame.sunDirections[light.firstSample], light.sampleCount);
                 const std::size_t n = light.sampleCount == 0
                                           ? frame.bvh.beamEntryNodes(origins, light.toLight, store_[i])
                                           : frame.bvh.beamEntryNodes(origins, samples, store_[i]);
