@@ -4,7 +4,8 @@
 #     folder, never up and never sideways, so the folders form no cycle;
 #  2. SIMD types stay private: a core header that includes core/simd/, directly
 #     or through another header, is private, and the front ends (src/io, apps,
-#     lsp, fuzz) include no private header;
+#     lsp, fuzz, and the viewer's and language server's tests, built without
+#     the core's CPU flags) include no private header;
 #  3. with a compiler given (CXX=...), every public core header compiles on its
 #     own without any -m flag and with the project's warnings.
 # Exit 1 with one line per finding; 0 when the tree is clean.
@@ -54,8 +55,11 @@ layer_of_include() {
 # C++ sources under the given folders, sorted.
 sources() { find "$@" -type f \( -name '*.h' -o -name '*.cpp' \) | sort; }
 
-# Quoted includes of a file, one per line.
-includes_of() { sed -n 's/^[[:space:]]*#[[:space:]]*include[[:space:]]*"\([^"]*\)".*/\1/p' "$1"; }
+# Includes of a file, one per line: quoted ones, and project headers in <>.
+includes_of() {
+  sed -n -e 's/^[[:space:]]*#[[:space:]]*include[[:space:]]*"\([^"]*\)".*/\1/p' \
+    -e 's/^[[:space:]]*#[[:space:]]*include[[:space:]]*<\(\(core\|io\|lsp\)\/[^>]*\)>.*/\1/p' "$1"
+}
 
 # 1. Layers: no include up or sideways; the folder graph has no cycle.
 edges=$(mktemp)
@@ -68,6 +72,10 @@ while IFS= read -r file; do
     continue
   fi
   while IFS= read -r inc; do
+    if [[ "$inc" == *../* ]]; then
+      fail "$file: includes \"$inc\": name project headers from src/ (\"core/x/y.h\"), not by a relative path"
+      continue
+    fi
     to=$(layer_of_include "$inc")
     [[ -n "$to" && "$to" != "$from" ]] || continue
     if [[ -z "${rank[$to]+set}" ]]; then
@@ -112,7 +120,7 @@ while IFS= read -r file; do
       fail "$file: includes \"$inc\", a private core header (it reaches core/simd/, whose types depend on -march)"
     fi
   done < <(includes_of "$file")
-done < <(sources src/io src/lsp apps fuzz)
+done < <(sources src/io src/lsp apps fuzz tests/viewer tests/lsp)
 
 # 3. Public headers compile alone, with no CPU flag.
 if [[ -n "$cxx" ]]; then

@@ -51,8 +51,7 @@ int writeSceneText(const BenchArgs& args, int width, int height) {
         BenchSceneSpec spec;
         std::string error;
         if (!parseBenchSceneSpec(args.generated, spec, error)) {
-            std::cerr << "f2 bench: --scene: " << error << '\n';
-            return 2;
+            return usageError("bench", "--scene: " + error);
         }
         text = benchSceneText(spec, width, height);
     } else {
@@ -75,8 +74,7 @@ int runBenchCommand(BenchArgs args) {
     int width = 800, height = 600;
     std::string error;
     if (!parseSize(args.size, width, height, error)) {
-        std::cerr << "f2 bench: " << error << '\n';
-        return 2;
+        return usageError("bench", error);
     }
     if (!args.writeScene.empty()) return writeSceneText(args, width, height);
 
@@ -104,8 +102,7 @@ int runBenchCommand(BenchArgs args) {
     if (!args.generated.empty()) {
         BenchSceneSpec spec;
         if (!parseBenchSceneSpec(args.generated, spec, error)) {
-            std::cerr << "f2 bench: --scene: " << error << '\n';
-            return 2;
+            return usageError("bench", "--scene: " + error);
         }
         loaded = loadBenchScene(spec, width, height);
     } else {
@@ -131,7 +128,8 @@ Command addBenchCommand(CLI::App& app) {
         "Measure frames per second of whole frames (evaluate + build + trace), or run the FPS study");
     sub->footer(kFooter);
     auto* file = sub->add_option("scene", args->scene,
-                                 "Scene file; '-' reads standard input; none = the default scene");
+                                 "Scene file; '-' reads standard input; none = the default scene")
+                     ->check(nonEmptyPath("measure the default scene"));
     auto* generated = sub->add_option("--scene", args->generated,
                                       "Generated scene robots:N or spheres:N instead of a file");
     file->excludes(generated);

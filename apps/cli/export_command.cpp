@@ -1,14 +1,16 @@
 // f2 export: one evaluated frame as a scene for another renderer — POV-Ray
 // (--pov) or the Embree peer's primitive list (--prims).
+#include <cerrno>
+#include <cstring>
 #include <iostream>
 #include <memory>
 
 #include "commands.h"
 #include "io/atomic_file.h"
+#include "io/output_target.h"
 #include "io/pov_export.h"
 #include "io/prims_export.h"
 #include "options.h"
-#include "output_kind.h"
 #include "scene_source.h"
 
 namespace f2::cli {
@@ -24,11 +26,14 @@ struct ExportArgs {
 
 bool writeOutput(const std::string& text, const std::string& path, std::string& error) {
     if (path == "-") {
+        errno = 0;
         std::cout << text << std::flush;
-        if (!std::cout) error = "cannot write to standard output";
+        if (!std::cout)
+            error = std::string("cannot write to standard output") +
+                    (errno ? ": " + std::string(std::strerror(errno)) : "");
         return bool(std::cout);
     }
-    if (!createParentDirectory(path, error)) return false;
+    if (!createDirectoryOf(path, error)) return false;
     AtomicFile file(path);  // never a half-written scene, even on Ctrl+C
     if (!file.ok()) {
         error = file.error();

@@ -1,11 +1,30 @@
 // f2 — the command-line front door. Argument parsing only; the work is in f2::core.
 #include <CLI/CLI.hpp>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <iostream>
+#include <regex>
 #include <string>
 #include <vector>
 
 #include "commands.h"
 #include "options.h"
+
+namespace {
+/// A command that did its work but whose standard output was lost (`f2 info >
+/// /dev/full`, a full disk) has failed: exit 1 with the reason, as coreutils
+/// do, instead of 0 without the output it promised.
+int checkedStandardOutput(const std::string& command, int status) {
+    errno = 0;
+    const bool lost = std::fflush(stdout) != 0 || std::ferror(stdout) || !std::cout.good();
+    if (!lost || status != 0) return status;
+    const int cause = errno;
+    std::cerr << "f2 " << command << ": cannot write to standard output"
+              << (cause != 0 ? std::string(": ") + std::strerror(cause) : std::string()) << '\n';
+    return 1;
+}
+}  // namespace
 
 int main(int argc, char** argv) {
     CLI::App app{
@@ -24,19 +43,19 @@ int main(int argc, char** argv) {
         std::cerr << app.help();
         return f2::cli::kUsageError;
     }
-    // CLI11 would only say "a subcommand is required"; name the unknown word.
-    if (argc > 1 && argv[1][0] != '-') {
-        bool known = false;
-        std::string names;
-        for (const auto& command : commands) {
-            known = known || command.app->get_name() == argv[1];
-            names += (names.empty() ? "" : ", ") + command.app->get_name();
-        }
-        if (!known) {
-            return f2::cli::usageError(
-                "", "unknown command '" + std::string(argv[1]) + "' (expected " + names + ")");
-        }
+    // CLI11 would only say "a subcommand is required"; name the unknown option or word.
+    std::string names;
+    bool known = false;
+    for (const auto& command : commands) {
+        known = known || command.app->get_name() == argv[1];
+        names += (names.empty() ? "" : ", ") + command.app->get_name();
     }
+    const std::string first = argv[1];
+    if (first.rfind('-', 0) == 0 && first != "-h" && first != "--help" && first != "--version")
+        return f2::cli::usageError(
+            "", "unknown option '" + first + "'; a command comes first (" + names + "), then its options");
+    if (first.rfind('-', 0) != 0 && !known)
+        return f2::cli::usageError("", "unknown command '" + first + "' (expected " + names + ")");
     try {
         app.parse(argc, argv);
     } catch (const CLI::Success& e) {
@@ -46,9 +65,12 @@ int main(int argc, char** argv) {
         // for every usage error; its message names the option.
         std::string command;
         for (const CLI::App* sub : app.get_subcommands()) command = sub->get_name();
-        return f2::cli::usageError(command, e.what());
+        // "--aa: 1 required INT missing" is CLI11's jargon for an option given without its value.
+        static const std::regex kMissingValue(R"(^(\S+): [0-9]+ required \S+ missing$)");
+        return f2::cli::usageError(command,
+                                   std::regex_replace(e.what(), kMissingValue, "$1: the value is missing"));
     }
     for (const auto& command : commands)
-        if (command.app->parsed()) return command.run();
+        if (command.app->parsed()) return checkedStandardOutput(command.app->get_name(), command.run());
     return 1;
 }

@@ -28,8 +28,9 @@ std::optional<OutputKind> classifyOutput(const std::string& name, std::string& e
     std::error_code ec;
     if (name.back() == '/' || std::filesystem::is_directory(name, ec)) {
         const std::string dir = name.back() == '/' ? name : name + "/";
-        error = "'" + name + "' is a directory; name a file in it (" + dir +
-                "f2.png) or a numbered sequence (" + dir + "f_%04d.png)";
+        const bool exists = std::filesystem::exists(name, ec);
+        error = "'" + name + (exists ? "' is a directory" : "' names a directory (it ends in '/')") +
+                "; name a file in it (" + dir + "f2.png) or a numbered sequence (" + dir + "f_%04d.png)";
         return std::nullopt;
     }
     if (auto video = videoFormatForPath(name)) {
@@ -54,18 +55,6 @@ std::optional<OutputKind> classifyOutput(const std::string& name, std::string& e
         return std::nullopt;
     }
     return target;
-}
-
-bool createParentDirectory(const std::string& path, std::string& error) {
-    const std::filesystem::path dir = std::filesystem::path(path).parent_path();
-    std::error_code ec;
-    if (dir.empty() || std::filesystem::is_directory(dir, ec)) return true;
-    std::filesystem::create_directories(dir, ec);
-    if (ec) {
-        error = "cannot create the directory '" + dir.string() + "' for '" + path + "': " + ec.message();
-        return false;
-    }
-    return true;
 }
 
 }  // namespace f2::cli

@@ -25,8 +25,4 @@ struct OutputKind {
 /// a bad frame pattern or a directory.
 std::optional<OutputKind> classifyOutput(const std::string& name, std::string& error);
 
-/// Creates the directory that will hold `path` (and its parents), as
-/// sequences do: false with `error` set if that is impossible.
-bool createParentDirectory(const std::string& path, std::string& error);
-
 }  // namespace f2::cli

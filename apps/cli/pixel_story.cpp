@@ -13,6 +13,12 @@
 namespace f2::cli {
 
 namespace {
+std::string str(float f) {
+    std::ostringstream s;
+    s << std::setprecision(6) << f;
+    return s.str();
+}
+
 std::string str(Vec3 v) {
     std::ostringstream s;
     s << std::setprecision(6) << '(' << v.x << ", " << v.y << ", " << v.z << ')';
@@ -71,7 +77,7 @@ int printPixelStory(const LoadedScene& loaded, const Camera& camera, double t, i
         << " at frame " << t << " (single-ray reference path, the pixel centre " << r.px << ", " << r.py
         << ")\n";
     out << "ray      from " << str(r.ray.origin) << " along " << str(r.ray.direction)
-        << ", hits beyond t = " << r.tMin << "\n";
+        << ", counting hits from t = " << r.tMin << " on (nearer ones are at the eye itself)\n";
     if (r.crossings.empty())
         out << "along it nothing\n";
     else
@@ -90,8 +96,11 @@ int printPixelStory(const LoadedScene& loaded, const Camera& camera, double t, i
         out << "normal   " << str(r.surface.normal)
             << (r.surface.inside ? " (seen from inside: turned to face the eye)" : " (facing the eye)")
             << "\n";
-        out << "surface  colour " << str(r.surfaceColor) << ", ka " << r.material.ka << " kd "
-            << r.material.kd << " ks " << r.material.ks << " n " << r.material.n << "\n";
+        const float checker = frame.surfaces[r.chosen.primitive].checkerSize;
+        out << "surface  colour " << str(r.surfaceColor)
+            << (checker > 0 ? " (the /checker cell the point is in; cells of " + str(checker) + ")" : "")
+            << ", ka " << r.material.ka << " kd " << r.material.kd << " ks " << r.material.ks << " n "
+            << r.material.n << "\n";
         out << "ambient  ka * " << frame.ambient << " = " << r.ambientTerm << "\n";
         out << "shadow rays from " << str(r.surface.shadowOrigin)
             << (r.surface.skip == Bvh::kNoPrimitive ? "" : ", skipping the primitive itself") << "\n";
@@ -115,8 +124,9 @@ int printPixelStory(const LoadedScene& loaded, const Camera& camera, double t, i
         }
     }
     if (r.hit && r.material.reflection > 0)
-        out << "mirror   own colour " << str(r.ownColor) << " + reflection " << r.material.reflection
-            << " x what the mirrored ray sees, to trace level " << kMaxTraceLevel << "\n";
+        out << "mirror   own colour " << str(r.ownColor) << ", plus reflection " << r.material.reflection
+            << " x what the mirrored ray sees (traced to level " << kMaxTraceLevel
+            << "): " << str(r.color - r.ownColor) << "\n";
     out << "colour   " << str(r.color) << " -> pixel " << int(r.pixel.r) << " " << int(r.pixel.g) << " "
         << int(r.pixel.b) << "\n";
     const Rgb8 rendered = image.at(x, y);

@@ -65,9 +65,8 @@ void Progress::clear() {
 }
 
 std::string Progress::summary() const {
-    char text[64];
-    std::snprintf(text, sizeof text, "%.1f s, %.1f frames/s", elapsedSeconds(), framesPerSecond());
-    return text;
+    return formatMilliseconds(elapsedSeconds() * 1000) + ", " + threeSignificantDigits(framesPerSecond()) +
+           " frames/s";
 }
 
 std::string formatDuration(double seconds) {
@@ -80,13 +79,19 @@ std::string formatDuration(double seconds) {
     return text;
 }
 
-std::string formatMilliseconds(double ms) {
-    char text[32];
-    if (ms >= 1000)
-        std::snprintf(text, sizeof text, "%.3g s", ms / 1000);
-    else
-        std::snprintf(text, sizeof text, ms >= 100 ? "%.0f ms" : ms >= 10 ? "%.1f ms" : "%.2f ms", ms);
+std::string threeSignificantDigits(double value) {
+    char text[64];
+    // Rounded first, so that 9.996 counts as 10.0, not 10.00; beyond 100 a whole number, never 1.23e+04.
+    std::snprintf(text, sizeof text, "%.3g", value);
+    const double rounded = std::strtod(text, nullptr);
+    const int decimals =
+        rounded > 0 && rounded < 100 ? std::min(6, 2 - int(std::floor(std::log10(rounded)))) : 0;
+    std::snprintf(text, sizeof text, "%.*f", decimals, value);
     return text;
+}
+
+std::string formatMilliseconds(double ms) {
+    return ms >= 999.5 ? threeSignificantDigits(ms / 1000) + " s" : threeSignificantDigits(ms) + " ms";
 }
 
 }  // namespace f2::cli

@@ -45,7 +45,11 @@ class Progress {
 /// "1:05" / "1:02:05" for a number of seconds.
 std::string formatDuration(double seconds);
 
-/// A frame time with three significant digits: "9.28 ms", "45.1 ms", "312 ms", "1.25 s".
+/// A time with three significant digits: "0.250 ms", "9.28 ms", "45.1 ms", "312 ms", "1.25 s",
+/// "4350 s" (whole seconds beyond 100 s).
 std::string formatMilliseconds(double ms);
+
+/// `value` with three significant digits ("0.0412", "9.28", "45.1", "312"), whole beyond 100.
+std::string threeSignificantDigits(double value);
 
 }  // namespace f2::cli

@@ -2,6 +2,8 @@
 // or a video (mp4, webm, gif through ffmpeg).
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -11,6 +13,7 @@
 #include "interrupt.h"
 #include "io/frame_pattern.h"
 #include "io/image_sink.h"
+#include "io/output_target.h"
 #include "io/render_animation.h"
 #include "io/sequence_sink.h"
 #include "io/video_sink.h"
@@ -57,8 +60,12 @@ int interruptedExit() { return 128 + (interruptSignal() ? interruptSignal() : 2)
 
 std::string describe(const AnimationJob& job) {
     std::ostringstream s;
-    s << job.loaded->name << " frames " << job.range.first << "-" << job.range.lastRendered();
-    if (job.range.step > 1) s << " every " << job.range.step;
+    if (job.range.first == job.range.lastRendered()) {
+        s << job.loaded->name << " frame " << job.range.first;  // not "frames 5-5 every 10"
+    } else {
+        s << job.loaded->name << " frames " << job.range.first << "-" << job.range.lastRendered();
+        if (job.range.step > 1) s << " every " << job.range.step;
+    }
     if (job.range.shardCount > 1) s << " shard " << job.range.shardIndex << "/" << job.range.shardCount;
     s << " (" << job.view.width << "x" << job.view.height << ", " << job.range.outputFps << " fps, aa "
       << job.antialias;
@@ -221,6 +228,15 @@ int runRender(const RenderArgs& args) {
         if (!parsed) return usageError(error);
         range = *parsed;
     }
+    if (output->kind == OutputKind::Kind::Video && range.step > 1) {
+        // A video shows each frame for 1/fps s: skipping frames would play the animation too fast.
+        const long slower = std::max(1L, std::lround(double(fps) / double(range.step)));
+        return usageError("--frames " + args.frames + ": a video plays every frame it holds at " +
+                          std::to_string(fps) + " fps, so with a step of " + std::to_string(range.step) +
+                          " it would play " + std::to_string(range.step) +
+                          " times as fast; for a quick preview video lower the rate (--fps " +
+                          std::to_string(slower) + "), or write a sequence (-o preview/f_%04d.png)");
+    }
     Shard shard;
     if (!args.shard.empty()) {
         auto parsed = parseShard(args.shard, error);
@@ -231,6 +247,11 @@ int runRender(const RenderArgs& args) {
                                 0,           shard.index, shard.count,       range.step};
     if (frames.lastRendered() > lastFrame)
         std::cerr << "f2 render: warning: " << pastTheEndWarning(frames, lastFrame) << '\n';
+    // --frame is scene time; a scene without keys has no end to be past.
+    const int sceneLast = loaded->scene.lastFrame();
+    if (args.frames.empty() && !output->isAnimation() && sceneLast > 0 && args.frame > sceneLast)
+        std::cerr << "f2 render: warning: frame " << args.frame << " is past the animation's last frame "
+                  << sceneLast << ": it shows its final pose\n";
     AnimationJob job{&*loaded,       FrameView::sceneCamera(width, height),
                      frames,         args.antialias,
                      args.threads,   args.view,
@@ -250,7 +271,7 @@ int runRender(const RenderArgs& args) {
     if (output->kind == OutputKind::Kind::Sequence)
         return renderSequence(job, output->pattern, args.output, args.resume);
     // A single file's directory is created as a sequence's is.
-    if (output->kind != OutputKind::Kind::StandardOutput && !createParentDirectory(args.output, error)) {
+    if (output->kind != OutputKind::Kind::StandardOutput && !createDirectoryOf(args.output, error)) {
         std::cerr << "f2 render: " << error << '\n';
         return 1;
     }
@@ -283,8 +304,8 @@ Command addRenderCommand(CLI::App& app) {
             ->check(finiteNumberIn(0.0, 1e7, "a frame time"));
     sub->add_option("--frames", args->frames,
                     "Frames of a sequence or video: FIRST-LAST, FIRST or FIRST- (default: 0 to the last key "
-                    "frame), then optionally :STEP for every STEP-th frame (0-239:4); numbered at the output "
-                    "--fps")
+                    "frame), then optionally :STEP for every STEP-th frame of a sequence (0-239:4); numbered "
+                    "at the output --fps")
         ->excludes(sub->get_option("--frame"));
     sub->add_option("-o,--output", args->output,
                     "Output: .png, '-' (PNG to standard output), numbered PNG pattern, .mp4, .webm or .gif "

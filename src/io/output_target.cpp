@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <climits>
 #include <cstring>
+#include <filesystem>
 
 namespace f2 {
 
@@ -151,6 +152,27 @@ bool replaceWithTemporary(const std::string& tempPath, const OutputTarget& targe
     ::close(fd);
     if (std::rename(tempPath.c_str(), target.realPath.c_str()) != 0) {
         error = "cannot rename onto '" + target.path + "': " + std::strerror(errno);
+        return false;
+    }
+    return true;
+}
+
+bool createDirectoryOf(const std::string& path, std::string& error) {
+    const std::filesystem::path dir = std::filesystem::path(path).parent_path();
+    std::error_code ec;
+    if (dir.empty() || std::filesystem::is_directory(dir, ec)) return true;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) {
+        error = "cannot create the directory '" + dir.string() + "' for '" + path + "': ";
+        // "Not a directory" alone does not say which name is in the way.
+        for (std::filesystem::path p = dir; !p.empty() && p != p.root_path(); p = p.parent_path()) {
+            std::error_code statError;
+            if (std::filesystem::exists(p, statError) && !std::filesystem::is_directory(p, statError)) {
+                error += "'" + p.string() + "' is a file, not a directory; choose another output name";
+                return false;
+            }
+        }
+        error += ec.message();
         return false;
     }
     return true;

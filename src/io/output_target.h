@@ -23,6 +23,11 @@ struct OutputTarget {
 /// names a directory or a loop of links.
 bool resolveOutput(const std::string& path, OutputTarget& target, std::string& error);
 
+/// Creates the directory that will hold `path`, parents included (an existing
+/// one is fine). False with `error` set if that is impossible; when a file
+/// stands where a directory must go, the error names that file.
+bool createDirectoryOf(const std::string& path, std::string& error);
+
 /// What a Special target is, for messages: "a character device", "a FIFO", ...
 std::string specialFileDescription(const std::string& path);
 

@@ -72,7 +72,10 @@ bool writePng(const Image& image, std::FILE* stream, std::string& error) {
         error = "cannot write an empty image";
         return false;
     }
+    errno = 0;
     if (!writeRows(stream, image, error) || std::fflush(stream) != 0 || std::ferror(stream)) {
+        const int cause = errno;  // why the system refused (a full disk, /dev/full), if it did
+        if (std::ferror(stream) && cause != 0) error = std::strerror(cause);
         error = "cannot write the PNG to the stream" + (error.empty() ? std::string() : ": " + error);
         return false;
     }

@@ -25,12 +25,7 @@ bool PngSequenceSink::begin(const FrameFormat&, std::string&) {
 bool PngSequenceSink::makeDirectoryOf(const std::string& path, std::string& error) {
     const std::filesystem::path dir = std::filesystem::path(path).parent_path();
     if (dir.empty() || dir.string() == lastDirectory_) return true;
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);  // an existing one is fine
-    if (ec) {
-        error = "cannot create the directory '" + dir.string() + "': " + ec.message();
-        return false;
-    }
+    if (!createDirectoryOf(path, error)) return false;
     lastDirectory_ = dir.string();
     return true;
 }

@@ -40,7 +40,9 @@ if [[ "$output" == *%* ]]; then
   echo "ok: $n complete frames kept"
 else
   [ -e "$output" ] && { echo "FAIL: $output was written"; exit 1; }
-  pgrep -f "$(basename "$output")\.tmp" && { echo "FAIL: ffmpeg still running"; exit 1; }
+  # ffmpeg's output is file:ABSOLUTE-PATH.tmp-XXXXXX: matched by the whole path, since
+  # other builds on the machine may be running this very test at the same time.
+  pgrep -f -- "$(cd "$dir" && pwd)/$(basename "$output")\.tmp-" && { echo "FAIL: ffmpeg still running"; exit 1; }
   echo "ok: no video, no temporary file"
 fi
 exit 0

@@ -105,6 +105,18 @@ long-name)  # a legal 254-byte file name, as a PNG and as a video
   fi
   no_temporaries
   ;;
+stdout-full)  # standard output on a full disk: an error, never exit 0 without the output
+  [ -c /dev/full ] || skip "no /dev/full"
+  for command in "info $scene" "check $scene" "export $scene --pov" "render $scene --size 8x6 -o -" \
+    "render $scene --size 8x6 --pixel 1,1" "bench $scene --size 8x6 --frames 3 --warmup 0 --json"; do
+    # shellcheck disable=SC2086  # the words of $command are its arguments
+    "$f2" $command >/dev/full 2>out.txt
+    code=$?
+    cat out.txt
+    [ "$code" -eq 1 ] || fail "exit $code, expected 1: f2 $command >/dev/full"
+    grep -q "No space left on device" out.txt || fail "f2 $command >/dev/full does not say why it failed"
+  done
+  ;;
 pattern-dirs)  # the frame number in the directory part: each frame's directory is made
   run 0 "${small[@]}" --frames 0-3 -o out_%d/f.png
   for f in 0 1 2 3; do [ -s out_$f/f.png ] || fail "out_$f/f.png missing"; done

@@ -25,10 +25,12 @@
 #include "core/render/renderer.h"
 #include "io/atomic_file.h"
 #include "io/child_process.h"
+#include "io/image_sink.h"
 #include "io/png_writer.h"
 #include "io/render_animation.h"
 #include "io/sequence_sink.h"
 #include "io/video_encoder.h"
+#include "io/video_sink.h"
 #include "test_scenes.h"
 
 namespace f2 {
@@ -355,6 +357,50 @@ TEST_F(OutputDir, ALinkIsFollowedAndTheFileItNamesReplaced) {
     AtomicFile directory(dir_.string());
     EXPECT_FALSE(directory.ok());
     EXPECT_NE(directory.error().find("is a directory"), std::string::npos) << directory.error();
+}
+
+TEST_F(OutputDir, SinkErrorsSpeakOfFilesNotOfACommandLine) {
+    // The viewer shows these messages too: they state what is wrong with the
+    // file, and never advise a front end's options (-o, --frames, ...).
+    std::vector<std::string> errors;
+    auto collect = [&](FrameSink& sink, std::int64_t frames) {
+        std::string error;
+        Image image;
+        image.resize(8, 6);
+        std::atomic<bool> cancel{false};
+        bool ok = sink.begin({8, 6, 24, frames}, error) && sink.write(image, 0, error, &cancel) &&
+                  sink.finish(error, &cancel);
+        EXPECT_FALSE(ok) << "no error to look at";
+        sink.abandon();
+        errors.push_back(error);
+    };
+    std::ofstream(dir_ / "file").put('x');
+    std::string patternError;
+    auto underAFile = parseFramePattern((dir_ / "file" / "f_%04d.png").string(), patternError);
+    ASSERT_TRUE(underAFile) << patternError;
+    PngSequenceSink sequence(*underAFile);
+    collect(sequence, 1);
+    PngImageSink image((dir_ / "one.png").string());
+    collect(image, 3);
+    PngImageSink intoADirectory(dir_.string());
+    collect(intoADirectory, 1);
+    VideoSink video(dir_.string(), VideoFormat::Mp4);
+    collect(video, 1);
+    // Without ffmpeg on PATH (the error that used to suggest -o frames/f_%04d.png).
+    const char* path = std::getenv("PATH");
+    const std::string savedPath = path ? path : "";
+    ::setenv("PATH", (dir_ / "nothing_here").c_str(), 1);
+    VideoSink noFfmpeg((dir_ / "out.mp4").string(), VideoFormat::Mp4);
+    collect(noFfmpeg, 1);
+    ::setenv("PATH", savedPath.c_str(), 1);
+    ASSERT_EQ(errors.size(), 5u);
+    EXPECT_NE(errors[4].find("ffmpeg"), std::string::npos) << errors[4];
+    for (const std::string& e : errors) {
+        EXPECT_FALSE(e.empty());
+        EXPECT_EQ(e.find("-o "), std::string::npos) << e;
+        EXPECT_EQ(e.find("--"), std::string::npos) << e;
+        EXPECT_EQ(e.find("f2 "), std::string::npos) << e;
+    }
 }
 
 // ---------------------------------------------------------------------------

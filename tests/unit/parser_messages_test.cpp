@@ -53,6 +53,11 @@ TEST(CreatingCommandErrors, EveryKindOfErrorStillRegistersTheName) {
     // Bad numbers, bad sizes.
     EXPECT_EQ(messages("/sphere s -1 0 x 0\n/paint s 1 1 1\n"),
               (Lines{"1:11: error: radius must be > 0, got -1", "1:16: error: expected a number, got 'x'"}));
+    // Errors in expressions (second edition) and non-finite numbers.
+    EXPECT_EQ(messages("/robot Q 0 0 (1/0)\n/key 0 Q.head\n/sphere b (n) 0 0 0\n/paint b 1 1 1\n"
+                       "/box c 1 1 1 0 0 0 1 nan 0\n/paint c 1 1 1\n"),
+              (Lines{"1:16: error: division by zero", "3:12: error: unknown variable 'n'",
+                     "5:22: error: expected a finite number, got 'nan'"}));
     // Beyond the object limit.
     ParseLimits one;
     one.maxObjects = 1;
@@ -197,6 +202,18 @@ TEST(DidYouMean, NamesDifferingInCaseOrByATypo) {
                "5:8: error: unknown name 'q'"}));
 }
 
+TEST(DidYouMean, TheCameraWhereTheCommandTakesIt) {
+    EXPECT_EQ(
+        messages("/sphere s 1 0 0 5\n/amb_light 1\n/key 0 Camera\n/interp camra ease\n/attach Camera s\n"),
+        (Lines{"3:8: error: unknown name 'Camera' (did you mean 'camera'?)",
+               "4:9: error: unknown name 'camra' (did you mean 'camera'?)",
+               "5:9: error: unknown name 'Camera' (did you mean 'camera'?)"}));
+    // /paint does not take the camera: no such hint; an object's name still wins a tie.
+    EXPECT_EQ(messages("/sphere camera1 1 0 0 5\n/amb_light 1\n/paint Camera 1 1 1\n/key 0 camera2\n"),
+              (Lines{"3:8: error: unknown name 'Camera' (did you mean 'camera1'?)",
+                     "4:8: error: unknown name 'camera2' (did you mean 'camera1'?)"}));
+}
+
 TEST(DidYouMean, Parts) {
     const std::string robot = "/robot r1 0 0 0\n";
     EXPECT_EQ(messages(robot + "/key 0 r1.Head\n"),
@@ -215,12 +232,16 @@ TEST(DidYouMean, Parts) {
 
 TEST(SceneWarnings, NoLightMeansEveryObjectIsBlack) {
     const Lines black{
-        "1:9: warning: the scene has no light (no '/amb_light' or '/dir_light' with an intensity > 0): every "
-        "object renders black"};
+        "1:9: warning: the scene has no light (no '/amb_light', '/dir_light', '/point_light' or "
+        "'/spot_light' with an intensity > 0): every object renders black"};
     EXPECT_EQ(messages("/sphere s 1 0 0 5\n/sphere t 1 0 0 9\n"), black);
     EXPECT_EQ(messages("/sphere s 1 0 0 5\n/amb_light 0\n/dir_light 0 0 0 1\n"), black);
     EXPECT_EQ(messages("/sphere s 1 0 0 5\n/amb_light 0.1\n"), Lines{});
     EXPECT_EQ(messages("/sphere s 1 0 0 5\n/dir_light 1 0 0 1\n"), Lines{});
+    // Point and spot lights light a scene too; at intensity 0 they do not.
+    EXPECT_EQ(messages("/sphere s 1 0 0 5\n/point_light 0.5 0 9 0\n"), Lines{});
+    EXPECT_EQ(messages("/sphere s 1 0 0 5\n/spot_light 0.8 0 9 0 0 -1 0 20 30\n"), Lines{});
+    EXPECT_EQ(messages("/sphere s 1 0 0 5\n/point_light 0 0 9 0\n/spot_light 0 0 9 0 0 -1 0 20 30\n"), black);
     // The scene is still used.
     EXPECT_TRUE(parseScene("/sphere s 1 0 0 5\n", kFile).ok());
 }

@@ -99,6 +99,10 @@ TEST(ParserAttach, Errors) {
     expectOnlyError(two + "/attach a\n", 3, 1, "'/attach' takes 2 arguments, got 1");
     expectOnlyError(two + "/attach b r\n", 3, 9, "unknown name 'b'");
     expectOnlyError(two + "/attach a nobody.head\n", 3, 11, "unknown name 'nobody'");
+    // Both names on earlier lines: a target created later is unknown here.
+    expectOnlyError("/sphere a 1 0 0 0\n/attach a late.head\n/robot late 0 0 0\n", 2, 11,
+                    "unknown name 'late'");
+    expectOnlyError("/robot r 0 0 0\n/attach early r\n/sphere early 1 0 0 0\n", 2, 9, "unknown name 'early'");
     expectOnlyError(two + "/attach a r.leg\n", 3, 13, "unknown part 'leg'");
     expectOnlyError(two + "/attach r.head a\n", 3, 9, "only a whole object or the camera can be attached");
     expectOnlyError(two + "/attach a r\n/attach a r.head\n", 4, 9, "'a' is already attached (at 3:1)");

@@ -107,6 +107,13 @@ TEST(Expressions, ErrorsPointIntoTheExpression) {
     expectError("/sphere s (1 - 2) 0 0 0\n", 1, 11, "radius must be > 0, got -1");
 }
 
+TEST(Expressions, AnUnknownCommandIsOneErrorNotOnePerArgument) {
+    // Its arguments are not evaluated: nothing would use their values.
+    expectError("/sphre s (1/0) 0 0 0\n", 1, 1, "unknown command '/sphre' (did you mean '/sphere'?)");
+    expectError("/frob a{z} (y)\n", 1, 1, "unknown command '/frob'");
+    expectError("State: R (running)\n", 1, 1, "expected a command starting with '/', got 'State:'");
+}
+
 TEST(Expressions, IntegerFieldsTakeValuesWithinOneMillionth) {
     EXPECT_EQ(parseOk("/fps (24.0000004)\n").fps, 24);
     EXPECT_EQ(parseOk("/fps (100 / 3 * 3)\n").fps, 100);
@@ -227,30 +234,75 @@ TEST(Repeat, EndTakesNoArguments) {
     EXPECT_EQ(r.diagnostics[1].format(), "t.f2:2:6: error: '/end' takes no arguments (in /repeat i = 2)");
 }
 
+/// `text` gives exactly the one diagnostic `message`, before its loops ran.
+void expectRefusedAtOnce(std::string_view text, std::string_view message) {
+    const ParseResult r = parseScene(text, kFile);
+    ASSERT_EQ(r.diagnostics.size(), 1u) << dump(r);
+    EXPECT_EQ(r.diagnostics[0].format(), message);
+    EXPECT_LT(r.linesRead, 10u);
+}
+
 TEST(Repeat, AHugeLoopFailsBeforeItRuns) {
     // 1e12 passes of one line each: refused at once, nothing is run.
-    ParseResult r = parseScene("/repeat i 0 1e12\n/sphere s{i} 1 0 0 0\n/end\n", kFile);
-    ASSERT_EQ(r.diagnostics.size(), 1u) << dump(r);
-    EXPECT_EQ(
-        r.diagnostics[0].format(),
-        "t.f2:1:1: error: this loop would read at least 2000000000002 lines (1000000000001 passes) after 1, "
-        "more than the limit of 10000000 lines read in all");
-    EXPECT_LT(r.linesRead, 10u);
+    expectRefusedAtOnce("/repeat i 0 1e12\n/sphere s{i} 1 0 0 0\n/end\n",
+                        "t.f2:1:1: error: this loop would read at least 2000000000002 lines (1000000000001 "
+                        "passes) after 1, more than the limit of 10000000 lines read in all");
     // An empty body still costs its /end per pass.
     expectError("/repeat i 0 1e12\n/end\n", 1, 1, "this loop would read at least 1000000000001 lines");
-    // Nested: the inner loop is refused on the outer loop's first pass.
-    expectError("/repeat i 1 1\n  /repeat j 0 1e9\n  /end\n/end\n", 2, 3,
+    // Nested, the inner loop's bounds numbers: the outer loop counts its
+    // passes too (1 + (10^9 + 1) * 1 + 1 lines a pass), and is refused at once.
+    expectError("/repeat i 1 1\n  /repeat j 0 1e9\n  /end\n/end\n", 1, 1,
+                "this loop would read at least 1000000003 lines (1 passes)");
+    // An inner loop with an expression for a bound is refused when it starts.
+    expectError("/repeat i 1 1\n  /repeat j 0 (1e9)\n  /end\n/end\n", 2, 3,
                 "this loop would read at least 1000000001 lines");
     // Found on a later pass of the outer loop: reading stops there, with one error.
     expectError(
-        "/repeat i 1 3\n  /repeat j 1 4\n  /end\n/end\n", 2, 3,
-        "this loop would read at least 4 lines (4 passes) after 8, more than the limit of 10 lines read in "
+        "/repeat i 1 3\n  /repeat j 1 (i + 2)\n  /end\n/end\n", 2, 3,
+        "this loop would read at least 4 lines (4 passes) after 7, more than the limit of 10 lines read in "
         "all (in /repeat i = 2)",
         [] {
             ParseLimits l;
             l.maxExpandedLines = 10;
             return l;
         }());
+}
+
+TEST(Repeat, InnerLoopsWithNumbersForBoundsAreForeseen) {
+    // 5,000 x 5,000 passes of a comment: refused before the first line is read,
+    // not after ten million of them.
+    expectRefusedAtOnce(
+        "/repeat a 1 5000\n/repeat b 1 5000\n#\n/end\n/end\n",
+        "t.f2:1:1: error: this loop would read at least 50010000 lines (5000 passes) after 1, "
+        "more than the limit of 10000000 lines read in all");
+    // Three deep: each level multiplies.
+    expectError("/repeat a 1 300\n/repeat b 1 300\n/repeat c 1 300\n/end\n/end\n/end\n", 1, 1,
+                "at least 27180600 lines (300 passes)");
+    // Exactly at the limit still runs: 1 + 2 * (1 + 3 * (1 + 1) + 1) = 17 lines.
+    ParseLimits limits;
+    limits.maxExpandedLines = 17;
+    parseOk("/repeat a 1 2\n/repeat b 1 3\n#\n/end\n/end\n", limits);
+    limits.maxExpandedLines = 16;
+    expectError("/repeat a 1 2\n/repeat b 1 3\n#\n/end\n/end\n", 1, 1, "at least 16 lines (2 passes) after 1",
+                limits);
+    // An inner loop that will be refused reads nothing: it is not counted.
+    ParseLimits shallow;
+    shallow.maxLoopDepth = 1;
+    expectError("/repeat a 1 1\n/repeat b 1 1e12\n/end\n/end\n", 2, 1, "loops are nested more than 1 deep",
+                shallow);
+    expectError("/repeat a 1 1\n/repeat pi 1 1e12\n/end\n/end\n", 2, 9, "'pi' is predefined");
+}
+
+TEST(Repeat, AStepTooSmallToMoveTheValueIsCountedAtOnce) {
+    // 1e16 + k * 1e-10 stays 1e16 for about 10^10 passes: counted, not walked.
+    expectError("/repeat i 1e16 1e16 1e-10\n/end\n", 1, 1,
+                "this loop would read at least 10000000001 lines (10000000001 passes)");
+    // Here it never moves: the count stops at 2^53, far beyond any limit.
+    expectError("/repeat i -1e30 -1e30 -1e-5\n/end\n", 1, 1,
+                "this loop would read at least 9007199254740992");
+    // Rounding near the end of an ordinary loop still gives the exact count.
+    EXPECT_EQ(parseOk("/repeat x 1 0 -0.1\n/sphere s{round(x*10)} 1 0 0 0\n/end\n").objects.size(), 11u);
+    EXPECT_EQ(parseOk("/repeat x 0 0.3 0.1\n/sphere s{round(x*10)} 1 0 0 0\n/end\n").objects.size(), 3u);
 }
 
 TEST(Repeat, TheLineLimitCountsEveryPass) {

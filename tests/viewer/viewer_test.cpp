@@ -77,6 +77,7 @@ class ViewerTest : public QObject {
     void brokenFileShowsErrorsAndKeepsImage();
     void reloadsAfterEditorReplacesFile();
     void reloadsWhenAnIncludedFileChanges();
+    void problemsNameTheIncludedFileAndLoopValues();
     void windowRespondsDuringSlowFrame();
     void latestRequestWins();
     void exportWritesPngSequence();
@@ -698,6 +699,31 @@ void ViewerTest::reloadsWhenAnIncludedFileChanges() {
     writeFile(later, "/fps 32\n");
     QTRY_COMPARE_WITH_TIMEOUT(doc.scene()->fps, 32, kWaitMs);
     QVERIFY(!doc.hasErrors());
+}
+
+void ViewerTest::problemsNameTheIncludedFileAndLoopValues() {
+    QTemporaryDir dir;
+    QVERIFY(QDir(dir.path()).mkpath("parts"));
+    const QString path = smallSceneFile(dir);
+    const QString part = dir.filePath("parts/ring.f2");
+    writeFile(part, "# a ring of spheres\n/sphere s{i} (2 - i) (i) 0 8\n");
+    auto w = windowOn(path, 5);
+    QVERIFY(w);
+    const auto goodScene = w->document()->scene();
+
+    // Line 9 of the scene loops over the included file; its pass i = 2 gives
+    // radius 0, an error on line 2 of parts/ring.f2 at the "(" (column 14).
+    writeFile(path,
+              QByteArray(kSmallScene).append("/repeat i 0 2\n  /include parts/ring.f2\n/end\n/fps 0\n"));
+    QTRY_VERIFY_WITH_TIMEOUT(w->document()->hasErrors(), kWaitMs);
+    QCOMPARE(w->document()->scene(), goodScene);
+    QCOMPARE(problemsText(*w), part + ":2:14: error: radius must be > 0, got 0 (in /repeat i = 2)\n" + path +
+                                   ":12:6: error: fps must be a whole number from 1 to 1000, got 0");
+    QVERIFY(w->diagnosticsDock()->isVisible());
+    // Only the problem in the open file is underlined in its editor.
+    QCOMPARE(int(w->editor()->problems().size()), 1);
+    QCOMPARE(w->editor()->problems().front().line, 12);
+    QCOMPARE(w->editor()->problems().front().column, 6);
 }
 
 void ViewerTest::windowRespondsDuringSlowFrame() {

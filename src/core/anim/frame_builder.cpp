@@ -1,6 +1,8 @@
 #include "core/anim/frame_builder.h"
 
 #include <algorithm>
+#include <cassert>
+#include <cmath>
 
 #include "core/anim/animation_program.h"
 #include "core/anim/light_frame.h"
@@ -74,6 +76,9 @@ constexpr std::size_t kObjectsPerChunk = 256;
 }  // namespace
 
 void evaluateFrame(const SceneDesc& scene, double t, EvaluatedFrame& frame, ThreadPool* pool) {
+    // The front ends refuse a time that is not a finite number (a NaN frame is
+    // meaningless); the tracks still stay on their keys if one gets through.
+    assert(std::isfinite(t));
     evaluateLights(scene, frame);
     frame.ambient = scene.ambient;
     frame.background = toUnitColor(scene.background);

@@ -222,6 +222,10 @@ class Parser : private ExpansionSink {
     void expansionError(Pos pos, std::string message) override {
         report(Severity::Error, pos, message + expander_.loopNote(), false);
     }
+    bool knowsCommand(std::string_view command) const override {
+        return std::any_of(kCommands.begin(), kCommands.end(),
+                           [command](const CommandName& c) { return c.name == command; });
+    }
 
     /// "3:5", or "FILE:3:5" when `p` is in another file than the current line.
     std::string posText(Pos p) const {
@@ -518,8 +522,10 @@ class Parser : private ExpansionSink {
         return true;
     }
 
-    /// Looks up an existing object by name; `token` is the whole argument, for the message.
-    std::optional<std::size_t> existing(std::string_view name, std::string_view token, Pos pos) {
+    /// Looks up an existing object by name; `token` is the whole argument, for the message;
+    /// `cameraToo`: the command also takes `camera`, so it is a suggestion too ("Camera").
+    std::optional<std::size_t> existing(std::string_view name, std::string_view token, Pos pos,
+                                        bool cameraToo = false) {
         if (!isValidName(name)) {
             error(pos,
                   noteCharacters("invalid target " + quoteToken(token) + " (expected a name or name.part)",
@@ -529,7 +535,7 @@ class Parser : private ExpansionSink {
         auto it = names_.find(name);
         if (it == names_.end()) {
             std::string message = "unknown name " + quoteToken(name);
-            if (const std::string_view guess = suggestName(name); !guess.empty()) {
+            if (const std::string_view guess = suggestName(name, cameraToo); !guess.empty()) {
                 message += " (did you mean '" + std::string(guess) + "'?)";
             }
             error(pos, std::move(message));
@@ -539,14 +545,15 @@ class Parser : private ExpansionSink {
         return it->second;
     }
 
-    /// The existing name closest to a mistyped one, in file order, within a
-    /// total work budget for the whole file.
-    std::string_view suggestName(std::string_view name) {
+    /// The existing name closest to a mistyped one, in file order (then
+    /// `camera` if `cameraToo`), within a total work budget for the whole file.
+    std::string_view suggestName(std::string_view name, bool cameraToo) {
         ClosestWord closest(name);
         for (const SceneObject& o : scene_.objects) {
             if (nameSuggestWork_ >= kMaxNameSuggestWork) break;
             nameSuggestWork_ += closest.consider(o.name);
         }
+        if (cameraToo) closest.consider(kCameraName);
         return closest.best();
     }
 
@@ -591,7 +598,8 @@ class Parser : private ExpansionSink {
             }
             return Target{0, -1, true};
         }
-        const std::optional<std::size_t> object = existing(text.substr(0, dot), text, pos);
+        const std::optional<std::size_t> object =
+            existing(text.substr(0, dot), text, pos, cameraUse != CameraTarget::Refused);
         if (!object) return std::nullopt;
         if (dot == std::string_view::npos) return Target{*object, -1};
         // Point at the part itself, just after the dot (of the token as written: "r{i}.head").
@@ -935,8 +943,8 @@ class Parser : private ExpansionSink {
                                      [](const LocalLight& l) { return l.intensity > 0; });
         if (!lit) {
             warning(books_.front().defined,
-                    "the scene has no light (no '/amb_light' or '/dir_light' with an intensity > 0): "
-                    "every object renders black");
+                    "the scene has no light (no '/amb_light', '/dir_light', '/point_light' or "
+                    "'/spot_light' with an intensity > 0): every object renders black");
         }
     }
 
@@ -1150,7 +1158,7 @@ class Parser : private ExpansionSink {
                 error(argPos(0),
                       "only a whole object or the camera can be attached, got " + quoteToken(name));
             } else {
-                child = existing(name, name, argPos(0));
+                child = existing(name, name, argPos(0), true);
             }
         }
         const std::optional<Target> parent = target(1);

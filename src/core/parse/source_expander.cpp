@@ -42,14 +42,31 @@ std::string_view firstWord(std::string_view line) {
 /// from + k·step has not passed `to`. Exact for any count a scene can run;
 /// beyond 2^53 only its size matters (it breaks the line limit).
 double loopPasses(double from, double to, double step) {
-    auto within = [&](double v) { return step > 0 ? v <= to : v >= to; };
-    if (!within(from)) return 0;
+    // from + k·step, rounded as the loop computes it, never moves back as k
+    // grows, so "within" holds for k = 0 … n−1 and fails from n on, and n is
+    // found by search in at most ~110 steps. (Walking k one by one near the
+    // estimate hung on `/repeat i 1e16 1e16 1e-10`, where adding the step
+    // changes nothing for 10^10 passes.)
+    auto within = [&](double k) {
+        const double v = from + k * step;
+        return step > 0 ? v <= to : v >= to;
+    };
+    if (!within(0)) return 0;
+    constexpr double kExactCounts = 9e15;  // below 2^53: every whole k is a double
     const double span = std::floor((to - from) / step);
-    if (!(span < 9e15)) return span + 1;
-    double n = span + 1;
-    while (n > 0 && !within(from + (n - 1) * step)) --n;
-    while (within(from + n * step)) ++n;
-    return n;
+    if (!(span < kExactCounts)) return span + 1;
+    double inside = 0;                         // within(inside) holds
+    double outside = std::max(span, 0.0) + 1;  // first guess of n
+    for (double gap = 1; within(outside); gap *= 2) {
+        inside = outside;
+        outside += gap;
+        if (outside >= kExactCounts) return outside;
+    }
+    while (outside - inside > 1) {
+        const double middle = std::floor(inside + (outside - inside) / 2);
+        (within(middle) ? inside : outside) = middle;
+    }
+    return outside;
 }
 
 /// A whole number in decimal digits, never in exponent form ("r{1e3}" is r1000).
@@ -57,6 +74,25 @@ std::string wholeText(double whole) {
     std::array<char, 400> buffer{};
     const int n = std::snprintf(buffer.data(), buffer.size(), "%.0f", whole);
     return std::string(buffer.data(), static_cast<std::size_t>(n > 0 ? n : 0));
+}
+
+/// Passes of a `/repeat` line whose bounds are numbers written out (no
+/// expression, no variable) and that cannot fail, else nullopt: such an inner
+/// loop runs the same passes on every pass of the loops around it.
+std::optional<double> literalLoopPasses(std::string_view line) {
+    LineTokens tokens;
+    tokenizeLine(line, tokens);
+    if (tokens.count != 4 && tokens.count != 5) return std::nullopt;
+    const std::string_view variable = tokens.tokens[1].text;
+    if (!isVariableName(variable) || Variables::isPredefined(variable)) return std::nullopt;
+    double bounds[3] = {0, 0, 1};
+    for (int i = 2; i < tokens.count; ++i) {
+        const ParsedNumber n = parseNumber(tokens.tokens[static_cast<std::size_t>(i)].text);
+        if (n.status != NumberStatus::Ok) return std::nullopt;
+        bounds[i - 2] = n.value;
+    }
+    if (bounds[2] == 0) return std::nullopt;
+    return loopPasses(bounds[0], bounds[1], bounds[2]);
 }
 
 }  // namespace
@@ -121,6 +157,10 @@ struct SourceExpander::LoopInfo {
     LineReader afterEnd{std::string_view()};  ///< reader state just after the /end line
     std::uint64_t passLines = 0;  ///< lines every pass reads: the body outside inner loops, and the /end
     std::uint64_t passBytes = 0;
+    /// The same with every pass of the inner loops whose bounds are numbers
+    /// (literalLoopPasses), valid when `innerDepth` more loops may still nest.
+    double deepLines = 0, deepBytes = 0;
+    int innerDepth = 0;
 };
 
 struct SourceExpander::SourceFile {
@@ -131,10 +171,14 @@ struct SourceExpander::SourceFile {
     std::unordered_map<int, LoopInfo> loops;  ///< by the line number of the /repeat
 
     /// Pairs each /repeat with its /end (a /repeat left open has no entry).
-    void findLoops(std::uint64_t& lineCount) {
+    /// A line longer than `maxLineBytes` is refused when read, so a loop on it never runs.
+    void findLoops(std::uint64_t& lineCount, std::size_t maxLineBytes) {
         struct Open {
             int line;
-            std::uint64_t lines, bytes;
+            std::uint64_t lines = 0, bytes = 0;
+            double deepLines = 0, deepBytes = 0;
+            int innerDepth = 0;
+            std::optional<double> passes;  ///< when its bounds are numbers
         };
         std::vector<Open> open;
         LineReader reader(text);
@@ -146,14 +190,33 @@ struct SourceExpander::SourceFile {
             if (word == "/end" && !open.empty()) {
                 const Open o = open.back();
                 open.pop_back();
-                loops[o.line] = LoopInfo{reader, o.lines + 1, o.bytes + bytes};
+                const LoopInfo info{reader,
+                                    o.lines + 1,
+                                    o.bytes + bytes,
+                                    o.deepLines + 1,
+                                    o.deepBytes + static_cast<double>(bytes),
+                                    o.innerDepth};
+                loops[o.line] = info;
+                if (!open.empty() && o.passes) {
+                    Open& outer = open.back();
+                    outer.deepLines += *o.passes * info.deepLines;
+                    outer.deepBytes += *o.passes * info.deepBytes;
+                    outer.innerDepth = std::max(outer.innerDepth, o.innerDepth + 1);
+                }
                 continue;
             }
             if (!open.empty()) {
                 open.back().lines += 1;
                 open.back().bytes += bytes;
+                open.back().deepLines += 1;
+                open.back().deepBytes += static_cast<double>(bytes);
             }
-            if (word == "/repeat") open.push_back({line.number, 0, 0});
+            if (word == "/repeat") {
+                Open o;
+                o.line = line.number;
+                if (line.text.size() <= maxLineBytes) o.passes = literalLoopPasses(line.text);
+                open.push_back(o);
+            }
         }
     }
 };
@@ -184,7 +247,7 @@ void SourceExpander::start(std::string_view text, std::string name,
     source->text = text;
     source->directory = std::filesystem::path(name).parent_path().string();
     source->identity = identity;
-    source->findLoops(linesInFiles_);
+    source->findLoops(linesInFiles_, limits_.maxLineBytes);
     fileBytes_ += text.size();
     const int nameIndex = addFile(std::move(name));
     fileStack_.push_back({source.get(), LineReader(source->text), nameIndex, 0});
@@ -263,7 +326,7 @@ bool SourceExpander::next(LogicalLine& out) {
         } else if (command == "/include") {
             runInclude(line.text, out);
         } else {
-            evaluateTokens(out, 1);
+            if (sink_.knowsCommand(command)) evaluateTokens(out, 1);
             return true;
         }
     }
@@ -443,8 +506,12 @@ void SourceExpander::runRepeat(const LogicalLine& line, int lineNumber) {
     if (passes == 0) return skipLoop(info);
     // The limits are checked before the first pass: every pass reads at least
     // its own lines, so a loop that cannot fit fails now, not after an hour.
-    const double lines = passes * static_cast<double>(info.passLines);
-    const double bytes = passes * static_cast<double>(info.passBytes);
+    // Inner loops with numbers for bounds count too, unless they would nest
+    // too deep (then they are skipped with an error, and read nothing).
+    const bool deep = loopStack_.size() + 1 + static_cast<std::size_t>(info.innerDepth) <=
+                      static_cast<std::size_t>(limits_.maxLoopDepth);
+    const double lines = passes * (deep ? info.deepLines : static_cast<double>(info.passLines));
+    const double bytes = passes * (deep ? info.deepBytes : static_cast<double>(info.passBytes));
     // Reading stops there, as when the limit is reached line by line.
     if (static_cast<double>(linesRead_) + lines > static_cast<double>(limits_.maxLines)) {
         error(commandPos, "this loop would read at least " + wholeText(lines) + " lines (" +
@@ -591,7 +658,7 @@ const SourceExpander::SourceFile* SourceExpander::loadFile(const std::string& pa
     source->text = source->owned;
     source->directory = std::filesystem::path(path).parent_path().string();
     source->identity = std::pair{read.device, read.inode};
-    source->findLoops(linesInFiles_);
+    source->findLoops(linesInFiles_, limits_.maxLineBytes);
     fileBytes_ += source->text.size();
     sources_.push_back(std::move(source));
     return sources_.back().get();

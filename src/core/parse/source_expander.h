@@ -72,6 +72,9 @@ class ExpansionSink {
    public:
     virtual ~ExpansionSink() = default;
     virtual void expansionError(SourcePos pos, std::string message) = 0;
+    /// Whether `command` is one the receiver runs: the arguments of an unknown
+    /// command are not evaluated, so its one error is not followed by theirs.
+    virtual bool knowsCommand(std::string_view /*command*/) const { return true; }
 };
 
 /// Reading a file for the parser: a regular file only (a FIFO or a device is

@@ -5,6 +5,7 @@
 /// (SIMD types).
 #include "core/geometry/bvh_packet.h"
 #include "core/render/frame_scene.h"
+#include "core/render/packet_beam.h"
 #include "core/render/packet_checker.h"
 #include "core/render/packet_light_sampling.h"
 #include "core/render/ray_counts.h"
@@ -104,12 +105,16 @@ inline Float visibleFraction(Int visible, std::uint32_t samples) {
     return simd::toFloat(visible) / Float(float(samples));
 }
 
+/// The most nodes a soft sun's shadow rays start from, per packet (packetEntryNodes()).
+constexpr std::size_t kPacketEntryNodes = 8;
+
 /// Colours (0..1, unclamped) of a packet's surfaces lit by the frame's lights,
 /// background where nothing was hit. The shadow rays toward light i start
-/// from shadowEntry[i] (Bvh::beamEntryNodes of a box holding their origins),
-/// or from the root for lights past the end of shadowEntry.
+/// from shadowEntry[i].nodes (Bvh::beamEntryNodes of a box holding their
+/// origins; for a soft sun narrowed to this packet's beam first), or from
+/// the root for lights past the end of shadowEntry.
 inline ColorP shadeSurfaces(const FrameScene& frame, const PacketSurface& s,
-                            std::span<const std::span<const std::uint32_t>> shadowEntry, RayCounts& counts) {
+                            std::span<const LightEntry> shadowEntry, RayCounts& counts) {
     ColorP out{Float(frame.background.x), Float(frame.background.y), Float(frame.background.z)};
     if (simd::none(s.hitLanes)) return out;
     const std::uint32_t root = 0;
@@ -122,12 +127,20 @@ inline ColorP shadeSurfaces(const FrameScene& frame, const PacketSurface& s,
         Mask lit = s.hitLanes & (nDotL > Float(0.0f));
         if (simd::none(lit)) continue;
         Float intensity(light.intensity);
-        std::span<const std::uint32_t> entry = i < shadowEntry.size() ? shadowEntry[i] : std::span{&root, 1};
+        std::span<const std::uint32_t> entry =
+            i < shadowEntry.size() ? shadowEntry[i].nodes : std::span{&root, 1};
         if (light.sampleCount == 0) {
             counts.shadow += laneCount(lit);
             lit = simd::andNot(lit, occludedPacket(frame.bvh, ParallelRays(s.shadowOrigin, light.toLight),
                                                    lit, Float(0.0f), Float(kInfinity), s.skip, entry));
         } else {
+            // One beam test per node for all the samples, instead of one per sample.
+            std::uint32_t narrowed[kPacketEntryNodes];
+            if (i < shadowEntry.size()) {
+                const std::size_t n =
+                    packetEntryNodes(frame.bvh, shadowEntry[i], s.shadowOrigin, lit, s.skip, narrowed);
+                if (n <= kPacketEntryNodes) entry = {narrowed, n};
+            }
             Int visible =
                 visibleSunSamplesP(frame, light, s.shadowOrigin, s.normal, s.skip, lit, entry, counts);
             lit = lit & (Int(0) < visible);

@@ -128,6 +128,9 @@ class TileRenderer {
                 }
                 ShadowEntries shadowEntry(frame_, lo, hi);
                 for (int k = 0; k < blocks; ++k) {
+                    // Also per block: under 1,000 soft lights (256 shadow rays each) one
+                    // sample pass of a tile takes seconds, and Ctrl+C must stop within one.
+                    if (cancel && cancel->load(std::memory_order_relaxed)) return false;
                     ColorP c = shadeSurfaces(frame_, surfaces_[k], shadowEntry.perLight(), counts_);
                     c = withReflections(frame_, surfaces_[k], c, counts_);
                     if (aa_ > 1) c = clamped(c);  // the average of displayed values
@@ -159,20 +162,25 @@ class TileRenderer {
             for (std::size_t i = 0; i < count_; ++i) {
                 const LightSample& light = frame.lights[i];
                 // A soft sun's samples all start from the nodes that one of its directions reaches.
-                const std::size_t n =
-                    light.sampleCount == 0
-                        ? frame.bvh.beamEntryNodes(origins, light.toLight, store_[i])
-                        : frame.bvh.beamEntryNodes(
-                              origins, std::span(&frame.sunDirections[light.firstSample], light.sampleCount),
-                              store_[i]);
-                entries_[i] = {store_[i], n};
+                const std::span<const Vec3> samples =
+                    std::span<const Vec3>(frame.sunDirections).subspan(light.firstSample, light.sampleCount);
+                const std::size_t n = light.sampleCount == 0
+                                          ? frame.bvh.beamEntryNodes(origins, light.toLight, store_[i])
+                                          : frame.bvh.beamEntryNodes(origins, samples, store_[i]);
+                entries_[i].nodes = {store_[i], n};
+                // Each packet narrows these nodes to its own beam toward all the samples (packetEntryNodes).
+                for (const Vec3 d : samples) {
+                    entries_[i].directions.lo = vmin(entries_[i].directions.lo, d);
+                    entries_[i].directions.hi = vmax(entries_[i].directions.hi, d);
+                }
+                entries_[i].slack = beamSlack(frame.bvh);
             }
         }
-        std::span<const std::span<const std::uint32_t>> perLight() const { return {entries_, count_}; }
+        std::span<const LightEntry> perLight() const { return {entries_, count_}; }
 
        private:
         std::uint32_t store_[kShadowEntryLights][kEntryNodes];
-        std::span<const std::uint32_t> entries_[kShadowEntryLights];
+        LightEntry entries_[kShadowEntryLights];
         std::size_t count_ = 0;
     };
 
