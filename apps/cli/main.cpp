@@ -12,6 +12,20 @@
 #include "options.h"
 
 namespace {
+/// "unknown option '--bogus'", "unexpected arguments 'b' 'c'": the words CLI11 did not take, in order.
+std::string unexpectedArguments(const std::vector<std::string>& extras) {
+    bool allOptions = true;
+    std::string quoted;
+    for (const std::string& word : extras) {
+        allOptions = allOptions && word.size() > 1 && word[0] == '-';
+        quoted += (quoted.empty() ? "'" : " '") + word + "'";
+    }
+    const bool many = extras.size() > 1;
+    return (allOptions ? (many ? "unknown options " : "unknown option ")
+                       : (many ? "unexpected arguments " : "unexpected argument ")) +
+           quoted;
+}
+
 /// A command that did its work but whose standard output was lost (`f2 info >
 /// /dev/full`, a full disk) has failed: exit 1 with the reason, as coreutils
 /// do, instead of 0 without the output it promised.
@@ -60,6 +74,15 @@ int main(int argc, char** argv) {
         app.parse(argc, argv);
     } catch (const CLI::Success& e) {
         return app.exit(e);  // --help, --version
+    } catch (const CLI::ExtrasError&) {
+        // CLI11 lists the extra arguments in reverse ("c b" for `f2 render a b c`): name them in order.
+        std::string command;
+        std::vector<std::string> extras = app.remaining();
+        for (const CLI::App* sub : app.get_subcommands()) {
+            command = sub->get_name();
+            extras = sub->remaining();
+        }
+        return f2::cli::usageError(command, unexpectedArguments(extras));
     } catch (const CLI::ParseError& e) {
         // CLI11's own exit codes (105, 109, ...) would break the promise of 2
         // for every usage error; its message names the option.

@@ -19,8 +19,10 @@ namespace f2::viewer {
 namespace {
 constexpr double kStatsWarmUpSeconds = 1.0;  // skip start-up (first frames, window mapping)
 
-[[noreturn]] void fail(QCommandLineParser& parser, const QString& message) {
-    std::fprintf(stderr, "f2-viewer: %s\n\n%s", qPrintable(message), qPrintable(parser.helpText()));
+/// A usage error as f2 reports one: one line with a pointer to --help, exit 2.
+[[noreturn]] void fail(QString message) {
+    if (message.endsWith('.')) message.chop(1);  // Qt's "Unknown option 'x'."
+    std::fprintf(stderr, "f2-viewer: %s (see f2-viewer --help)\n", qPrintable(message));
     std::exit(2);
 }
 }  // namespace
@@ -41,16 +43,18 @@ ViewerOptions parseViewerOptions(const QApplication& app) {
                                   "the window's size and, when paused, refined), then quit.",
                                   "file");
     parser.addOptions({frame, scale, size, quitAfter, stats, screenshot});
+    // process() would exit 1 on an unknown option; parse first, then let it show --help or --version.
+    if (!parser.parse(app.arguments())) fail(parser.errorText());
     parser.process(app);
 
     ViewerOptions options;
     const QStringList args = parser.positionalArguments();
-    if (args.size() > 1) fail(parser, "expected at most one scene file");
+    if (args.size() > 1) fail("expected at most one scene file");
     if (!args.isEmpty()) options.scene = args.first();
     bool ok = true;
     if (parser.isSet(frame)) {
         options.frame = parser.value(frame).toDouble(&ok);
-        if (!ok || *options.frame < 0) fail(parser, "--frame: expected a number >= 0");
+        if (!ok || *options.frame < 0) fail("--frame: expected a number >= 0");
     }
     if (parser.isSet(scale)) {
         const QString s = parser.value(scale);
@@ -63,23 +67,22 @@ ViewerOptions parseViewerOptions(const QApplication& app) {
         else if (s == "scene")
             options.scale = int(RenderScale::SceneSize);
         else
-            fail(parser, "--scale: expected 25, 50, 100 or scene");
+            fail("--scale: expected 25, 50, 100 or scene");
     }
     if (parser.isSet(size)) {
         const QStringList wh = parser.value(size).split('x');
         bool okW = false, okH = false;
         if (wh.size() == 2) options.viewportSize = QSize(wh[0].toInt(&okW), wh[1].toInt(&okH));
         if (!okW || !okH || options.viewportSize.width() < 16 || options.viewportSize.height() < 16)
-            fail(parser, "--size: expected WIDTHxHEIGHT such as 800x600");
+            fail("--size: expected WIDTHxHEIGHT such as 800x600");
     }
     if (parser.isSet(quitAfter)) {
         options.quitAfterSeconds = parser.value(quitAfter).toDouble(&ok);
-        if (!ok || options.quitAfterSeconds <= 0) fail(parser, "--quit-after: expected seconds > 0");
+        if (!ok || options.quitAfterSeconds <= 0) fail("--quit-after: expected seconds > 0");
     }
     options.stats = parser.isSet(stats);
     options.screenshot = parser.value(screenshot);
-    if (parser.isSet(screenshot) && options.screenshot.isEmpty())
-        fail(parser, "--screenshot: expected a file");
+    if (parser.isSet(screenshot) && options.screenshot.isEmpty()) fail("--screenshot: expected a file");
     return options;
 }
 

@@ -98,6 +98,25 @@ TEST(UnusualCharacters, ANoBreakSpaceBetweenArgumentsIsNamedInTheCountError) {
             "and tabs do)"}));
 }
 
+TEST(UnusualCharacters, InExpressionsAndTheCountsOfLetAndRepeat) {
+    EXPECT_EQ(
+        messages("/amb_light 1\n/let n\u00A08\n/repeat i 0\u00A03\n/end\n"),
+        (Lines{"2:1: error: '/let' takes 2 arguments (a variable and a number), got 1 (it contains U+00A0 "
+               "NO-BREAK SPACE at column 7, which does not separate tokens: only spaces and tabs do)",
+               "3:1: error: '/repeat' takes 3 or 4 arguments (a variable, from, to and an optional step), "
+               "got 2 (it contains U+00A0 NO-BREAK SPACE at column 12, which does not separate tokens: "
+               "only spaces and tabs do)"}));
+    EXPECT_EQ(
+        messages("/amb_light 1\n/sphere s 1 0 0 (1 +\u00A02)\n/sphere t 1 0 0 (2 \u2212 1)\n"
+                 "/sphere u 1 0 0 (\u201C1)\n/sphere v 1 0 0 (1 \xE9)\n"),
+        (Lines{"2:21: error: unexpected U+00A0 NO-BREAK SPACE in the expression (which does not separate "
+               "tokens: only spaces and tabs do)",
+               "3:20: error: unexpected U+2212 MINUS SIGN in the expression (which is not a minus: write "
+               "'-')",
+               "4:18: error: unexpected U+201C LEFT DOUBLE QUOTATION MARK in the expression",
+               "5:20: error: unexpected byte 0xE9 in the expression (which is not UTF-8 text)"}));
+}
+
 TEST(UnusualCharacters, DashesAndMinusSignsInNumbers) {
     EXPECT_EQ(
         messages("/sphere s 10 \u22125 0 0\n"),
@@ -271,6 +290,9 @@ TEST(SceneWarnings, ASecondInterpForTheSameTarget) {
     EXPECT_EQ(r.scene->objects[0].track.interpolation, Interpolation::Linear);  // the last one wins
     EXPECT_EQ(r.scene->objects[0].partTracks[static_cast<std::size_t>(PartId::LHand)].interpolation,
               Interpolation::Spline);
+    // The camera is a target like any other.
+    EXPECT_EQ(messages("/sphere s 1 0 0 5\n/amb_light 1\n/interp camera ease\n/interp camera spline\n"),
+              (Lines{"4:9: warning: interpolation of 'camera' is given again; it replaces the one at 3:9"}));
     // A broken /interp does not count as the first.
     EXPECT_EQ(messages("/robot r1 0 0 0\n/amb_light 1\n/interp r1 cubic\n/interp r1 ease\n"),
               (Lines{"3:12: error: unknown interpolation 'cubic' (expected linear, ease, ease_in, ease_out, "

@@ -9,6 +9,7 @@
 
 #include "core/parse/lexer.h"
 #include "core/parse/number.h"
+#include "core/parse/unusual_char.h"
 
 namespace f2 {
 
@@ -167,6 +168,13 @@ class ExpressionParser {
         if (pos_ >= text_.size()) {
             fail(pos_, "the expression ends too early");
         } else {
+            const std::string_view rest = text_.substr(pos_);
+            if (const auto c = unusualCharacterAt(rest)) {
+                // Not '\xc2': a no-break space copied from a web page is named as such.
+                fail(pos_, "unexpected " + c->name + " in the expression" +
+                               (c->hint.empty() ? "" : " (" + c->hint + ")"));
+                return;
+            }
             fail(pos_, "unexpected " + quoteToken(text_.substr(pos_, 1)) + " in the expression");
         }
     }

@@ -306,25 +306,12 @@ class Parser : private ExpansionSink {
     bool failed(int i) const { return argToken(i).form == TokenForm::Failed; }
 
     /// The line from its first token to the end of its last stored one (no comment), as written.
-    std::string_view commandLine() const {
-        const LogicalToken& first = tokens_.tokens[0];
-        const LogicalToken& last =
-            tokens_.tokens[static_cast<std::size_t>(std::min(tokens_.count, kMaxStoredTokens) - 1)];
-        const auto begin = static_cast<std::size_t>(first.column - 1);
-        return tokens_.raw.substr(begin,
-                                  static_cast<std::size_t>(last.column - 1) + last.written.size() - begin);
-    }
+    std::string_view commandLine() const { return writtenCommand(tokens_); }
 
     /// `message` with a note naming an invisible or unusual character of
     /// `text` (found at `pos`): a no-break space looks like a space in the message.
     static std::string noteCharacters(std::string message, std::string_view text, Pos pos) {
-        const std::string note = unusualCharacterNote(text, pos.column);
-        if (note.empty()) return message;
-        if (message.ends_with(')')) {
-            message.insert(message.size() - 1, (message.ends_with("?)") ? " " : "; ") + note);
-            return message;
-        }
-        return message + " (" + note + ")";
+        return withUnusualCharacterNote(std::move(message), text, pos.column);
     }
 
     void parseLine() {

@@ -13,6 +13,7 @@
 #include <tuple>
 
 #include "core/parse/number.h"
+#include "core/parse/unusual_char.h"
 
 namespace f2 {
 
@@ -454,10 +455,21 @@ bool SourceExpander::variableName(const LogicalToken& name, std::string_view can
     return true;
 }
 
+std::string_view writtenCommand(const LogicalLine& line) {
+    const LogicalToken& first = line.tokens[0];
+    const LogicalToken& last =
+        line.tokens[static_cast<std::size_t>(std::min(line.count, kMaxStoredTokens) - 1)];
+    const auto begin = static_cast<std::size_t>(first.column - 1);
+    return line.raw.substr(begin, static_cast<std::size_t>(last.column - 1) + last.written.size() - begin);
+}
+
 void SourceExpander::runLet(const LogicalLine& line) {
     if (line.count != 3) {
+        // A no-break space glues the two arguments into one, so the count is the first thing wrong.
         error(at(line.tokens[0].column),
-              "'/let' takes 2 arguments (a variable and a number), got " + std::to_string(line.count - 1));
+              withUnusualCharacterNote(
+                  "'/let' takes 2 arguments (a variable and a number), got " + std::to_string(line.count - 1),
+                  writtenCommand(line), line.tokens[0].column));
         return;
     }
     const LogicalToken& name = line.tokens[1];
@@ -481,8 +493,10 @@ void SourceExpander::runRepeat(const LogicalLine& line, int lineNumber) {
     const LoopInfo& info = found->second;
     if (line.count != 4 && line.count != 5) {
         error(commandPos,
-              "'/repeat' takes 3 or 4 arguments (a variable, from, to and an optional step), got " +
-                  std::to_string(line.count - 1));
+              withUnusualCharacterNote(
+                  "'/repeat' takes 3 or 4 arguments (a variable, from, to and an optional step), got " +
+                      std::to_string(line.count - 1),
+                  writtenCommand(line), line.tokens[0].column));
         return skipLoop(info);
     }
     const LogicalToken& name = line.tokens[1];

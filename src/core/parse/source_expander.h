@@ -57,6 +57,11 @@ struct LogicalLine {
     std::string_view raw;  ///< the line as written
 };
 
+/// The command as written, from its first token to the end of its last stored
+/// one: the comment left out, the spaces between tokens kept (a no-break space
+/// that glued two arguments together is found there).
+std::string_view writtenCommand(const LogicalLine& line);
+
 /// Limits of the expansion; the values come from ParseLimits.
 struct ExpansionLimits {
     std::uint64_t maxLines = 0;  ///< lines read in all, each loop pass again

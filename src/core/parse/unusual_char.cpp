@@ -82,34 +82,59 @@ bool isOrdinary(std::uint8_t b) { return (b > 0x20 && b < 0x7F) || b == ' ' || b
 
 }  // namespace
 
+namespace {
+
+/// The character at text[i], which is not ordinary: its name and what to do.
+UnusualCharacter describe(std::string_view text, std::size_t i) {
+    const auto b = static_cast<std::uint8_t>(text[i]);
+    char code[16];
+    if (text.substr(i).starts_with("\xFF\xFE") || text.substr(i).starts_with("\xFE\xFF")) {
+        return {"bytes " + std::string(b == 0xFF ? "0xFF 0xFE" : "0xFE 0xFF"),
+                "a UTF-16 byte order mark: save the file as UTF-8"};
+    }
+    const Utf8Char d = decodeUtf8(text, i);
+    if (d.bytes == 0) {
+        std::snprintf(code, sizeof code, "0x%02X", static_cast<unsigned>(b));
+        return {"byte " + std::string(code), "which is not UTF-8 text"};
+    }
+    std::snprintf(code, sizeof code, "U+%04X", static_cast<unsigned>(d.code));
+    for (const NamedCharacter& c : kNamed) {
+        if (c.code == d.code) {
+            std::string_view hint = hintText(c.hint);
+            if (!hint.empty()) hint.remove_prefix(2);  // ", "
+            return {std::string(code) + " " + std::string(c.name), std::string(hint)};
+        }
+    }
+    if (d.code < 0x20 || (d.code >= 0x7F && d.code < 0xA0)) return {code, "a control character"};
+    return {code, "but commands, names and numbers are plain ASCII"};
+}
+
+}  // namespace
+
 std::string unusualCharacterNote(std::string_view text, int column) {
     for (std::size_t i = 0; i < text.size(); ++i) {
-        const auto b = static_cast<std::uint8_t>(text[i]);
-        if (isOrdinary(b)) continue;
-        const std::string at = " at column " + std::to_string(column + static_cast<int>(i));
-        const Utf8Char d = decodeUtf8(text, i);
-        char code[16];
-        if (text.substr(i).starts_with("\xFF\xFE") || text.substr(i).starts_with("\xFE\xFF")) {
-            return "it contains the bytes " + std::string(b == 0xFF ? "0xFF 0xFE" : "0xFE 0xFF") + at +
-                   ", a UTF-16 byte order mark: save the file as UTF-8";
-        }
-        if (d.bytes == 0) {
-            std::snprintf(code, sizeof code, "0x%02X", static_cast<unsigned>(b));
-            return "it contains the byte " + std::string(code) + at + ", which is not UTF-8 text";
-        }
-        std::snprintf(code, sizeof code, "U+%04X", static_cast<unsigned>(d.code));
-        for (const NamedCharacter& c : kNamed) {
-            if (c.code == d.code) {
-                return "it contains " + std::string(code) + " " + std::string(c.name) + at +
-                       std::string(hintText(c.hint));
-            }
-        }
-        if (d.code < 0x20 || (d.code >= 0x7F && d.code < 0xA0)) {
-            return "it contains " + std::string(code) + at + ", a control character";
-        }
-        return "it contains " + std::string(code) + at + ", but commands, names and numbers are plain ASCII";
+        if (isOrdinary(static_cast<std::uint8_t>(text[i]))) continue;
+        const UnusualCharacter c = describe(text, i);
+        const bool bytes = c.name.starts_with("byte");  // "the byte 0xE9", "U+00A0 NO-BREAK SPACE"
+        return "it contains " + std::string(bytes ? "the " : "") + c.name + " at column " +
+               std::to_string(column + static_cast<int>(i)) + (c.hint.empty() ? "" : ", " + c.hint);
     }
     return {};
+}
+
+std::optional<UnusualCharacter> unusualCharacterAt(std::string_view text) {
+    if (text.empty() || isOrdinary(static_cast<std::uint8_t>(text[0]))) return std::nullopt;
+    return describe(text, 0);
+}
+
+std::string withUnusualCharacterNote(std::string message, std::string_view text, int column) {
+    const std::string note = unusualCharacterNote(text, column);
+    if (note.empty()) return message;
+    if (message.ends_with(')')) {
+        message.insert(message.size() - 1, (message.ends_with("?)") ? " " : "; ") + note);
+        return message;
+    }
+    return message + " (" + note + ")";
 }
 
 }  // namespace f2

@@ -170,7 +170,7 @@ struct SceneDesc {
     /// Indices of the attached objects, each after the object it rides on
     /// when that one is attached too: the order in which to evaluate them.
     std::vector<std::uint32_t> attachOrder;
-    /// The objects' animation compiled for evaluation (anim/frame_builder).
+    /// The objects' animation compiled for evaluation (anim/animation_program.h).
     AnimationCache animation;
 
     /// Last frame of the animation: the largest key frame of the scene (0 if none).
