@@ -1,5 +1,6 @@
 #include "core/anim/animation_program.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -7,6 +8,7 @@
 #include <unordered_map>
 
 #include "core/scene/models.h"
+#include "core/util/streaming_store.h"
 
 namespace f2 {
 
@@ -186,58 +188,82 @@ void AnimationProgram::segmentsAt(double t, std::vector<TrackSegment>& segments)
     }
 }
 
+void AnimationProgram::objectFrames(std::size_t i, const TrackSegment* segments,
+                                    const std::vector<Transform>& attachedRoots, ObjectFrames& out) const {
+    const std::uint32_t root = rootSource[i];
+    if (root == kConstantRoot) {
+        out.root = constantRoots[i];
+    } else if (root == kAttached) {
+        out.root = attachedRoots[i];
+    } else {
+        const Pose pose = trackPose(root & ~kAnimated, segments);
+        out.root = Transform::fromPose(pose.position, pose.rotation);
+    }
+    const ObjectKind kind = kinds[i];
+    if (!isModel(kind)) return;
+
+    // Part frames, parents first (SPEC 5).
+    for (const ModelPart& part : modelOf(kind).parts) {
+        const int index = int(part.id);
+        const Transform& worldFromParent = part.parent < 0 ? out.root : out.parts[part.parent];
+        const std::uint32_t source = partSource[i][std::size_t(index)];
+        if (source & kTurning) {
+            const TurnTrack& turn = turnTracks[source & ~kTurning];
+            out.parts[index] = childFrameTurned(worldFromParent, part.pivot + turn.offset,
+                                                turnAngle(source & ~kTurning, segments), turn.axis);
+        } else if (source & kAnimated) {
+            const Pose motion = trackPose(source & ~kAnimated, segments);
+            out.parts[index] = childFrame(worldFromParent, part.pivot + motion.position, motion.rotation);
+        } else {
+            const ConstantMotion& motion = constantMotions[source];
+            out.parts[index] = childFrame(worldFromParent, part.pivot + motion.offset,
+                                          motion.rotated ? &motion.rotation : nullptr);
+        }
+    }
+}
+
 void AnimationProgram::evaluateObjects(std::size_t begin, std::size_t end, const TrackSegment* segments,
                                        bool refill, EvaluatedFrame& frame) const {
+    ObjectFrames frames;
     for (std::size_t i = begin; i < end; ++i) {
         if (refill && still[i]) continue;
-        // The object's root frame.
-        const std::uint32_t root = rootSource[i];
-        Transform worldFromRoot;
-        if (root == kConstantRoot) {
-            worldFromRoot = constantRoots[i];
-        } else if (root == kAttached) {
-            worldFromRoot = frame.attachedRoots[i];
-        } else {
-            const Pose pose = trackPose(root & ~kAnimated, segments);
-            worldFromRoot = Transform::fromPose(pose.position, pose.rotation);
-        }
-
+        objectFrames(i, segments, frame.attachedRoots, frames);
         const std::uint32_t first = firstPrimitive[i];
+        const std::uint32_t count = firstPrimitive[i + 1] - first;
         Primitive* prims = &frame.primitives[first];
-        const Surface* look = &surfaces[firstSurface[i]];
-        const ObjectKind kind = kinds[i];
-        if (!isModel(kind)) {
-            *prims = makePrimitive(shapeKindOf(kind), sizes[i], worldFromRoot);
-            if (!refill) frame.surfaces[first] = *look;
-            continue;
-        }
+        for (std::uint32_t shape = 0; shape < count; ++shape)
+            prims[shape] = objectPrimitive(i, shape, frames);
+        if (!refill) std::memcpy(&frame.surfaces[first], &surfaces[firstSurface[i]], count * sizeof(Surface));
+    }
+}
 
-        // Part frames, parents first (SPEC 5).
-        const ModelDef& model = modelOf(kind);
-        std::array<Transform, kPartCount> worldFromPart;
-        for (const ModelPart& part : model.parts) {
-            const int index = int(part.id);
-            const Transform& worldFromParent = part.parent < 0 ? worldFromRoot : worldFromPart[part.parent];
-            const std::uint32_t source = partSource[i][std::size_t(index)];
-            if (source & kTurning) {
-                const TurnTrack& turn = turnTracks[source & ~kTurning];
-                worldFromPart[index] = childFrameTurned(worldFromParent, part.pivot + turn.offset,
-                                                        turnAngle(source & ~kTurning, segments), turn.axis);
-            } else if (source & kAnimated) {
-                const Pose motion = trackPose(source & ~kAnimated, segments);
-                worldFromPart[index] =
-                    childFrame(worldFromParent, part.pivot + motion.position, motion.rotation);
+void AnimationProgram::evaluateObjectsIntoLeaves(std::size_t begin, std::size_t end,
+                                                 const TrackSegment* segments, EvaluatedFrame& frame,
+                                                 std::span<const std::uint32_t> leafOf,
+                                                 std::span<Primitive> leaves) const {
+    // A large frame does not fit in the caches: both copies are then written
+    // around them, without first reading each line from memory (a smaller one
+    // stays in cache for the refit and the rays).
+    const bool stream = frame.primitives.size() >= kStreamingPrimitives;
+    ObjectFrames frames;
+    for (std::size_t i = begin; i < end; ++i) {
+        if (still[i]) continue;
+        objectFrames(i, segments, frame.attachedRoots, frames);
+        const std::uint32_t first = firstPrimitive[i];
+        const std::uint32_t count = firstPrimitive[i + 1] - first;
+        for (std::uint32_t shape = 0; shape < count; ++shape) {
+            const Primitive primitive = objectPrimitive(i, shape, frames);
+            Primitive& leaf = leaves[leafOf[first + shape]];
+            if (stream) {
+                streamingStore(&leaf, primitive);
+                streamingStore(&frame.primitives[first + shape], primitive);
             } else {
-                const ConstantMotion& motion = constantMotions[source];
-                worldFromPart[index] = childFrame(worldFromParent, part.pivot + motion.offset,
-                                                  motion.rotated ? &motion.rotation : nullptr);
+                leaf = primitive;
+                frame.primitives[first + shape] = primitive;
             }
         }
-        for (const ModelShape& shape : model.shapes)
-            *prims++ = makePrimitive(shape.kind, shape.size,
-                                     worldFromPart[int(shape.part)].translated(shape.centre));
-        if (!refill) std::memcpy(&frame.surfaces[first], look, model.shapes.size() * sizeof(Surface));
     }
+    streamingStoreFence();
 }
 
 std::shared_ptr<const AnimationProgram> animationProgramOf(const SceneDesc& scene) {

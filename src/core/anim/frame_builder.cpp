@@ -75,7 +75,7 @@ namespace {
 constexpr std::size_t kObjectsPerChunk = 256;
 }  // namespace
 
-void evaluateFrame(const SceneDesc& scene, double t, EvaluatedFrame& frame, ThreadPool* pool) {
+FrameEvaluation FrameEvaluation::begin(const SceneDesc& scene, double t, EvaluatedFrame& frame) {
     // The front ends refuse a time that is not a finite number (a NaN frame is
     // meaningless); the tracks still stay on their keys if one gets through.
     assert(std::isfinite(t));
@@ -85,31 +85,55 @@ void evaluateFrame(const SceneDesc& scene, double t, EvaluatedFrame& frame, Thre
 
     // Each object owns a fixed run of primitive slots, so objects can be
     // evaluated in any order, in parallel, straight into place.
-    std::shared_ptr<const AnimationProgram> program = animationProgramOf(scene);
-    const bool refill = frame.filledBy == program;
+    FrameEvaluation evaluation;
+    evaluation.program = animationProgramOf(scene);
+    evaluation.refill = frame.filledBy == evaluation.program;
     frame.filledBy = nullptr;  // until the frame is whole again
-    frame.firstPrimitive = program->firstPrimitive;
-    const std::size_t total = program->firstPrimitive.back();
+    frame.firstPrimitive = evaluation.program->firstPrimitive;
+    const std::size_t total = evaluation.program->firstPrimitive.back();
     frame.primitives.resize(total);
     frame.surfaces.resize(total);
     // Attached objects need their parents' frames first: one pass in order.
     attachedRootFrames(scene, t, frame.attachedRoots);
     // Where t falls among the keys, once per key layout.
-    program->segmentsAt(t, frame.segments);
+    evaluation.program->segmentsAt(t, frame.segments);
+    return evaluation;
+}
 
-    const std::size_t objectCount = scene.objects.size();
-    auto evaluateChunk = [&](std::uint32_t chunk) {
-        const std::size_t begin = chunk * kObjectsPerChunk;
-        program->evaluateObjects(begin, std::min(objectCount, begin + kObjectsPerChunk),
-                                 frame.segments.data(), refill, frame);
+namespace {
+/// body(begin, end) for chunks of objects [0, count), on the pool when there is one.
+template <class Body>
+void forObjectChunks(std::size_t count, ThreadPool* pool, const Body& body) {
+    auto chunk = [&](std::uint32_t c) {
+        const std::size_t begin = c * kObjectsPerChunk;
+        body(begin, std::min(count, begin + kObjectsPerChunk));
     };
-    std::uint32_t chunks = std::uint32_t((objectCount + kObjectsPerChunk - 1) / kObjectsPerChunk);
+    const auto chunks = std::uint32_t((count + kObjectsPerChunk - 1) / kObjectsPerChunk);
     if (pool) {
-        pool->parallelFor(chunks, evaluateChunk);
+        pool->parallelFor(chunks, chunk);
     } else {
-        for (std::uint32_t c = 0; c < chunks; ++c) evaluateChunk(c);
+        for (std::uint32_t c = 0; c < chunks; ++c) chunk(c);
     }
-    frame.filledBy = std::move(program);
+}
+}  // namespace
+
+void FrameEvaluation::evaluateObjects(EvaluatedFrame& frame, ThreadPool* pool) const {
+    forObjectChunks(program->kinds.size(), pool, [&](std::size_t begin, std::size_t end) {
+        program->evaluateObjects(begin, end, frame.segments.data(), refill, frame);
+    });
+}
+
+void FrameEvaluation::evaluateObjectsIntoLeaves(EvaluatedFrame& frame, std::span<const std::uint32_t> leafOf,
+                                                std::span<Primitive> leaves, ThreadPool* pool) const {
+    forObjectChunks(program->kinds.size(), pool, [&](std::size_t begin, std::size_t end) {
+        program->evaluateObjectsIntoLeaves(begin, end, frame.segments.data(), frame, leafOf, leaves);
+    });
+}
+
+void evaluateFrame(const SceneDesc& scene, double t, EvaluatedFrame& frame, ThreadPool* pool) {
+    FrameEvaluation evaluation = FrameEvaluation::begin(scene, t, frame);
+    evaluation.evaluateObjects(frame, pool);
+    std::move(evaluation).finish(frame);
 }
 
 }  // namespace f2

@@ -1,6 +1,9 @@
 #pragma once
 /// Evaluates the animation of a scene at a time: key frames -> part frames ->
 /// world-space primitives.
+#include <memory>
+#include <span>
+
 #include "core/anim/evaluated_frame.h"
 #include "core/math/transform.h"
 #include "core/util/thread_pool.h"
@@ -45,5 +48,25 @@ Vec3 partShapeCentre(ObjectKind kind, int part, const Transform& worldFromPart);
 /// renderer's business (FrameScene::bvh, updated from frame.primitives).
 /// `t` must be a finite number (asserted; the front ends refuse others).
 void evaluateFrame(const SceneDesc& scene, double t, EvaluatedFrame& frame, ThreadPool* pool = nullptr);
+
+/// evaluateFrame in two halves, for a caller that writes the objects' primitives
+/// itself (render/frame_preparation.h): begin() does everything but the
+/// objects (lights, attached roots, where t falls among the keys, the arrays
+/// sized); then every object is evaluated, by evaluateObjects() or by the
+/// caller with `program` (AnimationProgram::evaluatePrimitives); then finish().
+struct FrameEvaluation {
+    std::shared_ptr<const AnimationProgram> program;
+    /// The frame already holds this program's surfaces and still objects.
+    bool refill = false;
+
+    static FrameEvaluation begin(const SceneDesc& scene, double t, EvaluatedFrame& frame);
+    /// Every object's primitives (and surfaces), in scene order, on the pool's threads if given.
+    void evaluateObjects(EvaluatedFrame& frame, ThreadPool* pool) const;
+    /// The same for a refilled frame, also writing primitive i into
+    /// leaves[leafOf[i]] (AnimationProgram::evaluateObjectsIntoLeaves).
+    void evaluateObjectsIntoLeaves(EvaluatedFrame& frame, std::span<const std::uint32_t> leafOf,
+                                   std::span<Primitive> leaves, ThreadPool* pool) const;
+    void finish(EvaluatedFrame& frame) && { frame.filledBy = std::move(program); }
+};
 
 }  // namespace f2

@@ -1,6 +1,7 @@
 #include "core/geometry/bvh.h"
 
 #include <algorithm>
+#include <cassert>
 
 namespace f2 {
 
@@ -316,15 +317,19 @@ float Bvh::refitNode(std::uint32_t index) {
     return node.bounds.halfArea() * kTraversalCost;
 }
 
-float Bvh::refit(std::span<const Primitive> primitives, ThreadPool* pool) {
-    // Copy the moved primitives into leaf order: reading the frame in order and
-    // scattering the writes keeps the loads sequential (they would miss cache
-    // gathered in leaf order).
-    const std::uint32_t n = std::uint32_t(primitives.size());
-    forChunks(pool, (n + kRefitChunk - 1) / kRefitChunk, [&](std::uint32_t chunk) {
-        for (std::uint32_t i = chunk * kRefitChunk; i < std::min(n, (chunk + 1) * kRefitChunk); ++i)
-            ordered_[position_[i]] = primitives[i];
-    });
+float Bvh::refit(std::span<const Primitive> primitives, ThreadPool* pool, const LeafWriter* write) {
+    if (write) {
+        (*write)(position_, ordered_);
+    } else {
+        // Copy the moved primitives into leaf order: reading the frame in order and
+        // scattering the writes keeps the loads sequential (they would miss cache
+        // gathered in leaf order).
+        const std::uint32_t n = std::uint32_t(primitives.size());
+        forChunks(pool, (n + kRefitChunk - 1) / kRefitChunk, [&](std::uint32_t chunk) {
+            for (std::uint32_t i = chunk * kRefitChunk; i < std::min(n, (chunk + 1) * kRefitChunk); ++i)
+                ordered_[position_[i]] = primitives[i];
+        });
+    }
     forChunks(pool, std::uint32_t(subtrees_.size()), [&](std::uint32_t k) {
         const Subtree& subtree = subtrees_[k];
         float sum = 0;
@@ -339,9 +344,17 @@ float Bvh::refit(std::span<const Primitive> primitives, ThreadPool* pool) {
 }
 
 bool Bvh::update(std::span<const Primitive> primitives, ThreadPool* pool) {
+    return refitOrRebuild(primitives, pool, nullptr);
+}
+
+bool Bvh::update(std::span<const Primitive> primitives, const LeafWriter& write, ThreadPool* pool) {
+    assert(refits(primitives.size()));  // else nothing would write the frame
+    return refitOrRebuild(primitives, pool, &write);
+}
+
+bool Bvh::refitOrRebuild(std::span<const Primitive> primitives, ThreadPool* pool, const LeafWriter* write) {
     subtreesRebuilt_ = 0;
-    if (!nodes_.empty() && primitives.size() == ordered_.size() &&
-        refit(primitives, pool) <= costAtBuild_ * kRebuildGrowth) {
+    if (refits(primitives.size()) && refit(primitives, pool, write) <= costAtBuild_ * kRebuildGrowth) {
         rebuildDegradedSubtrees(primitives, pool);
         return false;
     }

@@ -4,6 +4,7 @@
 /// primitives and rebuilds it only when its quality has drifted too far.
 /// Buffers are reused across builds.
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -42,6 +43,19 @@ class Bvh {
     /// every frame instead of all at once now and then.
     /// Returns true when it rebuilt the whole tree.
     bool update(std::span<const Primitive> primitives, ThreadPool* pool = nullptr);
+    /// Writes every primitive of this frame into leaf order, primitive i into
+    /// leaves[leafOf[i]] (and wherever else the caller keeps it): see below.
+    using LeafWriter =
+        std::function<void(std::span<const std::uint32_t> leafOf, std::span<Primitive> leaves)>;
+    /// update() when the caller evaluates the frame's primitives itself,
+    /// straight into the tree's leaf order: `write` is called once, before the
+    /// refit, instead of the copy of `primitives` into leaf order. `primitives`
+    /// (the frame, in its own order) must hold every primitive once `write` has
+    /// returned: the writer fills it too, and rebuilds read it. Requires
+    /// refits(primitives.size()).
+    bool update(std::span<const Primitive> primitives, const LeafWriter& write, ThreadPool* pool);
+    /// True when update() of `count` primitives starts by refitting the last tree.
+    bool refits(std::size_t count) const { return !nodes_.empty() && count == ordered_.size(); }
     static constexpr float kRebuildGrowth = 1.3f;
     static constexpr float kSubtreeRebuildGrowth = 1.1f;
     static constexpr std::uint32_t kSubtreeBudget = 16;
@@ -155,8 +169,11 @@ class Bvh {
     /// Returns its term of the SAH sum.
     float refitNode(std::uint32_t index);
 
-    /// Recomputes every node's bounds from `primitives` (same count as built); returns sahCost().
-    float refit(std::span<const Primitive> primitives, ThreadPool* pool);
+    /// Recomputes every node's bounds from `primitives` (same count as built),
+    /// copied into leaf order, or written there by `write` when given; returns sahCost().
+    float refit(std::span<const Primitive> primitives, ThreadPool* pool, const LeafWriter* write);
+    /// update(), with or without a writer.
+    bool refitOrRebuild(std::span<const Primitive> primitives, ThreadPool* pool, const LeafWriter* write);
     /// SAH sum (unnormalised) of subtree k's nodes, its root included.
     float subtreeSahSum(std::size_t k) const;
     /// Rebuilds the degraded subtrees (see update()), on the pool's threads.

@@ -19,7 +19,8 @@ inline constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
 /// Intersection data of a primitive. `axes` are the rows of localFromWorld:
 /// local coordinate i of a world point p is dot(axes[i], p - centre).
-struct Primitive {
+/// One cache line each, on a line boundary.
+struct alignas(64) Primitive {
     Vec3 centre;
     Vec3 axes[3];
     /// Sphere: (r, -, -); cylinder: (r, h/2, -); box: half sides.
@@ -27,6 +28,7 @@ struct Primitive {
     ShapeKind kind;
     bool axisAligned = false;  ///< axes are exactly the world axes (fast box test)
 };
+static_assert(sizeof(Primitive) == 64);
 
 /// Axis-aligned world bounds.
 struct Bounds {

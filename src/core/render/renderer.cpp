@@ -5,6 +5,7 @@
 
 #include "core/anim/frame_builder.h"
 #include "core/render/diagnostic_view.h"
+#include "core/render/frame_preparation.h"
 #include "core/render/packet_reflection.h"
 #include "core/render/packet_shading.h"
 #include "core/render/reflection.h"
@@ -299,13 +300,9 @@ void traceReference(const FrameScene& frame, const Camera& camera, Image& out) {
 }
 
 void Renderer::prepare(const SceneDesc& scene, double t, FrameTimings& timings) {
-    auto start = Clock::now();
-    evaluateFrame(scene, t, frame_, &pool_);
-    timings.evaluateMs += millisecondsSince(start);
-
-    start = Clock::now();
-    frame_.bvh.update(frame_.primitives, &pool_);
-    timings.buildMs += millisecondsSince(start);
+    const PreparationTimes times = prepareFrame(scene, t, frame_, &pool_);
+    timings.evaluateMs += times.evaluateMs;
+    timings.buildMs += times.buildMs;
 }
 
 FrameTimings Renderer::render(const SceneDesc& scene, double t, const Camera& camera, Image& out,

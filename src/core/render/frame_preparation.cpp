@@ -1,0 +1,43 @@
+#include "core/render/frame_preparation.h"
+
+#include <chrono>
+
+#include "core/anim/frame_builder.h"
+
+namespace f2 {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double millisecondsSince(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+}  // namespace
+
+PreparationTimes prepareFrame(const SceneDesc& scene, double t, FrameScene& frame, ThreadPool* pool) {
+    PreparationTimes times;
+    auto start = Clock::now();
+    FrameEvaluation evaluation = FrameEvaluation::begin(scene, t, frame);
+    // A frame not refilled needs its surfaces written, object by object.
+    if (!evaluation.refill || !frame.bvh.refits(frame.primitives.size())) {
+        evaluation.evaluateObjects(frame, pool);
+        std::move(evaluation).finish(frame);
+        times.evaluateMs = millisecondsSince(start);
+        start = Clock::now();
+        frame.bvh.update(frame.primitives, pool);
+        times.buildMs = millisecondsSince(start);
+        return times;
+    }
+    times.evaluateMs = millisecondsSince(start);
+    start = Clock::now();
+    frame.bvh.update(
+        frame.primitives,
+        [&](std::span<const std::uint32_t> leafOf, std::span<Primitive> leaves) {
+            evaluation.evaluateObjectsIntoLeaves(frame, leafOf, leaves, pool);
+        },
+        pool);
+    std::move(evaluation).finish(frame);
+    times.buildMs = millisecondsSince(start);
+    return times;
+}
+
+}  // namespace f2
