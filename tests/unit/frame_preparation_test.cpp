@@ -3,7 +3,7 @@
 // Bvh::update give, bit for bit: the frame's primitives, the tree, the leaf
 // order, the rebuild decisions; over playback forwards, backwards, by jumps
 // that force rebuilds, the same time again, on a pool and serially, and for a
-// frame large enough to be written around the caches.
+// frame as large as those that take that path by default.
 #include "core/render/frame_preparation.h"
 
 #include <gtest/gtest.h>
@@ -76,12 +76,13 @@ PathsTaken expectSameAsEvaluateThenUpdate(const SceneDesc& scene, const std::vec
 
         evaluateFrame(scene, t, serialReference);
         serialReference.bvh.update(serialReference.primitives);
-        prepareFrame(scene, t, serial, nullptr);
+        // Small frames too take the path under test (kIntoLeavesFrom is for speed).
+        prepareFrame(scene, t, serial, nullptr, 0);
         expectSamePrepared(serialReference, serial, what);
         evaluateFrame(scene, t, pooledReference, &pool);
         const bool rebuilt = pooledReference.bvh.update(pooledReference.primitives, &pool);
         paths.rebuiltAfterRefit += intoLeaves && (rebuilt || pooledReference.bvh.subtreesRebuilt() > 0);
-        prepareFrame(scene, t, pooled, &pool);
+        prepareFrame(scene, t, pooled, &pool, 0);
         expectSamePrepared(pooledReference, pooled, what + " (pool)");
         if (::testing::Test::HasFatalFailure()) break;
     }
@@ -122,11 +123,11 @@ TEST(FramePreparation, RobotsMatchEvaluateThenUpdateBitForBit) {
     EXPECT_GT(paths.rebuiltAfterRefit, 0);
 }
 
-TEST(FramePreparation, AFrameWrittenAroundTheCachesMatchesBitForBit) {
-    // Enough primitives for the streaming stores (kStreamingPrimitives).
+TEST(FramePreparation, AFrameLargerThanTheCachesMatchesBitForBit) {
+    // As many primitives as a frame that takes that path by default.
     const BenchSceneSpec spec{BenchShape::Robots, 11000};
     const SceneDesc scene = test::sceneFromText(benchSceneText(spec));
-    ASSERT_GE(animationProgramOf(scene)->firstPrimitive.back(), AnimationProgram::kStreamingPrimitives);
+    ASSERT_GE(animationProgramOf(scene)->firstPrimitive.back(), kIntoLeavesFrom);
     EXPECT_EQ(expectSameAsEvaluateThenUpdate(scene, {3.0, 3.0, 7.5, 30.25}, benchSceneName(spec)).intoLeaves,
               3);
 }

@@ -241,10 +241,8 @@ void AnimationProgram::evaluateObjectsIntoLeaves(std::size_t begin, std::size_t 
                                                  const TrackSegment* segments, EvaluatedFrame& frame,
                                                  std::span<const std::uint32_t> leafOf,
                                                  std::span<Primitive> leaves) const {
-    // A large frame does not fit in the caches: both copies are then written
-    // around them, without first reading each line from memory (a smaller one
-    // stays in cache for the refit and the rays).
-    const bool stream = frame.primitives.size() >= kStreamingPrimitives;
+    // A large frame does not fit in the caches: both copies are written around
+    // them, without first reading each line from memory.
     ObjectFrames frames;
     for (std::size_t i = begin; i < end; ++i) {
         if (still[i]) continue;
@@ -253,14 +251,8 @@ void AnimationProgram::evaluateObjectsIntoLeaves(std::size_t begin, std::size_t 
         const std::uint32_t count = firstPrimitive[i + 1] - first;
         for (std::uint32_t shape = 0; shape < count; ++shape) {
             const Primitive primitive = objectPrimitive(i, shape, frames);
-            Primitive& leaf = leaves[leafOf[first + shape]];
-            if (stream) {
-                streamingStore(&leaf, primitive);
-                streamingStore(&frame.primitives[first + shape], primitive);
-            } else {
-                leaf = primitive;
-                frame.primitives[first + shape] = primitive;
-            }
+            streamingStore(&leaves[leafOf[first + shape]], primitive);
+            streamingStore(&frame.primitives[first + shape], primitive);
         }
     }
     streamingStoreFence();

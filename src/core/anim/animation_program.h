@@ -142,12 +142,10 @@ struct AnimationProgram {
     /// are then not written again.
     void evaluateObjects(std::size_t begin, std::size_t end, const TrackSegment* segments, bool refill,
                          EvaluatedFrame& frame) const;
-    /// From this many primitives (4 MiB a copy) evaluateObjectsIntoLeaves()
-    /// writes around the caches (measured: robots:100000 faster, robots:10000 not).
-    static constexpr std::size_t kStreamingPrimitives = std::size_t{1} << 16;
     /// The same, refilling a frame (EvaluatedFrame::filledBy: surfaces and
     /// still objects in place, also in `leaves`), each primitive i written
-    /// both into `frame.primitives` and into leaves[leafOf[i]] (a BVH's leaf order).
+    /// both into `frame.primitives` and into leaves[leafOf[i]] (a BVH's leaf
+    /// order), around the caches (streamingStore): for frames larger than them.
     void evaluateObjectsIntoLeaves(std::size_t begin, std::size_t end, const TrackSegment* segments,
                                    EvaluatedFrame& frame, std::span<const std::uint32_t> leafOf,
                                    std::span<Primitive> leaves) const;

@@ -13,12 +13,14 @@ double millisecondsSince(Clock::time_point start) {
 }
 }  // namespace
 
-PreparationTimes prepareFrame(const SceneDesc& scene, double t, FrameScene& frame, ThreadPool* pool) {
+PreparationTimes prepareFrame(const SceneDesc& scene, double t, FrameScene& frame, ThreadPool* pool,
+                              std::size_t intoLeavesFrom) {
     PreparationTimes times;
     auto start = Clock::now();
     FrameEvaluation evaluation = FrameEvaluation::begin(scene, t, frame);
     // A frame not refilled needs its surfaces written, object by object.
-    if (!evaluation.refill || !frame.bvh.refits(frame.primitives.size())) {
+    if (!evaluation.refill || !frame.bvh.refits(frame.primitives.size()) ||
+        frame.primitives.size() < intoLeavesFrom) {
         evaluation.evaluateObjects(frame, pool);
         std::move(evaluation).finish(frame);
         times.evaluateMs = millisecondsSince(start);
