@@ -124,8 +124,8 @@ struct AnimationProgram {
     };
     /// The frames of object i with this frame's `segments` and, if it is
     /// attached, `attachedRoots[i]`.
-    void objectFrames(std::size_t i, const TrackSegment* segments,
-                      const std::vector<Transform>& attachedRoots, ObjectFrames& out) const;
+    ObjectFrames objectFrames(std::size_t i, const TrackSegment* segments,
+                              const std::vector<Transform>& attachedRoots) const;
     /// Primitive `shape` (0 for a primitive object; a model's shapes in
     /// order) of object i whose frames are `frames`.
     Primitive objectPrimitive(std::size_t i, std::uint32_t shape, const ObjectFrames& frames) const {
