@@ -3,15 +3,9 @@
 #include <chrono>
 
 #include "core/anim/frame_builder.h"
+#include "core/util/elapsed.h"
 
 namespace f2 {
-
-namespace {
-using Clock = std::chrono::steady_clock;
-double millisecondsSince(Clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-}  // namespace
 
 PreparationTimes prepareFrame(const SceneDesc& scene, double t, FrameScene& frame, ThreadPool* pool,
                               std::size_t intoLeavesFrom) {

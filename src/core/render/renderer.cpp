@@ -11,15 +11,9 @@
 #include "core/render/reflection.h"
 #include "core/render/shading.h"
 #include "core/render/view_legend.h"
+#include "core/util/elapsed.h"
 
 namespace f2 {
-
-namespace {
-using Clock = std::chrono::steady_clock;
-double millisecondsSince(Clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-}  // namespace
 
 Renderer::Renderer(int threads) : pool_(threads) {}
 
