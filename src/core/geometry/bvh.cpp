@@ -340,12 +340,18 @@ float Bvh::refit(std::span<const Primitive> primitives, ThreadPool* pool) {
 
 bool Bvh::update(std::span<const Primitive> primitives, ThreadPool* pool) {
     subtreesRebuilt_ = 0;
-    if (!nodes_.empty() && primitives.size() == ordered_.size() &&
-        refit(primitives, pool) <= costAtBuild_ * kRebuildGrowth) {
-        rebuildDegradedSubtrees(primitives, pool);
-        return false;
+    lastUpdate_ = {};
+    if (!nodes_.empty() && primitives.size() == ordered_.size()) {
+        const float cost = refit(primitives, pool);
+        lastUpdate_.costGrowth = costAtBuild_ > 0 ? cost / costAtBuild_ : 0;
+        if (cost <= costAtBuild_ * kRebuildGrowth) {
+            rebuildDegradedSubtrees(primitives, pool);
+            return false;
+        }
     }
     build(primitives, pool);
+    lastUpdate_.fullRebuild = true;
+    lastUpdate_.primitivesRebuilt = std::uint32_t(primitives.size());
     return true;
 }
 
@@ -381,6 +387,8 @@ void Bvh::rebuildDegradedSubtrees(std::span<const Primitive> primitives, ThreadP
     }
     rebuildList_.resize(chosen);
     subtreesRebuilt_ = std::uint32_t(chosen);
+    lastUpdate_.subtreesRebuilt = subtreesRebuilt_;
+    lastUpdate_.primitivesRebuilt = spent;
 
     // Each subtree owns a contiguous range of ordered_: its primitives are
     // re-split there from their current bounds, into a local node array.

@@ -47,6 +47,14 @@ class Bvh {
     static constexpr std::uint32_t kSubtreeBudget = 16;
     /// Subtrees rebuilt by the last update() (0 after a full rebuild).
     std::uint32_t subtreesRebuilt() const { return subtreesRebuilt_; }
+    /// What the last update() did, for logs and tests.
+    struct UpdateReport {
+        bool fullRebuild = false;
+        std::uint32_t subtreesRebuilt = 0;
+        std::uint32_t primitivesRebuilt = 0;  ///< in rebuilt subtrees, or every one after a full rebuild
+        float costGrowth = 0;                 ///< refitted SAH cost / cost at the last full build (0: none)
+    };
+    const UpdateReport& lastUpdate() const { return lastUpdate_; }
 
     /// Expected cost of a ray under the SAH model, relative to the root's area.
     float sahCost() const;
@@ -146,6 +154,7 @@ class Bvh {
     std::vector<Subtree> subtreesBefore_;      ///< rebuildDegradedSubtrees() scratch
     std::vector<float> costAtBuildBefore_;     ///< rebuildDegradedSubtrees() scratch
     std::uint32_t subtreesRebuilt_ = 0;
+    UpdateReport lastUpdate_;
     struct PlanItem {
         std::uint32_t node, depth;
     };
