@@ -55,11 +55,12 @@ struct BenchResult {
     /// median and slowest. On a shared machine these vary far less than wall
     /// time, since the time spent waiting for a core is not counted.
     double cpuMsMedian = 0, cpuMsMax = 0;
-    /// Timed frames whose BVH update rebuilt the whole tree, and the most
-    /// primitives one timed update rebuilt (whole tree or subtrees): a slow
-    /// frame without either is the machine's doing, not the tree's.
-    int bvhRebuilds = 0;
-    std::uint32_t bvhMostRebuilt = 0;
+    /// Timed frames whose BVH update built the whole tree at once, those that
+    /// put in a staged rebuild, and the most splitting one timed update did
+    /// (Bvh::UpdateReport::splitWork): a slow frame without any is the
+    /// machine's doing, not the tree's.
+    int bvhRebuilds = 0, bvhSwaps = 0;
+    std::uint64_t bvhMaxSplitWork = 0;
     RayCounts rays;  ///< of the last timed frame
     double peakRssMb = 0;
     std::vector<BenchFrame> perFrame;  ///< every timed frame, in order

@@ -10,13 +10,13 @@ rm -f "$log"
   --frame-log "$log" >/dev/null || { echo "FAIL: f2 bench exited $?"; exit 1; }
 [ -f "$log" ] || { echo "FAIL: no $log"; exit 1; }
 header=$(head -n 1 "$log")
-expected=frame,t,ms,cpu_ms,ms_eval,ms_build,ms_trace,bvh,subtrees_rebuilt,primitives_rebuilt,sah_growth,minor_faults,major_faults
+expected=frame,t,ms,cpu_ms,ms_eval,ms_build,ms_trace,bvh,subtrees_rebuilt,primitives_rebuilt,split_work,sah_growth,minor_faults,major_faults
 [ "$header" = "$expected" ] || { echo "FAIL: header '$header'"; exit 1; }
 [ "$(wc -l <"$log")" -eq 6 ] || { echo "FAIL: expected 6 lines"; cat "$log"; exit 1; }
 # The warm-up frame renders t = 46, so the timed ones are 47, then the loop wraps to 0, 1, 2, 3.
 times=$(tail -n +2 "$log" | cut -d, -f1,2 | tr '\n' ' ')
 [ "$times" = "0,47.000 1,0.000 2,1.000 3,2.000 4,3.000 " ] || { echo "FAIL: frames and times '$times'"; exit 1; }
-tail -n +2 "$log" | awk -F, '$8 !~ /^(refit|subtrees|rebuild)$/ || !($3 > 0) { bad = 1 } END { exit bad }' ||
+tail -n +2 "$log" | awk -F, '$8 !~ /^(refit|subtrees|staged|swapped|rebuilt)$/ || !($3 > 0) { bad = 1 } END { exit bad }' ||
   { echo "FAIL: a line without a BVH action or a positive time"; cat "$log"; exit 1; }
 # An unwritable path is an error, not a silent success.
 if "$f2" bench --scene robots:2 --frames 3 --warmup 0 --size 8x6 --frame-log "$2/no/such/dir/log.csv" \
