@@ -525,6 +525,59 @@ TEST(BvhProperty, ShadowPacketsMatchBruteForce) {
     EXPECT_GT(blockedLanes, 400 * simd::kWidth / 10);  // not vacuous: many lanes are blocked
 }
 
+TEST(BvhProperty, GrazingShadowPacketsFarFromTheOrigin) {
+    // The any-hit walk's box tests must pass every ray that meets a primitive
+    // inside the box, whatever their rounding (the padding of primitiveBounds()
+    // covers it). Far from the origin, where float spacing is coarse, rays
+    // aimed at the corners and edges of unrotated boxes and at the rims of
+    // spheres (so that they graze them) must be blocked exactly when brute
+    // force says so. Boxes shrunk by 10^-6 of their coordinates fail this.
+    const std::uint32_t seed = test::testSeed(31337u);
+    SCOPED_TRACE(::testing::Message() << "seed " << seed);
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> u01(0.0f, 1.0f), coordinate(-4000.0f, 4000.0f);
+    const Vec3 far{30000.0f, -20000.0f, 25000.0f};  // sparse: the grazed primitive decides most rays
+    std::vector<Primitive> prims;
+    for (int i = 0; i < 1500; ++i) {
+        const Vec3 at = far + Vec3{coordinate(rng), coordinate(rng), coordinate(rng)};
+        const float size = 2.0f + 30.0f * u01(rng);
+        prims.push_back(i % 2 ? makePrimitive(ShapeKind::Box, {size, 0.5f * size, 1.5f * size},
+                                              Transform::fromPose(at, {}))
+                              : makePrimitive(ShapeKind::Sphere, {size, 0, 0}, Transform::fromPose(at, {})));
+    }
+    Bvh bvh;
+    bvh.build(prims);
+    int blockedLanes = 0;
+    for (int packet = 0; packet < 300; ++packet) {
+        const Vec3 direction = randomUnit(rng);
+        std::vector<Vec3> origins;
+        for (int i = 0; i < simd::kWidth; ++i) {
+            const Primitive& p = prims[std::size_t(u01(rng) * prims.size()) % prims.size()];
+            Vec3 target;
+            if (p.kind == ShapeKind::Box) {
+                // A corner, or a point on an edge.
+                Vec3 f{u01(rng) < 0.5f ? -1.0f : 1.0f, u01(rng) < 0.5f ? -1.0f : 1.0f,
+                       u01(rng) < 0.5f ? -1.0f : 1.0f};
+                if (i % 2) f[i % 3] = 2 * u01(rng) - 1;
+                target = p.centre + Vec3{f.x * p.half.x, f.y * p.half.y, f.z * p.half.z};
+            } else {
+                // A point of the sphere's rim seen along the rays.
+                Vec3 side = cross(direction, randomUnit(rng));
+                target = p.centre + normalize(side) * p.half.x;
+            }
+            origins.push_back(target - direction * (50.0f + 300.0f * u01(rng)));
+        }
+        expectShadowPacketMatchesBruteForce(bvh, prims, origins, direction, "grazing");
+        if (HasFatalFailure()) return;
+        for (const Vec3& o : origins) blockedLanes += bruteAny(prims, {o, direction}, 0, kInfinity);
+    }
+    // Not vacuous: many grazing rays are blocked, and many pass.
+    EXPECT_GT(blockedLanes, 300 * simd::kWidth / 5);
+    EXPECT_LT(blockedLanes, 300 * simd::kWidth * 4 / 5);
+    std::cout << "[   INFO   ] grazing shadow rays: " << blockedLanes << " of " << 300 * simd::kWidth
+              << " blocked\n";
+}
+
 TEST(BvhProperty, BeamEntryNodesLoseNoOccluder) {
     // A tile's shadow rays toward a light start from Bvh::beamEntryNodes() of
     // a box around their origins: for random boxes and directions (some along
