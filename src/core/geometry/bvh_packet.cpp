@@ -11,6 +11,9 @@ namespace f2 {
 
 namespace {
 constexpr int kStackSize = 160;  // deeper than any tree the builder makes, plus entry nodes
+// The most roots one traversal starts from: each waits on the stack, which must
+// still hold a far child per level (SAH splits to depth 64, then halving to leaves).
+constexpr std::size_t kMaxRoots = 48;
 
 /// Lanes whose ray crosses the box within (tMin, tMax); as boxEntry() in bvh.cpp.
 /// With a shared origin (primary rays) the differences are one scalar each.
@@ -67,22 +70,25 @@ void intersectPacket(const Bvh& bvh, const EyeRays& rays, Mask active, Float tMi
 }
 
 namespace {
-/// The nearest-hit traversal of intersectPacket(); with `kSkips`, a lane does
-/// not test its `skip` primitive (leaf order).
+/// The nearest-hit traversal of intersectPacket(), from `roots` and then
+/// `moreRoots` (at most kMaxRoots in all); with `kSkips`, a lane does not test
+/// its `skip` primitive (leaf order).
 template <bool kSkips, class Origin, class Direction>
 void nearestHits(const Bvh& bvh, const Rays<Origin, Direction>& rays, Mask active, Float tMin, PacketHit& hit,
-                 std::span<const std::uint32_t> roots, Int skip) {
+                 std::span<const std::uint32_t> roots, Int skip,
+                 std::span<const std::uint32_t> moreRoots = {}) {
     const std::span<const Bvh::Node> nodes = bvh.nodes();
     const std::span<const Primitive> ordered = bvh.orderedPrimitives();
     const std::span<const std::uint32_t> original = bvh.originalIndices();
-    if (nodes.empty() || roots.empty() || simd::none(active)) return;
+    if (nodes.empty() || (roots.empty() && moreRoots.empty()) || simd::none(active)) return;
     VisitOrder order(rays, active);
     Float bound = nextUp(hit.t);  // primitives are tested up to and including the lanes' nearest hit
     // The nearer child is visited next without a trip through the stack.
     std::uint32_t stack[kStackSize];
     int top = 0;
+    for (std::size_t k = moreRoots.size(); k-- > 0;) stack[top++] = moreRoots[k];
     for (std::size_t k = roots.size(); k-- > 1;) stack[top++] = roots[k];  // nearest root first
-    std::uint32_t current = roots[0];
+    std::uint32_t current = roots.empty() ? stack[--top] : roots[0];
     for (;;) {
         const Bvh::Node& node = nodes[current];
         Mask lanes = crossesBox(node.bounds, rays, tMin, hit.t) & active;
@@ -123,6 +129,18 @@ void nearestHits(const Bvh& bvh, const Rays<Origin, Direction>& rays, Mask activ
 void intersectPacket(const Bvh& bvh, const EyeRays& rays, Mask active, Float tMin, PacketHit& hit,
                      std::span<const std::uint32_t> roots) {
     nearestHits<false>(bvh, rays, active, tMin, hit, roots, Int(-1));
+}
+
+void intersectPacket(const Bvh& bvh, const EyeRays& rays, Mask active, Float tMin, PacketHit& hit,
+                     std::span<const std::uint32_t> roots, std::span<const std::uint32_t> moreRoots) {
+    // Long lists in parts that leave room on the traversal's stack.
+    while (roots.size() + moreRoots.size() > kMaxRoots) {
+        std::span<const std::uint32_t>& longer = roots.size() >= moreRoots.size() ? roots : moreRoots;
+        const std::size_t part = std::min(longer.size(), kMaxRoots);
+        nearestHits<false>(bvh, rays, active, tMin, hit, longer.first(part), Int(-1));
+        longer = longer.subspan(part);
+    }
+    nearestHits<false>(bvh, rays, active, tMin, hit, roots, Int(-1), moreRoots);
 }
 
 void intersectPacket(const Bvh& bvh, const FreeRays& rays, Mask active, Float tMin, PacketHit& hit,

@@ -20,6 +20,11 @@ void intersectPacket(const Bvh& bvh, const EyeRays& rays, Mask active, Float tMi
 void intersectPacket(const Bvh& bvh, const EyeRays& rays, Mask active, Float tMin, PacketHit& hit,
                      std::span<const std::uint32_t> roots);
 
+/// The same from the subtrees of `roots` and then of `moreRoots` (any number
+/// of them: the nodes listed for one packet by PrimaryBins), nearest first.
+void intersectPacket(const Bvh& bvh, const EyeRays& rays, Mask active, Float tMin, PacketHit& hit,
+                     std::span<const std::uint32_t> roots, std::span<const std::uint32_t> moreRoots);
+
 /// Nearest hits, as above, of rays that share nothing (mirrored rays), from the
 /// root, on primitives other than each lane's `skip` (leaf order).
 void intersectPacket(const Bvh& bvh, const FreeRays& rays, Mask active, Float tMin, PacketHit& hit, Int skip);

@@ -74,13 +74,20 @@ inline PacketSurface surfacesAt(const FrameScene& frame, const Rays<Origin, Vec3
     return s;
 }
 
-/// Nearest surfaces of the `active` lanes of a packet of primary rays, all
-/// inside the frustum whose Bvh::entryNodes() are `entry`.
+/// Nearest surfaces of the `active` lanes of a packet of primary rays, found
+/// in the subtrees of `entry` and then of `cell`: for rays that all lie inside
+/// one frustum, its Bvh::entryNodes() (and no `cell`); in a frame binned by
+/// PrimaryBins, its everywhere() and the packet's cell().
 inline PacketSurface findSurfaces(const FrameScene& frame, const EyeRays& rays, Mask active,
-                                  std::span<const std::uint32_t> entry, RayCounts& counts) {
+                                  std::span<const std::uint32_t> entry, std::span<const std::uint32_t> cell,
+                                  RayCounts& counts) {
     counts.primary += std::uint64_t(__builtin_popcount(simd::bits(active)));
     PacketHit hit;
-    intersectPacket(frame.bvh, rays, active, Float(primaryRayStart(rays.origin)), hit, entry);
+    const Float tMin(primaryRayStart(rays.origin));
+    if (cell.empty())
+        intersectPacket(frame.bvh, rays, active, tMin, hit, entry);
+    else
+        intersectPacket(frame.bvh, rays, active, tMin, hit, entry, cell);
     return surfacesAt(frame, rays, hit, active);
 }
 

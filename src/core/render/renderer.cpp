@@ -35,6 +35,8 @@ namespace {
 constexpr int kBlockWidth = simd::kWidth >= 4 ? 4 : 1;
 constexpr int kBlockHeight = simd::kWidth / kBlockWidth;
 static_assert(kTileSize % kBlockWidth == 0 && kTileSize % kBlockHeight == 0);
+static_assert(PrimaryBins::kCellWidth % kBlockWidth == 0 && PrimaryBins::kCellHeight % kBlockHeight == 0 &&
+              kTileSize % PrimaryBins::kCellWidth == 0 && kTileSize % PrimaryBins::kCellHeight == 0);
 
 // Entry nodes per tile (Bvh::entryNodes): each costs every packet one box test.
 constexpr std::size_t kEntryNodes = 8;
@@ -77,8 +79,10 @@ constexpr std::size_t kShadowEntryLights = 4;
 /// BVH nodes that the beam of their origins toward each light reaches.
 class TileRenderer {
    public:
-    TileRenderer(const FrameScene& frame, const Camera& camera, int aa, RayCounts& counts)
-        : frame_(frame), camera_(camera), aa_(aa), counts_(counts) {}
+    /// `bins`: this frame's PrimaryBins for `camera`, or null to walk the BVH.
+    TileRenderer(const FrameScene& frame, const Camera& camera, const PrimaryBins* bins, int aa,
+                 RayCounts& counts)
+        : frame_(frame), camera_(camera), bins_(bins), aa_(aa), counts_(counts) {}
 
     /// Pixels [x0, x1) x [y0, y1) into `dst` (kTileSize pixels per row).
     /// False, with `dst` incomplete, if `cancel` was raised: checked before
@@ -103,10 +107,14 @@ class TileRenderer {
     template <class WriteBlock>
     bool renderBlocks(int x0, int y0, int x1, int y1, const std::atomic<bool>* cancel, WriteBlock&& write) {
         static const LaneOffsets lanes;
-        // The tile's primary packets start below the top of the tree, at the nodes its frustum reaches.
+        // The tile's primary packets start below the top of the tree, at the nodes its frustum
+        // reaches; or, in a binned frame, at those listed everywhere and in their cells.
         std::uint32_t entryStore[kEntryNodes];
-        std::span<const std::uint32_t> entry(
-            entryStore, frame_.bvh.entryNodes(camera_.pixelFrustum(x0, y0, x1, y1), camera_.eye, entryStore));
+        std::span<const std::uint32_t> entry =
+            bins_ ? bins_->everywhere()
+                  : std::span<const std::uint32_t>(
+                        entryStore,
+                        frame_.bvh.entryNodes(camera_.pixelFrustum(x0, y0, x1, y1), camera_.eye, entryStore));
         const int blocksX = (x1 - x0 + kBlockWidth - 1) / kBlockWidth;
         const int blocksY = (y1 - y0 + kBlockHeight - 1) / kBlockHeight;
         const int blocks = blocksX * blocksY;
@@ -117,11 +125,14 @@ class TileRenderer {
                 Float ox((float(sx) + 0.5f) / float(aa_)), oy((float(sy) + 0.5f) / float(aa_));
                 Vec3P lo(Vec3{kInfinity, kInfinity, kInfinity}), hi(Vec3{-kInfinity, -kInfinity, -kInfinity});
                 for (int k = 0; k < blocks; ++k) {
-                    Float px = Float(float(x0 + (k % blocksX) * kBlockWidth)) + lanes.x;
-                    Float py = Float(float(y0 + (k / blocksX) * kBlockHeight)) + lanes.y;
+                    const int bx = x0 + (k % blocksX) * kBlockWidth, by = y0 + (k / blocksX) * kBlockHeight;
+                    Float px = Float(float(bx)) + lanes.x;
+                    Float py = Float(float(by)) + lanes.y;
                     Mask inside = (px < Float(float(camera_.width))) & (py < Float(float(camera_.height)));
-                    surfaces_[k] =
-                        findSurfaces(frame_, primaryRays(camera_, px + ox, py + oy), inside, entry, counts_);
+                    const std::span<const std::uint32_t> cell =
+                        bins_ ? bins_->cell(bx, by) : std::span<const std::uint32_t>();
+                    surfaces_[k] = findSurfaces(frame_, primaryRays(camera_, px + ox, py + oy), inside, entry,
+                                                cell, counts_);
                     const PacketSurface& s = surfaces_[k];
                     lo = select(s.hitLanes, vmin(s.shadowOrigin, lo), lo);
                     hi = select(s.hitLanes, vmax(s.shadowOrigin, hi), hi);
@@ -214,6 +225,7 @@ class TileRenderer {
 
     const FrameScene& frame_;
     const Camera& camera_;
+    const PrimaryBins* bins_;
     const int aa_;
     RayCounts& counts_;
     PacketSurface surfaces_[kBlocksPerTile];
@@ -260,12 +272,15 @@ bool Renderer::trace(const FrameScene& frame, const Camera& camera, Image& out, 
     }
     out.resize(camera.width, camera.height);
     const int aa = options.antialias < 1 ? 1 : options.antialias;
+    primaryBins_.build(frame.bvh, camera, &pool_, primaryBinsFrom_);
+    const PrimaryBins* bins = primaryBins_.active() ? &primaryBins_ : nullptr;
     return forEachTile(pool_, camera, rays, [&](int x0, int y0, int x1, int y1, RayCounts& tileRays) {
         // The tile is rendered into a local buffer and copied out whole: the
         // image rows of neighbouring tiles share cache lines, which two threads
         // writing pixel by pixel would pass back and forth.
         Rgb8 local[kTileSize * kTileSize];
-        if (!TileRenderer(frame, camera, aa, tileRays).render(x0, y0, x1, y1, local, cancel)) return false;
+        if (!TileRenderer(frame, camera, bins, aa, tileRays).render(x0, y0, x1, y1, local, cancel))
+            return false;
         for (int y = y0; y < y1; ++y) std::copy_n(&local[(y - y0) * kTileSize], x1 - x0, &out.at(x0, y));
         return true;
     });
@@ -274,9 +289,12 @@ bool Renderer::trace(const FrameScene& frame, const Camera& camera, Image& out, 
 bool Renderer::traceAdding(const FrameScene& frame, const Camera& camera, LinearImage& sum,
                            const RenderOptions& options, const std::atomic<bool>* cancel, RayCounts* rays) {
     const int aa = options.antialias < 1 ? 1 : options.antialias;
+    primaryBins_.build(frame.bvh, camera, &pool_, primaryBinsFrom_);
+    const PrimaryBins* bins = primaryBins_.active() ? &primaryBins_ : nullptr;
     return forEachTile(pool_, camera, rays, [&](int x0, int y0, int x1, int y1, RayCounts& tileRays) {
         LinearRgb local[kTileSize * kTileSize];
-        if (!TileRenderer(frame, camera, aa, tileRays).render(x0, y0, x1, y1, local, cancel)) return false;
+        if (!TileRenderer(frame, camera, bins, aa, tileRays).render(x0, y0, x1, y1, local, cancel))
+            return false;
         // Each pixel belongs to one tile, so the sums do not depend on the thread that adds.
         for (int y = y0; y < y1; ++y)
             for (int x = x0; x < x1; ++x) {

@@ -10,6 +10,7 @@
 #include "core/render/frame_scene.h"
 #include "core/render/image.h"
 #include "core/render/linear_image.h"
+#include "core/render/primary_bins.h"
 #include "core/render/ray_counts.h"
 #include "core/render/view_mode.h"
 #include "core/util/thread_pool.h"
@@ -70,6 +71,11 @@ class Renderer {
                                 const RenderOptions& options = {}, const std::atomic<bool>* cancel = nullptr,
                                 const std::function<void(int done)>& subFrameDone = {});
 
+    /// Frames of at least this many primitives trace their primary rays from
+    /// screen-space bins instead of the BVH where that is predicted to pay
+    /// (PrimaryBins): the same images. For tests and measurements.
+    void setPrimaryBinsFrom(std::size_t primitives) { primaryBinsFrom_ = primitives; }
+
     /// The frame evaluated by the last render().
     const FrameScene& frame() const { return frame_; }
     int threadCount() const { return pool_.threadCount(); }
@@ -83,7 +89,9 @@ class Renderer {
 
     ThreadPool pool_;
     FrameScene frame_;
-    LinearImage sum_;  // renderAveraged's accumulator, kept for its capacity
+    LinearImage sum_;          // renderAveraged's accumulator, kept for its capacity
+    PrimaryBins primaryBins_;  // this frame's, rebuilt by each trace
+    std::size_t primaryBinsFrom_ = PrimaryBins::kMinPrimitives;
 };
 
 /// Colour (0..1) of one pixel's sample at image point (px, py): the single-ray
