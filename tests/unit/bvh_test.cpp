@@ -157,6 +157,20 @@ Ray randomRay(std::mt19937& rng, const std::vector<Primitive>& prims, float spre
     return {origin, dir};
 }
 
+/// `rays` random rays (randomRay) through `bvh`: nearest hit and any-hit
+/// must both be what brute force finds.
+::testing::AssertionResult matchesBruteForce(const std::vector<Primitive>& prims, const Bvh& bvh,
+                                             std::mt19937& rng, float spread, int rays) {
+    for (int n = 0; n < rays; ++n) {
+        Ray ray = randomRay(rng, prims, spread);
+        ::testing::AssertionResult nearest = agrees(prims, bvh, ray, 0, kInfinity);
+        if (!nearest) return nearest << ", ray " << n;
+        if (bvh.occluded(ray, 0, kInfinity) != bruteAny(prims, ray, 0, kInfinity))
+            return ::testing::AssertionFailure() << "any-hit differs, ray " << n;
+    }
+    return ::testing::AssertionSuccess();
+}
+
 TEST(Bvh, EmptyScene) {
     Bvh bvh;
     bvh.build({});
@@ -272,12 +286,7 @@ TEST(BvhProperty, RefitAfterMotionMatchesBruteForce) {
         auto [depth, leafPrims] = inspectTree(bvh);  // also checks that parents contain children
         EXPECT_EQ(leafPrims, prims.size());
         EXPECT_GT(depth, 8);
-        for (int n = 0; n < 1500; ++n) {
-            Ray ray = randomRay(rng, prims, spread);
-            ASSERT_TRUE(agrees(prims, bvh, ray, 0, kInfinity)) << "frame " << frame << ", ray " << n;
-            ASSERT_EQ(bvh.occluded(ray, 0, kInfinity), bruteAny(prims, ray, 0, kInfinity))
-                << "frame " << frame << ", ray " << n;
-        }
+        ASSERT_TRUE(matchesBruteForce(prims, bvh, rng, spread, 1500)) << "frame " << frame;
     }
     EXPECT_GE(refits, 4) << "small motion refits instead of rebuilding";
     std::cout << "[   INFO   ] refit test: " << refits << " refits, " << rebuilds << " rebuilds\n";
@@ -315,12 +324,7 @@ TEST(BvhProperty, DegradedSubtreesAreRebuiltInPlace) {
         auto [depth, leafPrims] = inspectTree(bvh);
         EXPECT_EQ(leafPrims, prims.size());
         EXPECT_LE(bvh.liveNodeCount(), 2 * prims.size() - 1);
-        for (int n = 0; n < 1000; ++n) {
-            Ray ray = randomRay(rng, prims, 500);
-            ASSERT_TRUE(agrees(prims, bvh, ray, 0, kInfinity)) << "frame " << frame << ", ray " << n;
-            ASSERT_EQ(bvh.occluded(ray, 0, kInfinity), bruteAny(prims, ray, 0, kInfinity))
-                << "frame " << frame << ", ray " << n;
-        }
+        ASSERT_TRUE(matchesBruteForce(prims, bvh, rng, 500, 1000)) << "frame " << frame;
     }
     EXPECT_GT(subtreeRebuilds, 0) << "shuffled clusters degrade their subtrees";
     std::cout << "[   INFO   ] subtree test: " << subtreeRebuilds << " subtree rebuilds, " << fullRebuilds
@@ -363,12 +367,7 @@ TEST(BvhProperty, StagedRebuildSpreadsItsWorkOverFrames) {
         auto [depth, leafPrims] = inspectTree(bvh);  // also checks that parents contain children
         EXPECT_EQ(leafPrims, n);
         EXPECT_LE(bvh.liveNodeCount(), 2 * std::size_t(n) - 1);
-        for (int r = 0; r < 250; ++r) {
-            Ray ray = randomRay(rng, prims, spread);
-            ASSERT_TRUE(agrees(prims, bvh, ray, 0, kInfinity)) << "frame " << frame << ", ray " << r;
-            ASSERT_EQ(bvh.occluded(ray, 0, kInfinity), bruteAny(prims, ray, 0, kInfinity))
-                << "frame " << frame << ", ray " << r;
-        }
+        ASSERT_TRUE(matchesBruteForce(prims, bvh, rng, spread, 250)) << "frame " << frame;
     }
     EXPECT_GE(swapped, 2) << "the flight wears the tree out again and again";
     EXPECT_GT(staged, swapped) << "each staged rebuild takes more than one frame";
