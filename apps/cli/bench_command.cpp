@@ -3,6 +3,7 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <sstream>
 #include <thread>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include "bench_study.h"
 #include "commands.h"
 #include "core/scene/default_scene.h"
+#include "io/atomic_file.h"
 #include "options.h"
 
 namespace f2::cli {
@@ -28,6 +30,7 @@ struct BenchArgs {
     std::string peer;         ///< f2_embree_peer for --study, or empty
     std::vector<int> counts;  ///< --study's N, or empty for StudySettings' own
     std::string writeScene;
+    std::string frameLog;  ///< --frame-log: CSV of every timed frame
 };
 
 constexpr const char* kFooter =
@@ -113,6 +116,19 @@ int runBenchCommand(BenchArgs args) {
     // horizontal field of view) stays, as with `f2 render --size`.
     args.settings.seconds = args.seconds < 0 ? 3.0 : args.seconds;
     BenchResult result = runBench(loaded->scene, loaded->name, width, height, args.settings);
+    if (!args.frameLog.empty()) {
+        AtomicFile file(args.frameLog);
+        std::ostringstream csv;
+        writeFrameLog(csv, result);
+        const std::string text = csv.str();
+        if (!file.ok() || std::fwrite(text.data(), 1, text.size(), file.handle()) != text.size() ||
+            !file.commit()) {
+            std::cerr << "f2 bench: "
+                      << (file.error().empty() ? "cannot write '" + args.frameLog + "'" : file.error())
+                      << '\n';
+            return 1;
+        }
+    }
     if (args.json)
         std::cout << benchJson(result) << '\n';
     else
@@ -180,6 +196,11 @@ Command addBenchCommand(CLI::App& app) {
                     "on each point's frame, best of its BVH update modes, in the tables, CSV and plot")
         ->check(CLI::ExistingFile)
         ->needs(study);
+    sub->add_option("--frame-log", args->frameLog,
+                    "Write a CSV line per timed frame to FILE: time, wall and CPU ms, the evaluate / build "
+                    "/ trace split, what the BVH update did (refit, subtrees, rebuild; primitives "
+                    "rebuilt) and page faults")
+        ->excludes(study);
     sub->add_option(
            "--write-scene", args->writeScene,
            "Write the scene as scene-language text to FILE and exit without measuring (for --scene "

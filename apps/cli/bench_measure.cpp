@@ -31,6 +31,29 @@ double processCpuMs() {
     return double(ts.tv_sec) * 1e3 + double(ts.tv_nsec) / 1e6;
 }
 
+/// Minor and major page faults of this process so far.
+std::pair<long, long> pageFaults() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return {usage.ru_minflt, usage.ru_majflt};
+}
+
+const char* updateActionName(Bvh::UpdateAction action) {
+    switch (action) {
+        case Bvh::UpdateAction::Refit:
+            return "refit";
+        case Bvh::UpdateAction::Subtrees:
+            return "subtrees";
+        case Bvh::UpdateAction::Staged:
+            return "staged";
+        case Bvh::UpdateAction::Swapped:
+            return "swapped";
+        case Bvh::UpdateAction::Rebuilt:
+            break;
+    }
+    return "rebuilt";
+}
+
 double msBetween(Clock::time_point a, Clock::time_point b) {
     return std::chrono::duration<double, std::milli>(b - a).count();
 }
@@ -146,15 +169,21 @@ BenchResult runBench(const SceneDesc& scene, const std::string& name, int width,
     std::vector<double> total, eval, build, trace, cpu;
     const auto start = Clock::now();
     for (;;) {
+        const auto faultsBefore = pageFaults();
         const double cpuBefore = processCpuMs();
+        const double time = nextTime();
         const auto before = Clock::now();
-        FrameTimings t = renderAt(nextTime());
+        FrameTimings t = renderAt(time);
         const auto after = Clock::now();
         cpu.push_back(processCpuMs() - cpuBefore);
+        const auto faultsAfter = pageFaults();
         total.push_back(msBetween(before, after));
         eval.push_back(t.evaluateMs);
         build.push_back(t.buildMs);
         trace.push_back(t.traceMs);
+        result.perFrame.push_back({time, total.back(), cpu.back(), t.evaluateMs, t.buildMs, t.traceMs,
+                                   renderer.frame().bvh.lastUpdate(), faultsAfter.first - faultsBefore.first,
+                                   faultsAfter.second - faultsBefore.second});
         result.rays = t.rays;  // counted by the renderer as it casts them
         if (settings.frames > 0 ? total.size() >= std::size_t(settings.frames)
                                 : total.size() >= std::size_t(kMinTimedFrames) &&
@@ -175,6 +204,11 @@ BenchResult runBench(const SceneDesc& scene, const std::string& name, int width,
     result.msBuild = median(build);
     result.msTrace = median(trace);
     result.primitives = renderer.frame().primitives.size();
+    for (const BenchFrame& f : result.perFrame) {
+        result.bvhRebuilds += f.bvh.action == Bvh::UpdateAction::Rebuilt;
+        result.bvhSwaps += f.bvh.action == Bvh::UpdateAction::Swapped;
+        result.bvhMaxSplitWork = std::max(result.bvhMaxSplitWork, f.bvh.splitWork);
+    }
     result.peakRssMb = peakRssMb();
     return result;
 }
@@ -192,12 +226,27 @@ std::string benchJson(const BenchResult& r) {
       << ", \"ms_p10\": " << fixed(r.msP10, 4) << ", \"ms_p90\": " << fixed(r.msP90, 4)
       << ", \"ms_eval\": " << fixed(r.msEval, 4) << ", \"ms_build\": " << fixed(r.msBuild, 4)
       << ", \"ms_trace\": " << fixed(r.msTrace, 4) << ", \"cpu_ms\": " << fixed(r.cpuMsMedian, 4)
-      << ", \"cpu_ms_max\": " << fixed(r.cpuMsMax, 4) << ", \"primary_rays\": " << r.rays.primary
-      << ", \"shadow_rays\": " << r.rays.shadow << ", \"reflected_rays\": " << r.rays.reflected
-      << ", \"mrays_per_s\": " << fixed(r.mraysPerSecond(), 3)
+      << ", \"cpu_ms_max\": " << fixed(r.cpuMsMax, 4) << ", \"bvh_rebuilds\": " << r.bvhRebuilds
+      << ", \"bvh_swaps\": " << r.bvhSwaps << ", \"bvh_max_split_work\": " << r.bvhMaxSplitWork
+      << ", \"primary_rays\": " << r.rays.primary << ", \"shadow_rays\": " << r.rays.shadow
+      << ", \"reflected_rays\": " << r.rays.reflected << ", \"mrays_per_s\": " << fixed(r.mraysPerSecond(), 3)
       << ", \"mrays_per_s_trace\": " << fixed(r.mraysPerSecondTrace(), 3)
       << ", \"peak_rss_mb\": " << fixed(r.peakRssMb, 2) << "}";
     return j.str();
+}
+
+void writeFrameLog(std::ostream& out, const BenchResult& r) {
+    out << "frame,t,ms,cpu_ms,ms_eval,ms_build,ms_trace,bvh,subtrees_rebuilt,primitives_rebuilt,split_work,"
+           "sah_growth,"
+           "minor_faults,major_faults\n";
+    for (std::size_t i = 0; i < r.perFrame.size(); ++i) {
+        const BenchFrame& f = r.perFrame[i];
+        const char* bvh = updateActionName(f.bvh.action);
+        out << i << ',' << fixed(f.time, 3) << ',' << fixed(f.ms, 4) << ',' << fixed(f.cpuMs, 4) << ','
+            << fixed(f.msEval, 4) << ',' << fixed(f.msBuild, 4) << ',' << fixed(f.msTrace, 4) << ',' << bvh
+            << ',' << f.bvh.subtreesRebuilt << ',' << f.bvh.primitivesRebuilt << ',' << f.bvh.splitWork << ','
+            << fixed(f.bvh.costGrowth, 4) << ',' << f.minorFaults << ',' << f.majorFaults << '\n';
+    }
 }
 
 void printBench(std::ostream& out, const BenchResult& r) {
@@ -214,6 +263,8 @@ void printBench(std::ostream& out, const BenchResult& r) {
         << " ms, trace " << fixed(r.msTrace, 3) << " ms  (medians)\n"
         << "  CPU time    median " << fixed(r.cpuMsMedian, 3) << " ms per frame, all threads (max "
         << fixed(r.cpuMsMax, 3) << ")\n"
+        << "  BVH         " << r.bvhRebuilds << " built whole, " << r.bvhSwaps
+        << " staged rebuilds put in; at most " << r.bvhMaxSplitWork << " primitives split in one frame\n"
         << "  rays        " << r.rays.primary << " primary + " << r.rays.shadow << " shadow + "
         << r.rays.reflected << " mirrored per frame: " << fixed(r.mraysPerSecond(), 1)
         << " Mrays/s over the frame, " << fixed(r.mraysPerSecondTrace(), 1) << " over trace\n"

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "core/render/camera.h"
 #include "core/render/frame_scene.h"
@@ -30,6 +31,15 @@ struct BenchSettings {
 /// Timed frames never fewer than this, however slow, so a median exists.
 inline constexpr int kMinTimedFrames = 3;
 
+/// One timed frame, for `f2 bench --frame-log` (finding which frames of a playback are slow, and why).
+struct BenchFrame {
+    double time = 0;           ///< animation time t rendered
+    double ms = 0, cpuMs = 0;  ///< wall and CPU time of the whole frame
+    double msEval = 0, msBuild = 0, msTrace = 0;
+    Bvh::UpdateReport bvh;                  ///< what Bvh::update did
+    long minorFaults = 0, majorFaults = 0;  ///< page faults of the process during the frame
+};
+
 struct BenchResult {
     std::string scene;
     int width = 0, height = 0, threads = 0, antialias = 1;
@@ -45,8 +55,15 @@ struct BenchResult {
     /// median and slowest. On a shared machine these vary far less than wall
     /// time, since the time spent waiting for a core is not counted.
     double cpuMsMedian = 0, cpuMsMax = 0;
+    /// Timed frames whose BVH update built the whole tree at once, those that
+    /// put in a staged rebuild, and the most splitting one timed update did
+    /// (Bvh::UpdateReport::splitWork): a slow frame without any is the
+    /// machine's doing, not the tree's.
+    int bvhRebuilds = 0, bvhSwaps = 0;
+    std::uint64_t bvhMaxSplitWork = 0;
     RayCounts rays;  ///< of the last timed frame
     double peakRssMb = 0;
+    std::vector<BenchFrame> perFrame;  ///< every timed frame, in order
 
     double fps() const { return msMedian > 0 ? 1000.0 / msMedian : 0; }
     /// Rays per second over the whole frame (evaluate + build + trace).
@@ -70,6 +87,8 @@ bool resetPeakRss();
 
 /// One-line JSON object with every field of the result.
 std::string benchJson(const BenchResult& result);
+/// CSV of the timed frames (a header, then one line per frame).
+void writeFrameLog(std::ostream& out, const BenchResult& result);
 /// Human-readable summary.
 void printBench(std::ostream& out, const BenchResult& result);
 

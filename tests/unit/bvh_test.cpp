@@ -157,6 +157,20 @@ Ray randomRay(std::mt19937& rng, const std::vector<Primitive>& prims, float spre
     return {origin, dir};
 }
 
+/// `rays` random rays (randomRay) through `bvh`: nearest hit and any-hit
+/// must both be what brute force finds.
+::testing::AssertionResult matchesBruteForce(const std::vector<Primitive>& prims, const Bvh& bvh,
+                                             std::mt19937& rng, float spread, int rays) {
+    for (int n = 0; n < rays; ++n) {
+        Ray ray = randomRay(rng, prims, spread);
+        ::testing::AssertionResult nearest = agrees(prims, bvh, ray, 0, kInfinity);
+        if (!nearest) return nearest << ", ray " << n;
+        if (bvh.occluded(ray, 0, kInfinity) != bruteAny(prims, ray, 0, kInfinity))
+            return ::testing::AssertionFailure() << "any-hit differs, ray " << n;
+    }
+    return ::testing::AssertionSuccess();
+}
+
 TEST(Bvh, EmptyScene) {
     Bvh bvh;
     bvh.build({});
@@ -272,12 +286,7 @@ TEST(BvhProperty, RefitAfterMotionMatchesBruteForce) {
         auto [depth, leafPrims] = inspectTree(bvh);  // also checks that parents contain children
         EXPECT_EQ(leafPrims, prims.size());
         EXPECT_GT(depth, 8);
-        for (int n = 0; n < 1500; ++n) {
-            Ray ray = randomRay(rng, prims, spread);
-            ASSERT_TRUE(agrees(prims, bvh, ray, 0, kInfinity)) << "frame " << frame << ", ray " << n;
-            ASSERT_EQ(bvh.occluded(ray, 0, kInfinity), bruteAny(prims, ray, 0, kInfinity))
-                << "frame " << frame << ", ray " << n;
-        }
+        ASSERT_TRUE(matchesBruteForce(prims, bvh, rng, spread, 1500)) << "frame " << frame;
     }
     EXPECT_GE(refits, 4) << "small motion refits instead of rebuilding";
     std::cout << "[   INFO   ] refit test: " << refits << " refits, " << rebuilds << " rebuilds\n";
@@ -315,16 +324,55 @@ TEST(BvhProperty, DegradedSubtreesAreRebuiltInPlace) {
         auto [depth, leafPrims] = inspectTree(bvh);
         EXPECT_EQ(leafPrims, prims.size());
         EXPECT_LE(bvh.liveNodeCount(), 2 * prims.size() - 1);
-        for (int n = 0; n < 1000; ++n) {
-            Ray ray = randomRay(rng, prims, 500);
-            ASSERT_TRUE(agrees(prims, bvh, ray, 0, kInfinity)) << "frame " << frame << ", ray " << n;
-            ASSERT_EQ(bvh.occluded(ray, 0, kInfinity), bruteAny(prims, ray, 0, kInfinity))
-                << "frame " << frame << ", ray " << n;
-        }
+        ASSERT_TRUE(matchesBruteForce(prims, bvh, rng, 500, 1000)) << "frame " << frame;
     }
     EXPECT_GT(subtreeRebuilds, 0) << "shuffled clusters degrade their subtrees";
     std::cout << "[   INFO   ] subtree test: " << subtreeRebuilds << " subtree rebuilds, " << fullRebuilds
               << " full rebuilds\n";
+}
+
+TEST(BvhProperty, StagedRebuildSpreadsItsWorkOverFrames) {
+    // Primitives flying straight across the scene wear out the top of the
+    // tree, which no subtree rebuild mends. A tree this large is then rebuilt
+    // in stages: at this pace no update() builds the whole tree in one call,
+    // none splits more than about half a whole build's worth, the old tree is
+    // refitted until the new one is complete and put in, and every query
+    // matches brute force before, during and after.
+    const std::uint32_t seed = test::testSeed(20261202u);
+    SCOPED_TRACE(::testing::Message() << "seed " << seed);
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> speed(-3.0f, 3.0f);
+    const std::uint32_t n = Bvh::kStagedBuildMin + 1904;
+    const float spread = 300;
+    std::vector<Primitive> prims = randomScene(rng, int(n), spread);
+    std::vector<Vec3> velocity(n);
+    for (Vec3& v : velocity) v = {speed(rng), speed(rng), speed(rng)};
+    ThreadPool pool(2);
+    Bvh bvh;
+    ASSERT_TRUE(bvh.update(prims, &pool));
+    EXPECT_EQ(bvh.lastUpdate().action, Bvh::UpdateAction::Rebuilt) << "the first update builds";
+    // Half of it, with room for later trees to need a little more splitting than the first.
+    const std::uint64_t wholeBuild = bvh.lastUpdate().splitWork, bound = wholeBuild * 6 / 10;
+    EXPECT_GT(wholeBuild, 8 * std::uint64_t(n)) << "splitting every level sorts every primitive";
+    int staged = 0, swapped = 0;
+    for (int frame = 0; frame < 40; ++frame) {
+        for (std::uint32_t i = 0; i < n; ++i) prims[i].centre = prims[i].centre + velocity[i];
+        const bool renewed = bvh.update(prims, frame % 2 ? &pool : nullptr);
+        const Bvh::UpdateReport& report = bvh.lastUpdate();
+        EXPECT_NE(report.action, Bvh::UpdateAction::Rebuilt) << "frame " << frame;
+        EXPECT_LE(report.splitWork, bound) << "frame " << frame;
+        EXPECT_EQ(renewed, report.action == Bvh::UpdateAction::Swapped) << "frame " << frame;
+        staged += report.action == Bvh::UpdateAction::Staged;
+        swapped += report.action == Bvh::UpdateAction::Swapped;
+        auto [depth, leafPrims] = inspectTree(bvh);  // also checks that parents contain children
+        EXPECT_EQ(leafPrims, n);
+        EXPECT_LE(bvh.liveNodeCount(), 2 * std::size_t(n) - 1);
+        ASSERT_TRUE(matchesBruteForce(prims, bvh, rng, spread, 250)) << "frame " << frame;
+    }
+    EXPECT_GE(swapped, 2) << "the flight wears the tree out again and again";
+    EXPECT_GT(staged, swapped) << "each staged rebuild takes more than one frame";
+    std::cout << "[   INFO   ] staged test: " << swapped << " staged trees put in, " << staged
+              << " frames with a rebuild under way\n";
 }
 
 TEST(BvhProperty, ParallelBuildMakesTheSameTree) {

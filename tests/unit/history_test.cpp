@@ -201,5 +201,54 @@ TEST_F(History, BothPathsGiveTheSameImage) {
     }
 }
 
+/// The coincident pairs of tieScene() among `count` small spheres drifting
+/// slowly: enough primitives for Bvh::update to rebuild in stages, and a
+/// motion slow enough for it to do so.
+std::string driftingTieScene(int count) {
+    std::ostringstream s;
+    s << "/camera 96 72 0.6 0 90 -420 10 0 0\n"
+         "/box a 120 120 120 0 0 0 0 30 0\n/paint a 220 40 40\n"
+         "/box b 120 120 120 0 0 0 0 30 0\n/paint b 40 220 40\n"
+         "/sphere s1 50 -150 20 -40\n/paint s1 250 250 0\n"
+         "/sphere s2 50 -150 20 -40\n/paint s2 0 250 250\n"
+         "/amb_light 0.2\n/dir_light 0.6 1 -1 1\n";
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<float> u(-1, 1);
+    for (int i = 0; i < count; ++i) {
+        const float x = 300 * u(rng), y = 100 * u(rng), z = 200 * u(rng);
+        s << "/sphere d" << i << " 2 " << x << ' ' << y << ' ' << z << '\n';
+        s << "/key 0 d" << i << ' ' << x << ' ' << y << ' ' << z << " 0 0 0\n";
+        s << "/key " << kFrames << " d" << i << ' ' << x + 60 * u(rng) << ' ' << y + 60 * u(rng) << ' '
+          << z + 60 * u(rng) << " 0 0 0\n";
+    }
+    return s.str();
+}
+
+TEST(HistoryStaged, PlayingThroughStagedRebuildsGivesTheFreshImages) {
+    // Trees put in by a staged rebuild were split from bounds a few frames old
+    // and are refitted to the frame at hand: the images must still be those of
+    // a fresh renderer, whose tree is built for that very frame.
+    const SceneDesc scene = test::sceneFromText(driftingTieScene(int(Bvh::kStagedBuildMin) + 200));
+    const Camera camera = Camera::fromDesc(scene.camera);
+    Renderer player(2);
+    int staged = 0, swapped = 0, compared = 0;
+    for (int frame = 0; frame <= kFrames; ++frame) {
+        Image played;
+        player.render(scene, frame, camera, played);
+        const Bvh::UpdateAction action = player.frame().bvh.lastUpdate().action;
+        staged += action == Bvh::UpdateAction::Staged;
+        swapped += action == Bvh::UpdateAction::Swapped;
+        if (action != Bvh::UpdateAction::Swapped && frame % 8 != 0) continue;
+        Renderer fresh(2);
+        Image expected;
+        fresh.render(scene, frame, camera, expected);
+        EXPECT_EQ(differingPixels(played, expected), 0u) << "frame " << frame;
+        ++compared;
+    }
+    EXPECT_GT(staged, 0) << "the drift must start a staged rebuild";
+    EXPECT_GT(swapped, 0) << "and put one in";
+    EXPECT_GE(compared, 7);
+}
+
 }  // namespace
 }  // namespace f2

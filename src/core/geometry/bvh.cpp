@@ -1,6 +1,7 @@
 #include "core/geometry/bvh.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cassert>
 
 namespace f2 {
@@ -58,111 +59,140 @@ inline float boxEntry(const Bounds& b, Vec3 origin, Vec3 invDir, float tMin, flo
 inline Vec3 inverseDirection(Vec3 d) { return {1.0f / d.x, 1.0f / d.y, 1.0f / d.z}; }
 }  // namespace
 
-void Bvh::buildNodes(std::span<const Primitive> primitives, std::vector<Node>& out, BuildTask root,
-                     std::uint32_t deferBelow) {
+bool Bvh::splitNode(const SplitInput& in, std::vector<Node>& out, const BuildTask& task,
+                    BuildTask (&children)[2]) {
+    Bounds bounds, centroidBounds;
+    for (std::uint32_t i = task.begin; i < task.end; ++i) {
+        bounds.grow(in.bounds[in.indices[i]]);
+        centroidBounds.grow(in.centroids[in.indices[i]]);
+    }
+    Node& node = out[task.node];
+    node.bounds = bounds;
+    std::uint32_t count = task.end - task.begin;
+
+    // Find the best binned SAH split over the three axes.
+    int bestAxis = -1, bestBin = 0;
+    float bestCost = kInfinity;
+    Vec3 extent = centroidBounds.hi - centroidBounds.lo;
+    if (count > kMaxLeafSize && task.depth < kMaxSahDepth) {
+        for (int axis = 0; axis < 3; ++axis) {
+            if (!(extent[axis] > 0)) continue;
+            Bounds binBounds[kBinCount];
+            std::uint32_t binCount[kBinCount] = {};
+            float scale = kBinCount / extent[axis];
+            for (std::uint32_t i = task.begin; i < task.end; ++i) {
+                std::uint32_t p = in.indices[i];
+                int b = binOf(in.centroids[p][axis], centroidBounds.lo[axis], scale);
+                binBounds[b].grow(in.bounds[p]);
+                ++binCount[b];
+            }
+            // Sweep from the right, then from the left.
+            float rightArea[kBinCount];
+            std::uint32_t rightCount[kBinCount];
+            Bounds acc;
+            std::uint32_t accCount = 0;
+            for (int b = kBinCount - 1; b > 0; --b) {
+                acc.grow(binBounds[b]);
+                accCount += binCount[b];
+                rightArea[b] = accCount ? acc.halfArea() : 0;
+                rightCount[b] = accCount;
+            }
+            acc = Bounds{};
+            accCount = 0;
+            for (int b = 0; b < kBinCount - 1; ++b) {
+                acc.grow(binBounds[b]);
+                accCount += binCount[b];
+                if (accCount == 0 || rightCount[b + 1] == 0) continue;
+                float cost = acc.halfArea() * accCount + rightArea[b + 1] * rightCount[b + 1];
+                if (cost < bestCost) {
+                    bestCost = cost;
+                    bestAxis = axis;
+                    bestBin = b;
+                }
+            }
+        }
+    }
+    float leafCost = bounds.halfArea() * count;
+    // A leaf when no split was searched or SAH prefers it; never more than kMaxLeafCount.
+    bool makeLeaf =
+        count <= kMaxLeafCount && (bestAxis < 0 || kTraversalCost * bounds.halfArea() + bestCost >= leafCost);
+    if (makeLeaf) {
+        node.first = task.begin;
+        node.count = std::uint16_t(count);
+        return false;
+    }
+
+    std::uint32_t* first = in.indices + task.begin;
+    std::uint32_t* last = in.indices + task.end;
+    std::uint32_t* middle;
+    int splitAxis = bestAxis;
+    if (bestAxis >= 0) {
+        float scale = kBinCount / extent[bestAxis];
+        float lo = centroidBounds.lo[bestAxis];
+        middle = std::partition(first, last, [&](std::uint32_t p) {
+            return binOf(in.centroids[p][bestAxis], lo, scale) <= bestBin;
+        });
+    } else {
+        // No SAH split (too deep, or all centroids equal): object median on the widest axis.
+        splitAxis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+        middle = first + count / 2;
+        std::nth_element(first, middle, last, [&](std::uint32_t a, std::uint32_t b) {
+            return in.centroids[a][splitAxis] < in.centroids[b][splitAxis];
+        });
+    }
+    std::uint32_t mid = std::uint32_t(middle - in.indices);
+    std::uint32_t left = std::uint32_t(out.size());
+    node.first = left;
+    node.count = 0;
+    node.axis = std::uint16_t(splitAxis);
+    out.push_back({});  // `node` is not used past here: the push may move it
+    out.push_back({});
+    children[0] = {left, task.begin, mid, task.depth + 1};
+    children[1] = {left + 1, mid, task.end, task.depth + 1};
+    return true;
+}
+
+std::uint64_t Bvh::buildNodes(std::span<const Primitive> primitives, std::vector<Node>& out, BuildTask root,
+                              std::uint32_t deferBelow) {
     BuildTask stack[kStackSize];
     int top = 0;
     stack[top++] = root;
+    std::uint64_t work = 0;
     while (top > 0) {
         BuildTask task = stack[--top];
         if (task.end - task.begin < deferBelow && task.node != root.node) {
             deferred_.push_back(task);
             continue;
         }
-        Bounds bounds, centroidBounds;
-        for (std::uint32_t i = task.begin; i < task.end; ++i) {
-            bounds.grow(primBounds_[indices_[i]]);
-            centroidBounds.grow(centroids_[indices_[i]]);
-        }
-        Node& node = out[task.node];
-        node.bounds = bounds;
-        std::uint32_t count = task.end - task.begin;
-
-        // Find the best binned SAH split over the three axes.
-        int bestAxis = -1, bestBin = 0;
-        float bestCost = kInfinity;
-        Vec3 extent = centroidBounds.hi - centroidBounds.lo;
-        if (count > kMaxLeafSize && task.depth < kMaxSahDepth) {
-            for (int axis = 0; axis < 3; ++axis) {
-                if (!(extent[axis] > 0)) continue;
-                Bounds binBounds[kBinCount];
-                std::uint32_t binCount[kBinCount] = {};
-                float scale = kBinCount / extent[axis];
-                for (std::uint32_t i = task.begin; i < task.end; ++i) {
-                    std::uint32_t p = indices_[i];
-                    int b = binOf(centroids_[p][axis], centroidBounds.lo[axis], scale);
-                    binBounds[b].grow(primBounds_[p]);
-                    ++binCount[b];
-                }
-                // Sweep from the right, then from the left.
-                float rightArea[kBinCount];
-                std::uint32_t rightCount[kBinCount];
-                Bounds acc;
-                std::uint32_t accCount = 0;
-                for (int b = kBinCount - 1; b > 0; --b) {
-                    acc.grow(binBounds[b]);
-                    accCount += binCount[b];
-                    rightArea[b] = accCount ? acc.halfArea() : 0;
-                    rightCount[b] = accCount;
-                }
-                acc = Bounds{};
-                accCount = 0;
-                for (int b = 0; b < kBinCount - 1; ++b) {
-                    acc.grow(binBounds[b]);
-                    accCount += binCount[b];
-                    if (accCount == 0 || rightCount[b + 1] == 0) continue;
-                    float cost = acc.halfArea() * accCount + rightArea[b + 1] * rightCount[b + 1];
-                    if (cost < bestCost) {
-                        bestCost = cost;
-                        bestAxis = axis;
-                        bestBin = b;
-                    }
-                }
-            }
-        }
-        float leafCost = bounds.halfArea() * count;
-        // A leaf when no split was searched or SAH prefers it; never more than kMaxLeafCount.
-        bool makeLeaf = count <= kMaxLeafCount &&
-                        (bestAxis < 0 || kTraversalCost * bounds.halfArea() + bestCost >= leafCost);
-        if (makeLeaf) {
-            node.first = task.begin;
-            node.count = std::uint16_t(count);
-            for (std::uint32_t i = task.begin; i < task.end; ++i) {
-                ordered_[i] = primitives[indices_[i]];
-                original_[i] = indices_[i];
-                position_[indices_[i]] = i;
-            }
+        work += task.end - task.begin;
+        BuildTask children[2];
+        if (splitNode({primBounds_.data(), centroids_.data(), indices_.data()}, out, task, children)) {
+            stack[top++] = children[1];
+            stack[top++] = children[0];
             continue;
         }
-
-        std::uint32_t* first = indices_.data() + task.begin;
-        std::uint32_t* last = indices_.data() + task.end;
-        std::uint32_t* middle;
-        int splitAxis = bestAxis;
-        if (bestAxis >= 0) {
-            float scale = kBinCount / extent[bestAxis];
-            float lo = centroidBounds.lo[bestAxis];
-            middle = std::partition(first, last, [&](std::uint32_t p) {
-                return binOf(centroids_[p][bestAxis], lo, scale) <= bestBin;
-            });
-        } else {
-            // No SAH split (too deep, or all centroids equal): object median on the widest axis.
-            splitAxis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
-            middle = first + count / 2;
-            std::nth_element(first, middle, last, [&](std::uint32_t a, std::uint32_t b) {
-                return centroids_[a][splitAxis] < centroids_[b][splitAxis];
-            });
+        for (std::uint32_t i = task.begin; i < task.end; ++i) {
+            ordered_[i] = primitives[indices_[i]];
+            original_[i] = indices_[i];
+            position_[indices_[i]] = i;
         }
-        std::uint32_t mid = std::uint32_t(middle - indices_.data());
-        std::uint32_t left = std::uint32_t(out.size());
-        node.first = left;
-        node.count = 0;
-        node.axis = std::uint16_t(splitAxis);
-        out.push_back({});
-        out.push_back({});
-        stack[top++] = {left + 1, mid, task.end, task.depth + 1};
-        stack[top++] = {left, task.begin, mid, task.depth + 1};
     }
+    return work;
+}
+
+void Bvh::snapshotBounds(std::span<const Primitive> primitives, ThreadPool* pool, std::vector<Bounds>& bounds,
+                         std::vector<Vec3>& centroids, std::vector<std::uint32_t>& indices) {
+    const std::uint32_t n = std::uint32_t(primitives.size());
+    bounds.resize(n);
+    centroids.resize(n);
+    indices.resize(n);
+    forChunks(pool, (n + kRefitChunk - 1) / kRefitChunk, [&](std::uint32_t chunk) {
+        for (std::uint32_t i = chunk * kRefitChunk; i < std::min(n, (chunk + 1) * kRefitChunk); ++i) {
+            bounds[i] = primitiveBounds(primitives[i]);
+            centroids[i] = bounds[i].centroid();
+            indices[i] = i;
+        }
+    });
 }
 
 void Bvh::build(std::span<const Primitive> primitives, ThreadPool* pool) {
@@ -170,17 +200,9 @@ void Bvh::build(std::span<const Primitive> primitives, ThreadPool* pool) {
     nodes_.clear();
     subtrees_.clear();
     topNodes_.clear();
-    primBounds_.resize(n);
-    centroids_.resize(n);
-    indices_.resize(n);
-    auto boundChunk = [&](std::uint32_t chunk) {
-        for (std::uint32_t i = chunk * kRefitChunk; i < std::min(n, (chunk + 1) * kRefitChunk); ++i) {
-            primBounds_[i] = primitiveBounds(primitives[i]);
-            centroids_[i] = primBounds_[i].centroid();
-            indices_[i] = i;
-        }
-    };
-    forChunks(pool, (n + kRefitChunk - 1) / kRefitChunk, boundChunk);
+    staged_.active = false;  // a staged rebuild of the old primitives has no use now
+    staged_.tasks.clear();
+    snapshotBounds(primitives, pool, primBounds_, centroids_, indices_);
     ordered_.resize(n);
     original_.resize(n);
     position_.resize(n);
@@ -192,16 +214,20 @@ void Bvh::build(std::span<const Primitive> primitives, ThreadPool* pool) {
     // and built on the pool's threads, each into its own array, then appended.
     const bool parallel = pool && pool->threadCount() > 1 && n >= kParallelBuildMin;
     deferred_.clear();
-    buildNodes(primitives, nodes_, {0, 0, n, 0},
-               parallel ? n / (kPiecesPerThread * std::uint32_t(pool->threadCount())) : 0);
+    std::uint64_t work =
+        buildNodes(primitives, nodes_, {0, 0, n, 0},
+                   parallel ? n / (kPiecesPerThread * std::uint32_t(pool->threadCount())) : 0);
     if (!deferred_.empty()) {
         if (subtreeNodes_.size() < deferred_.size()) subtreeNodes_.resize(deferred_.size());
+        std::atomic<std::uint64_t> deferredWork{0};
         pool->parallelFor(std::uint32_t(deferred_.size()), [&](std::uint32_t k) {
             std::vector<Node>& local = subtreeNodes_[k];
             local.assign(1, Node{});
             BuildTask task = deferred_[k];
-            buildNodes(primitives, local, {0, task.begin, task.end, task.depth}, 0);
+            deferredWork.fetch_add(buildNodes(primitives, local, {0, task.begin, task.end, task.depth}, 0),
+                                   std::memory_order_relaxed);
         });
+        work += deferredWork.load();
         for (std::size_t k = 0; k < deferred_.size(); ++k) {
             // Local node i > 0 lands at base + i - 1; local node 0 is the set-aside slot.
             const std::vector<Node>& local = subtreeNodes_[k];
@@ -217,10 +243,57 @@ void Bvh::build(std::span<const Primitive> primitives, ThreadPool* pool) {
         }
     }
     freePairs_.clear();
-    costAtBuild_ = sahCost();
     planRefit();
+    recordCostAtBuild(sahCost());
+    lastUpdate_.splitWork = work;
+    lastBuildWork_ = work;
+    lastGrowth_ = 1;
+}
+
+void Bvh::recordCostAtBuild(float cost) {
+    costAtBuild_ = cost;
     subtreeCostAtBuild_.resize(subtrees_.size());
     for (std::size_t k = 0; k < subtrees_.size(); ++k) subtreeCostAtBuild_[k] = subtreeSahSum(k);
+}
+
+void Bvh::startStagedBuild(std::span<const Primitive> primitives, ThreadPool* pool) {
+    const std::uint32_t n = std::uint32_t(primitives.size());
+    snapshotBounds(primitives, pool, staged_.bounds, staged_.centroids, staged_.indices);
+    staged_.nodes.assign(1, Node{});
+    staged_.tasks.assign(1, {0, 0, n, 0});
+    staged_.work = 0;
+    staged_.active = true;
+}
+
+bool Bvh::advanceStagedBuild(std::uint64_t budget) {
+    std::uint64_t work = 0;
+    while (!staged_.tasks.empty()) {
+        const BuildTask task = staged_.tasks.back();
+        const std::uint32_t size = task.end - task.begin;
+        if (work > 0 && work + size > budget) break;
+        staged_.tasks.pop_back();
+        work += size;
+        staged_.work += size;
+        BuildTask children[2];
+        if (splitNode({staged_.bounds.data(), staged_.centroids.data(), staged_.indices.data()},
+                      staged_.nodes, task, children)) {
+            staged_.tasks.push_back(children[1]);
+            staged_.tasks.push_back(children[0]);
+        }
+    }
+    lastUpdate_.splitWork += work;
+    return staged_.tasks.empty();
+}
+
+void Bvh::installStagedBuild() {
+    // Its leaves hold staged_.indices[first, first + count): that is the new leaf order.
+    nodes_.swap(staged_.nodes);
+    original_.assign(staged_.indices.begin(), staged_.indices.end());
+    for (std::uint32_t i = 0; i < original_.size(); ++i) position_[original_[i]] = i;
+    freePairs_.clear();
+    planRefit();
+    staged_.active = false;
+    lastBuildWork_ = staged_.work;
 }
 
 namespace {
@@ -354,11 +427,58 @@ bool Bvh::update(std::span<const Primitive> primitives, const LeafWriter& write,
 
 bool Bvh::refitOrRebuild(std::span<const Primitive> primitives, ThreadPool* pool, const LeafWriter* write) {
     subtreesRebuilt_ = 0;
-    if (refits(primitives.size()) && refit(primitives, pool, write) <= costAtBuild_ * kRebuildGrowth) {
-        rebuildDegradedSubtrees(primitives, pool);
-        return false;
+    lastUpdate_ = {};
+    const std::uint32_t n = std::uint32_t(primitives.size());
+    auto buildWhole = [&] {
+        build(primitives, pool);
+        lastUpdate_.action = UpdateAction::Rebuilt;
+        lastUpdate_.primitivesRebuilt = n;
+        return true;
+    };
+    if (!refits(n)) return buildWhole();
+    const float cost = refit(primitives, pool, write);
+    const float growth = costAtBuild_ > 0 ? cost / costAtBuild_ : 0;
+    lastUpdate_.costGrowth = growth;
+    lastUpdate_.action = UpdateAction::Refit;
+    const float wear = growth - lastGrowth_;  // since the last frame
+    lastGrowth_ = growth;
+    if (!staged_.active) {
+        const bool small = n < kStagedBuildMin;  // a whole build costs little
+        std::uint32_t frames = 0;
+        if (!small && growth > kStagedGrowth) {
+            // Spread the rebuild over two thirds of the frames (up to
+            // kMaxStagedFrames) the tree can go on wearing at its last frame's
+            // pace before it reaches kRebuildNowGrowth (wear speeds up as boxes grow).
+            const float room =
+                wear > 0 ? (kRebuildNowGrowth - growth) / (1.5f * wear) : float(kMaxStagedFrames);
+            frames = std::uint32_t(std::clamp(room, 0.0f, float(kMaxStagedFrames)));
+        }
+        if (frames < 2) {  // no staging: as for a small tree
+            if (cost > costAtBuild_ * kRebuildGrowth) return buildWhole();
+            rebuildDegradedSubtrees(primitives, pool);
+            if (subtreesRebuilt_ > 0) lastUpdate_.action = UpdateAction::Subtrees;
+            return false;
+        }
+        startStagedBuild(primitives, pool);
+        staged_.budget = std::max<std::uint64_t>(n, (lastBuildWork_ + frames - 1) / frames);
+    } else if (cost > costAtBuild_ * kRebuildNowGrowth) {
+        // Things moved faster than the tree's pace so far: tracing with the
+        // worn one would cost more than building a new one now.
+        return buildWhole();
+    } else {
+        rebuildDegradedSubtrees(primitives, pool);  // the old tree is still the one traced
     }
-    build(primitives, pool);
+    lastUpdate_.action = UpdateAction::Staged;
+    if (!advanceStagedBuild(staged_.budget)) return false;
+    // The new tree takes over. Its cost at build is that over the bounds it was
+    // split from; refitted to this frame, it shows how far things moved since.
+    installStagedBuild();
+    recordCostAtBuild(sahCost());
+    const float swappedCost = refit(primitives, pool, nullptr);  // the frame is whole by now
+    lastUpdate_.action = UpdateAction::Swapped;
+    lastUpdate_.primitivesRebuilt = n;
+    lastUpdate_.costGrowth = costAtBuild_ > 0 ? swappedCost / costAtBuild_ : 0;
+    lastGrowth_ = lastUpdate_.costGrowth;
     return true;
 }
 
@@ -394,10 +514,14 @@ void Bvh::rebuildDegradedSubtrees(std::span<const Primitive> primitives, ThreadP
     }
     rebuildList_.resize(chosen);
     subtreesRebuilt_ = std::uint32_t(chosen);
+    lastUpdate_.subtreesRebuilt = subtreesRebuilt_;
+    lastUpdate_.primitivesRebuilt = spent;
 
     // Each subtree owns a contiguous range of ordered_: its primitives are
     // re-split there from their current bounds, into a local node array.
     if (subtreeNodes_.size() < chosen) subtreeNodes_.resize(chosen);
+    std::vector<std::uint64_t>& subtreeWork = subtreeWork_;
+    subtreeWork.assign(chosen, 0);
     forChunks(pool, std::uint32_t(chosen), [&](std::uint32_t j) {
         const Subtree& subtree = subtrees_[rebuildList_[j]];
         for (std::uint32_t i = subtree.firstPrimitive; i < subtree.endPrimitive; ++i) {
@@ -408,8 +532,10 @@ void Bvh::rebuildDegradedSubtrees(std::span<const Primitive> primitives, ThreadP
         }
         std::vector<Node>& local = subtreeNodes_[j];
         local.assign(1, Node{});
-        buildNodes(primitives, local, {0, subtree.firstPrimitive, subtree.endPrimitive, kRefitDepth}, 0);
+        subtreeWork[j] =
+            buildNodes(primitives, local, {0, subtree.firstPrimitive, subtree.endPrimitive, kRefitDepth}, 0);
     });
+    for (std::size_t j = 0; j < chosen; ++j) lastUpdate_.splitWork += subtreeWork[j];
     for (std::size_t j = 0; j < chosen; ++j) placeSubtree(subtrees_[rebuildList_[j]], subtreeNodes_[j]);
 
     // The refit plan follows the new shapes; the other subtrees keep their

@@ -35,13 +35,24 @@ class Bvh {
     void build(std::span<const Primitive> primitives, ThreadPool* pool = nullptr);
 
     /// This frame's tree: refits the last tree to the moved primitives (same
-    /// count, any motion: the result is always correct), and rebuilds when
+    /// count, any motion: the result is always correct), and rebuilds it when
     /// there is none or refitting has let its SAH cost grow by kRebuildGrowth.
-    /// Otherwise the subtrees whose own SAH cost has grown by kSubtreeRebuildGrowth
-    /// since they were built are rebuilt, the worst first, up to 1/kSubtreeBudget
-    /// of the primitives per call: playback then pays for its rebuilds a little
-    /// every frame instead of all at once now and then.
-    /// Returns true when it rebuilt the whole tree.
+    /// A tree of kStagedBuildMin primitives or more is rebuilt in stages
+    /// instead, from kStagedGrowth on: the new tree is split from the bounds of
+    /// the frame that found the old one worn, a share of the splitting per
+    /// call, while the old one goes on being refitted; once complete it
+    /// replaces the old one (refitted to the frame at hand). The share is 1/k
+    /// of a whole build, for k (2 to kMaxStagedFrames) two thirds of the frames
+    /// the old tree can go on wearing at its last frame's pace before it
+    /// reaches kRebuildNowGrowth; with less room the tree is rebuilt whole at
+    /// kRebuildGrowth as a small one is, and if it gets to kRebuildNowGrowth
+    /// anyway, at once. Meanwhile, and otherwise, the subtrees whose own SAH cost has
+    /// grown by kSubtreeRebuildGrowth since they were built are rebuilt, the
+    /// worst first, up to 1/kSubtreeBudget of the primitives per call. So
+    /// playback pays for its rebuilds a little every frame instead of all at
+    /// once now and then. Any tree gives the same hits (ties go to the lowest
+    /// frame index), so images do not depend on which one was used.
+    /// Returns true when the tree is a new one (built whole, or a staged one put in).
     bool update(std::span<const Primitive> primitives, ThreadPool* pool = nullptr);
     /// Writes every primitive of this frame into leaf order, primitive i into
     /// leaves[leafOf[i]] (and wherever else the caller keeps it): see below.
@@ -57,10 +68,33 @@ class Bvh {
     /// True when update() of `count` primitives starts by refitting the last tree.
     bool refits(std::size_t count) const { return !nodes_.empty() && count == ordered_.size(); }
     static constexpr float kRebuildGrowth = 1.3f;
+    static constexpr float kStagedGrowth = 1.25f;
+    static constexpr float kRebuildNowGrowth = 1.6f;
     static constexpr float kSubtreeRebuildGrowth = 1.1f;
     static constexpr std::uint32_t kSubtreeBudget = 16;
+    static constexpr std::uint32_t kStagedBuildMin = 4096;
+    static constexpr std::uint32_t kMaxStagedFrames = 8;
     /// Subtrees rebuilt by the last update() (0 after a full rebuild).
     std::uint32_t subtreesRebuilt() const { return subtreesRebuilt_; }
+    /// What one update() did to the tree.
+    enum class UpdateAction : std::uint8_t {
+        Refit,     ///< refitted only
+        Subtrees,  ///< refitted, then degraded subtrees rebuilt
+        Staged,    ///< refitted while a staged rebuild advanced
+        Swapped,   ///< a staged rebuild completed: the new tree put in and refitted
+        Rebuilt,   ///< built whole in this call (no tree yet, another primitive count, or a small tree worn)
+    };
+    /// What the last update() did, for logs and tests.
+    struct UpdateReport {
+        UpdateAction action = UpdateAction::Rebuilt;
+        std::uint32_t subtreesRebuilt = 0;
+        std::uint32_t primitivesRebuilt = 0;  ///< in rebuilt subtrees, or every one for a new tree
+        /// Splitting done in this call: the primitives of every node split or
+        /// made a leaf, summed (a full build of n primitives is about n * depth).
+        std::uint64_t splitWork = 0;
+        float costGrowth = 0;  ///< refitted SAH cost / cost at the last full build (0: not refitted)
+    };
+    const UpdateReport& lastUpdate() const { return lastUpdate_; }
 
     /// Expected cost of a ray under the SAH model, relative to the root's area.
     float sahCost() const;
@@ -136,10 +170,25 @@ class Bvh {
     struct BuildTask {
         std::uint32_t node, begin, end, depth;
     };
+    /// Makes out[task.node] a leaf over in.indices[task.begin, task.end), or
+    /// splits it there: appends its child pair to `out`, puts their tasks in
+    /// `children` (left, right) and returns true.
+    struct SplitInput {
+        const Bounds* bounds;    ///< by frame index
+        const Vec3* centroids;   ///< by frame index
+        std::uint32_t* indices;  ///< the leaf order being sorted
+    };
+    bool splitNode(const SplitInput& in, std::vector<Node>& out, const BuildTask& task,
+                   BuildTask (&children)[2]);
     /// Splits `root` depth first, appending child pairs to `out`; tasks of fewer
     /// than `deferBelow` primitives (other than the root) go to deferred_ instead.
-    void buildNodes(std::span<const Primitive> primitives, std::vector<Node>& out, BuildTask root,
-                    std::uint32_t deferBelow);
+    /// Returns its split work (UpdateReport::splitWork).
+    std::uint64_t buildNodes(std::span<const Primitive> primitives, std::vector<Node>& out, BuildTask root,
+                             std::uint32_t deferBelow);
+    /// The bounds and centroids of `primitives`, and indices in frame order.
+    static void snapshotBounds(std::span<const Primitive> primitives, ThreadPool* pool,
+                               std::vector<Bounds>& bounds, std::vector<Vec3>& centroids,
+                               std::vector<std::uint32_t>& indices);
     std::vector<BuildTask> deferred_;              ///< subtrees set aside for the pool
     std::vector<std::vector<Node>> subtreeNodes_;  ///< their nodes, before they are appended
 
@@ -159,7 +208,34 @@ class Bvh {
     std::vector<std::uint32_t> rebuildSlots_;  ///< placeSubtree() scratch
     std::vector<Subtree> subtreesBefore_;      ///< rebuildDegradedSubtrees() scratch
     std::vector<float> costAtBuildBefore_;     ///< rebuildDegradedSubtrees() scratch
+    std::vector<std::uint64_t> subtreeWork_;   ///< rebuildDegradedSubtrees() scratch: split work per subtree
     std::uint32_t subtreesRebuilt_ = 0;
+    UpdateReport lastUpdate_;
+
+    /// A staged rebuild (see update()): the new tree's nodes and the splits
+    /// still to do, over a snapshot of the bounds, with the leaf order taking
+    /// shape in `indices`. Its own arrays, so that subtree rebuilds of the old
+    /// tree go on meanwhile.
+    struct StagedBuild {
+        bool active = false;
+        std::vector<Bounds> bounds;
+        std::vector<Vec3> centroids;
+        std::vector<std::uint32_t> indices;
+        std::vector<Node> nodes;
+        std::vector<BuildTask> tasks;
+        std::uint64_t budget = 0;  ///< split work per call
+        std::uint64_t work = 0;    ///< split work so far
+    };
+    std::uint64_t lastBuildWork_ = 0;  ///< split work of the tree in use (whole or staged build)
+    float lastGrowth_ = 1;             ///< its refitted cost / cost at build, last update
+    StagedBuild staged_;
+    void startStagedBuild(std::span<const Primitive> primitives, ThreadPool* pool);
+    /// Does the staged splits, depth first, up to `budget` work; true when none is left.
+    bool advanceStagedBuild(std::uint64_t budget);
+    /// Puts the completed staged tree in place of the old one (refit() then fills its leaves and boxes).
+    void installStagedBuild();
+    /// Records the refitted cost of a tree just built as its cost at build, whole and per subtree.
+    void recordCostAtBuild(float cost);
     struct PlanItem {
         std::uint32_t node, depth;
     };
