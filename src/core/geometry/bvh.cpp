@@ -426,7 +426,6 @@ bool Bvh::update(std::span<const Primitive> primitives, const LeafWriter& write,
 }
 
 bool Bvh::refitOrRebuild(std::span<const Primitive> primitives, ThreadPool* pool, const LeafWriter* write) {
-    subtreesRebuilt_ = 0;
     lastUpdate_ = {};
     const std::uint32_t n = std::uint32_t(primitives.size());
     auto buildWhole = [&] {
@@ -456,7 +455,7 @@ bool Bvh::refitOrRebuild(std::span<const Primitive> primitives, ThreadPool* pool
         if (frames < 2) {  // no staging: as for a small tree
             if (cost > costAtBuild_ * kRebuildGrowth) return buildWhole();
             rebuildDegradedSubtrees(primitives, pool);
-            if (subtreesRebuilt_ > 0) lastUpdate_.action = UpdateAction::Subtrees;
+            if (lastUpdate_.subtreesRebuilt > 0) lastUpdate_.action = UpdateAction::Subtrees;
             return false;
         }
         startStagedBuild(primitives, pool);
@@ -513,8 +512,7 @@ void Bvh::rebuildDegradedSubtrees(std::span<const Primitive> primitives, ThreadP
         spent += size;
     }
     rebuildList_.resize(chosen);
-    subtreesRebuilt_ = std::uint32_t(chosen);
-    lastUpdate_.subtreesRebuilt = subtreesRebuilt_;
+    lastUpdate_.subtreesRebuilt = std::uint32_t(chosen);
     lastUpdate_.primitivesRebuilt = spent;
 
     // Each subtree owns a contiguous range of ordered_: its primitives are

@@ -75,7 +75,7 @@ class Bvh {
     static constexpr std::uint32_t kStagedBuildMin = 4096;
     static constexpr std::uint32_t kMaxStagedFrames = 8;
     /// Subtrees rebuilt by the last update() (0 after a full rebuild).
-    std::uint32_t subtreesRebuilt() const { return subtreesRebuilt_; }
+    std::uint32_t subtreesRebuilt() const { return lastUpdate_.subtreesRebuilt; }
     /// What one update() did to the tree.
     enum class UpdateAction : std::uint8_t {
         Refit,     ///< refitted only
@@ -209,7 +209,6 @@ class Bvh {
     std::vector<Subtree> subtreesBefore_;      ///< rebuildDegradedSubtrees() scratch
     std::vector<float> costAtBuildBefore_;     ///< rebuildDegradedSubtrees() scratch
     std::vector<std::uint64_t> subtreeWork_;   ///< rebuildDegradedSubtrees() scratch: split work per subtree
-    std::uint32_t subtreesRebuilt_ = 0;
     UpdateReport lastUpdate_;
 
     /// A staged rebuild (see update()): the new tree's nodes and the splits
