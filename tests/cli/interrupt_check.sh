@@ -10,12 +10,13 @@
 # SIGNAL nohup: f2 starts with SIGHUP ignored (as under nohup); a SIGHUP must
 # not stop it, so the SIGTERM sent after it is what ends it (143).
 set -u
+. "$(dirname "$0")/../skip.sh"
 sig=$1 output=$2
 shift 2
 ignore_hup=0
 if [ "$sig" = nohup ]; then ignore_hup=1 sig=TERM; fi
 if [ "$sig" = HUP ] && (($(printf '%d' "0x$(awk '/^SigIgn/ {print $2}' /proc/$$/status)") & 1)); then
-  echo "SKIP: SIGHUP is ignored in this test's environment (started under nohup?)"; exit 77
+  skip_impossible "SIGHUP is ignored in this test's environment (started under nohup?)"
 fi
 dir=$(dirname "$output")
 rm -rf "$dir" && mkdir -p "$dir"

@@ -7,7 +7,7 @@ set -u
 case=$1 f2=$2 fakebin=$3 dir=$4 scene=$5
 rm -rf "$dir" && mkdir -p "$dir" && cd "$dir" || exit 1
 fail() { echo "FAIL: $*"; exit 1; }
-skip() { echo "skipped: $*"; exit 77; }
+. "$(dirname "$0")/../skip.sh"
 # run EXPECTED_EXIT ARGS...: f2 ARGS..., output in ./out.txt; checks the exit code.
 run() {
   local want=$1
@@ -33,16 +33,16 @@ disk-full-fake)  # ffmpeg says "No space left on device" and exits 0
   no_temporaries
   ;;
 silent-junk)  # ffmpeg exits 0 silently with a file that is no video: the probe finds it
-  command -v ffprobe >/dev/null || skip "no ffprobe: only a probe can tell"
+  command -v ffprobe >/dev/null || skip_missing "no ffprobe: only a probe can tell"
   F2_FAKE_FFMPEG=silent-junk PATH="$fakebin:$PATH" run 1 "${small[@]}" --frames 0-2 -o v.webm
   grep -q "ffprobe" out.txt || fail "the message does not say the probe failed"
   [ ! -e v.webm ] || fail "v.webm was written"
   no_temporaries
   ;;
 disk-full-tmpfs)  # the real ffmpeg on a real full file system
-  command -v ffmpeg >/dev/null || skip "no ffmpeg"
+  command -v ffmpeg >/dev/null || skip_missing "no ffmpeg"
   mkdir full
-  mount -t tmpfs -o size=64k tmpfs full 2>/dev/null || skip "cannot mount a tmpfs (not root, or no CAP_SYS_ADMIN)"
+  mount -t tmpfs -o size=64k tmpfs full 2>/dev/null || skip_impossible "cannot mount a tmpfs (not root, or no CAP_SYS_ADMIN)"
   trap 'umount "$dir/full"' EXIT
   head -c 61440 /dev/zero >full/filler  # 4 KiB left: less than any of the videos
   for ext in gif webm mp4; do
@@ -52,7 +52,7 @@ disk-full-tmpfs)  # the real ffmpeg on a real full file system
   done
   ;;
 devices)  # -o a device: written directly, never replaced by a regular file
-  mknod null c 1 3 2>/dev/null && mknod full c 1 7 2>/dev/null || skip "cannot create device nodes (mknod needs root)"
+  mknod null c 1 3 2>/dev/null && mknod full c 1 7 2>/dev/null || skip_impossible "cannot create device nodes (mknod needs root)"
   run 0 "${small[@]}" -o null
   [ -c null ] || fail "the device 'null' was replaced"
   run 1 "${small[@]}" -o full
@@ -86,7 +86,7 @@ symlinks)  # a symbolic link is followed: the file it names is replaced, the lin
   no_temporaries real
   ;;
 protocol-names)  # names ffmpeg would read as protocols are plain files
-  command -v ffmpeg >/dev/null || skip "no ffmpeg"
+  command -v ffmpeg >/dev/null || skip_missing "no ffmpeg"
   run 0 "${small[@]}" --frames 0-1 -o file:y.gif
   [ "$(head -c 3 file:y.gif)" = "GIF" ] || fail "file:y.gif is not the GIF"
   [ ! -e y.gif ] || fail "y.gif was written"
@@ -106,7 +106,7 @@ long-name)  # a legal 254-byte file name, as a PNG and as a video
   no_temporaries
   ;;
 stdout-full)  # standard output on a full disk: an error, never exit 0 without the output
-  [ -c /dev/full ] || skip "no /dev/full"
+  [ -c /dev/full ] || skip_impossible "no /dev/full"
   for command in "info $scene" "check $scene" "export $scene --pov" "render $scene --size 8x6 -o -" \
     "render $scene --size 8x6 --pixel 1,1" "bench $scene --size 8x6 --frames 3 --warmup 0 --json"; do
     # shellcheck disable=SC2086  # the words of $command are its arguments
@@ -122,9 +122,9 @@ pattern-dirs)  # the frame number in the directory part: each frame's directory 
   for f in 0 1 2 3; do [ -s out_$f/f.png ] || fail "out_$f/f.png missing"; done
   ;;
 same-pid)  # two workers with the same PID (separate PID namespaces) on one directory
-  command -v unshare >/dev/null || skip "no unshare"
-  real=$(command -v ffmpeg) || skip "no ffmpeg"
-  unshare -pf true 2>/dev/null || skip "unshare -pf is not permitted here"
+  command -v unshare >/dev/null || skip_missing "no unshare"
+  real=$(command -v ffmpeg) || skip_missing "no ffmpeg"
+  unshare -pf true 2>/dev/null || skip_impossible "unshare -pf is not permitted here"
   export F2_FAKE_FFMPEG=rendezvous F2_FAKE_FFMPEG_LOG=$dir/log F2_FAKE_FFMPEG_PARTIES=2 F2_REAL_FFMPEG=$real
   PATH="$fakebin:$PATH" unshare -pf "$f2" "${small[@]}" --frames 0-2 -o v.gif >w1.txt 2>&1 &
   p1=$!
@@ -134,7 +134,7 @@ same-pid)  # two workers with the same PID (separate PID namespaces) on one dire
   wait $p2; c2=$?
   cat w1.txt w2.txt log
   [ "$c1" -eq 0 ] && [ "$c2" -eq 0 ] || fail "exits $c1 and $c2"
-  [ "$(cut -d' ' -f1 log | sort -u)" = "1" ] || skip "the workers did not both run as PID 1"
+  [ "$(cut -d' ' -f1 log | sort -u)" = "1" ] || skip_impossible "the workers did not both run as PID 1"
   [ "$(cut -d' ' -f2 log | sort -u | wc -l)" -eq 2 ] || fail "both workers wrote the same temporary file"
   [ "$(head -c 3 v.gif)" = "GIF" ] || fail "v.gif is not a GIF"
   no_temporaries

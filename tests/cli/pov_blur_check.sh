@@ -6,7 +6,8 @@
 # averages those, and requires f2's frame to be within BOUND levels of that
 # mean (mean absolute difference), and much closer than f2's sharp frame.
 set -eu
-command -v povray >/dev/null || { echo "povray is not installed (apt-get install povray): skipped"; exit 77; }
+. "$(dirname "$0")/../skip.sh"
+command -v povray >/dev/null || skip_missing "povray is not installed (apt-get install povray)"
 f2=$1 compare=$2 out=$3 name=$4 scene=$5 frame=$6 shutter=$7 samples=$8 w=$9 h=${10} bound=${11}
 mkdir -p "$out"
 "$f2" render "$scene" --frame "$frame" --size "${w}x$h" --motion-blur "$shutter" --motion-samples "$samples" \

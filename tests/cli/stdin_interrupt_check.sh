@@ -4,6 +4,7 @@
 # killed by Ctrl+C, and writes nothing.
 # Deterministic: the signal is sent once f2 itself (not the shell starting it)
 # sleeps reading the FIFO that stands in for the terminal.
+. "$(dirname "$0")/../skip.sh"
 set -u -m  # job control: a background job would otherwise ignore SIGINT
 f2=$1 dir=$2
 rm -rf "$dir" && mkdir -p "$dir"
@@ -20,7 +21,7 @@ for ((i = 0; i < 1500; ++i)); do  # a bound only for kernels without wchan: then
 done
 if [ "$reading" -eq 0 ]; then
   kill "$pid"; wait "$pid"
-  echo "SKIP: cannot see f2 waiting on the FIFO (/proc/PID/wchan)"; exit 77
+  skip_impossible "cannot see f2 waiting on the FIFO (/proc/PID/wchan)"
 fi
 kill -INT "$pid"
 wait "$pid"

@@ -3,16 +3,15 @@
 # in editors/vscode (a dev dependency), with the network shut off by a dead
 # proxy, and checks the .vsix: the files VS Code loads are in it (the grammar
 # link resolved), the language client is bundled, tests and dev packages are not.
-# Exit 77 (skipped) when Node.js, python3 or the npm packages are missing.
+# Skipped (tests/skip.sh: skip_missing) when Node.js, python3 or the npm packages are missing.
 set -u
+. "$(dirname "$0")/../skip.sh"
 ext=$(cd "$(dirname "$0")/../../editors/vscode" && pwd)
 if ! command -v node >/dev/null 2>&1 || ! command -v python3 >/dev/null 2>&1; then
-  echo "SKIP: node and python3 are needed"
-  exit 77
+  skip_missing "node and python3 are needed"
 fi
 if [ ! -x "$ext/node_modules/.bin/vsce" ]; then
-  echo "SKIP: @vscode/vsce is not installed: run 'npm ci' in editors/vscode (scripts/test.sh does)"
-  exit 77
+  skip_missing "@vscode/vsce is not installed: run 'npm ci' in editors/vscode (scripts/test.sh does)"
 fi
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT

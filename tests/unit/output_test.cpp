@@ -12,6 +12,7 @@
 #include "io/pov_export.h"
 #include "io/prims_export.h"
 #include "io/video_encoder.h"
+#include "missing_tool.h"
 #include "test_scenes.h"
 
 namespace f2 {
@@ -111,7 +112,7 @@ TEST(VideoEncoder, FindsProgramsOnPath) {
 }
 
 TEST(VideoEncoder, WritesAVideoOrNothing) {
-    if (findProgram("ffmpeg").empty()) GTEST_SKIP() << "ffmpeg is not installed";
+    if (findProgram("ffmpeg").empty()) F2_SKIP_MISSING("ffmpeg is not installed");
     fs::path dir = fs::temp_directory_path() / ("f2_output_test_" + std::to_string(::getpid()));
     fs::create_directories(dir);
     Image frame;

@@ -4,8 +4,9 @@
 # window's size, refined when paused) and exits — a condition it checks, not
 # a delay — then this checks that the picture is not blank.
 #   screenshot.sh F2_VIEWER OUTPUT.png [SCENE] [extra f2-viewer options...]
-# Exit 77 (CTest SKIP_RETURN_CODE) when xvfb-run or ImageMagick is missing.
+# Skipped (tests/skip.sh: skip_missing) when xvfb-run or ImageMagick is missing.
 set -eu
+. "$(dirname "$0")/../skip.sh"
 
 viewer=$1
 out=$2
@@ -13,8 +14,7 @@ shift 2
 
 for tool in xvfb-run convert identify; do
     if ! command -v "$tool" >/dev/null 2>&1; then
-        echo "SKIP: '$tool' not found (install xvfb and imagemagick to run this test)"
-        exit 77
+        skip_missing "'$tool' not found (install xvfb and imagemagick to run this test)"
     fi
 done
 

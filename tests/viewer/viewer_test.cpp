@@ -828,7 +828,7 @@ void ViewerTest::exportWritesPngSequence() {
 }
 
 void ViewerTest::exportWritesVideo() {
-    if (QStandardPaths::findExecutable("ffmpeg").isEmpty()) QSKIP("ffmpeg is not on PATH");
+    if (QStandardPaths::findExecutable("ffmpeg").isEmpty()) F2_QSKIP_MISSING("ffmpeg is not on PATH");
     QTemporaryDir dir;
     const QString path = dir.filePath("seed.mp4");
     ExportJob job = seedExportJob(80, 60, 5, mp4Sink(path));
@@ -862,7 +862,7 @@ void ViewerTest::exportWritesVideo() {
 }
 
 void ViewerTest::cancelledVideoExportLeavesNoFile() {
-    if (QStandardPaths::findExecutable("ffmpeg").isEmpty()) QSKIP("ffmpeg is not on PATH");
+    if (QStandardPaths::findExecutable("ffmpeg").isEmpty()) F2_QSKIP_MISSING("ffmpeg is not on PATH");
     QTemporaryDir dir;
     const QString path = dir.filePath("cancelled.mp4");
     auto release = std::make_shared<std::atomic<bool>>(false);

@@ -5,5 +5,5 @@
 # Install it with: code --install-extension f2-stage-0.1.0.vsix
 set -eu
 cd "$(dirname "$0")/.."
-npm ci --no-audit --no-fund
+npm ci --omit=optional --no-audit --no-fund
 npx --no-install vsce package --skip-license --allow-missing-repository "$@"
