@@ -19,8 +19,13 @@ target_compile_options(f2_fp INTERFACE -fno-math-errno -ffp-contract=off)
 add_library(f2_opt INTERFACE)
 target_compile_options(f2_opt INTERFACE $<$<CONFIG:Release,RelWithDebInfo>:-O3>)
 target_link_libraries(f2_opt INTERFACE f2_fp)
+# Only these targets get CPU flags, so the rest compiles alike in every
+# preset (the avx2 preset sets F2_CPU_FLAGS, not CMAKE_CXX_FLAGS).
+set(F2_CPU_FLAGS "" CACHE STRING "CPU flags of the core and its packet tests when F2_NATIVE is OFF (e.g. -mavx2;-mfma)")
 if(F2_NATIVE)
   target_compile_options(f2_opt INTERFACE -march=native)
+elseif(F2_CPU_FLAGS)
+  target_compile_options(f2_opt INTERFACE ${F2_CPU_FLAGS})
 endif()
 
 if(F2_SANITIZE)

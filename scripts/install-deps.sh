@@ -28,6 +28,8 @@ MORE_PACKAGES=(
   clang libclang-rt-14-dev
   # the formatting check of .ci/run (scripts/check-format.sh)
   clang-format
+  # one build's objects serve the next preset's (CMakeLists.txt: F2_CCACHE)
+  ccache
 )
 
 mode=${1:-all}
