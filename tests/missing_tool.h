@@ -2,10 +2,10 @@
 /// A GoogleTest case that needs a program the machine lacks: skipped with the
 /// reason, or failed when F2_REQUIRE_ALL_TESTS=1 (.ci/run sets it, since there
 /// every package can be installed; tests/skip.sh is the shell tests' twin).
+#include <gtest/gtest.h>
+
 #include <cstdlib>
 #include <cstring>
-
-#include <gtest/gtest.h>
 
 namespace f2::test {
 
@@ -17,10 +17,10 @@ inline bool requireAllTests() {
 }  // namespace f2::test
 
 /// Ends the test: FAIL() under F2_REQUIRE_ALL_TESTS=1, else GTEST_SKIP(); `reason` streams.
-#define F2_SKIP_MISSING(reason)                                                              \
-    do {                                                                                     \
-        if (::f2::test::requireAllTests()) {                                                 \
+#define F2_SKIP_MISSING(reason)                                                                     \
+    do {                                                                                            \
+        if (::f2::test::requireAllTests()) {                                                        \
             FAIL() << reason << " (F2_REQUIRE_ALL_TESTS=1: nothing the tests need may be missing)"; \
-        }                                                                                    \
-        GTEST_SKIP() << reason;                                                              \
+        }                                                                                           \
+        GTEST_SKIP() << reason;                                                                     \
     } while (false)

@@ -15,11 +15,11 @@ class QTemporaryDir;
 
 /// A test that needs a program the machine lacks: QSKIP with the reason, or
 /// QFAIL under F2_REQUIRE_ALL_TESTS=1 (.ci/run; tests/skip.sh says why).
-#define F2_QSKIP_MISSING(reason)                                                               \
-    do {                                                                                       \
-        if (qgetenv("F2_REQUIRE_ALL_TESTS") == "1")                                            \
+#define F2_QSKIP_MISSING(reason)                                                              \
+    do {                                                                                      \
+        if (qgetenv("F2_REQUIRE_ALL_TESTS") == "1")                                           \
             QFAIL(reason " (F2_REQUIRE_ALL_TESTS=1: nothing the tests need may be missing)"); \
-        QSKIP(reason);                                                                         \
+        QSKIP(reason);                                                                        \
     } while (false)
 
 namespace f2::viewer::test {
