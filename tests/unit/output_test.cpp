@@ -230,7 +230,8 @@ TEST(PovExport, NothingFromOutsideTheNumbersReachesLiveCode) {
     scene.objects.front().name = "s\n#declare X = 1;";
     const std::string pov = povScene(scene, 0, Camera::fromDesc(scene.camera), hostile);
     EXPECT_EQ(liveLines(pov), liveLines(clean));
-    EXPECT_NE(pov.find("// dir\\n#fopen F \"x\" write\\r#write (F, 1) */ \"q\"\\n/* # at frame 0"), std::string::npos);
+    EXPECT_NE(pov.find("// dir\\n#fopen F \"x\" write\\r#write (F, 1) */ \"q\"\\n/* # at frame 0"),
+              std::string::npos);
     EXPECT_NE(pov.find("// s\\n#declare X = 1;"), std::string::npos);
     EXPECT_EQ(pov.find('\r'), std::string::npos);
 }
