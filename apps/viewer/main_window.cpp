@@ -26,6 +26,7 @@
 
 #include "animation_exporter.h"
 #include "autosave.h"
+#include "camera_key_writer.h"
 #include "capture_pose.h"
 #include "core/anim/frame_builder.h"
 #include "core/anim/frame_time.h"
@@ -687,11 +688,13 @@ void MainWindow::keyCameraHere() {
     // What the user sees: the look-around if there is one, else the scene camera.
     const auto& orbit = viewport_->orbit();
     const Pose pose = cameraKeyPose(*scene, frame, orbit ? std::optional(orbit->pose()) : std::nullopt);
-    const QString text = editor()->toPlainText();
-    applyEdit(editor(), keyEdit(text, QStringLiteral("camera"), frame, pose, cameraLine(text)));
+    const CameraKeyWrite write = cameraKeyWrite(editor()->toPlainText(), *scene, frame, pose);
+    applyEdits(editor(), write.edits);
+    QStringList notes;
+    if (!write.note.isEmpty()) notes << write.note;
     if (orbit && scene->camera.lookAt)
-        statusBar()->showMessage(
-            tr("The camera's /look_at turns it: the key moves the eye, not where it looks."), 8000);
+        notes << tr("The camera's /look_at turns it: the key moves the eye, not where it looks.");
+    if (!notes.isEmpty()) statusBar()->showMessage(notes.join(u' '), 8000);
 }
 
 QString MainWindow::selectionStatus() const { return selectionStatus_->text(); }

