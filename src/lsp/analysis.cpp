@@ -75,14 +75,20 @@ Analysis analyze(std::string uri, TextDocument document, const SourceOverlay& op
     a.uri = std::move(uri);
     a.document = std::move(document);
     if (const auto rootText = open.find(root); !root.empty() && root != a.path && rootText != open.end()) {
-        // This document's own text stands for its file in the including scene.
-        SourceOverlay withThis = open;
-        withThis[a.path] = a.document.text();
-        a.sources = scanScene(root, TextDocument(rootText->second, 0), withThis);
+        // This document's own text stands for its file in the including scene
+        // (a copy of the texts only when they hold another one: a server's do not).
+        const auto own = open.find(a.path);
+        SourceOverlay withThis;
+        if (own == open.end() || own->second != a.document.text()) {
+            withThis = open;
+            withThis[a.path] = a.document.text();
+        }
+        const SourceOverlay& texts = withThis.empty() ? open : withThis;
+        a.sources = scanScene(root, TextDocument(rootText->second, 0), texts);
         a.self = a.sources.find(a.path);
         if (a.self >= 0) {
             a.root = root;
-            a.result = parseScene(rootText->second, root, ParseLimits{}, a.index, withThis);
+            a.result = parseScene(rootText->second, root, ParseLimits{}, a.index, texts);
             return a;
         }
     }
@@ -95,8 +101,10 @@ Analysis analyze(std::string uri, TextDocument document, const SourceOverlay& op
 
 std::string Analysis::uriOf(std::string_view file) const {
     if (file == path) return uri;
-    const auto open = openUris.find(file);
-    return open != openUris.end() ? open->second : uriFromPath(file);
+    if (openUris) {
+        if (const auto open = openUris->find(file); open != openUris->end()) return open->second;
+    }
+    return uriFromPath(file);
 }
 
 const TextDocument* Analysis::textOf(std::string_view file) const {

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -37,9 +38,10 @@ struct Analysis {
     SymbolIndex index;
     SceneSources sources;  ///< the scene's files from `root`, their variables in reading order
     int self = 0;          ///< this document in sources.files
-    /// The URIs the client gave other open documents, by path (a client may
-    /// spell a path differently from uriFromPath).
-    std::map<std::string, std::string, std::less<>> openUris;
+    /// The URIs the client gave open documents, by path (a client may spell a
+    /// path differently from uriFromPath); shared by every document of a
+    /// server, which keeps it current. Null: none known.
+    std::shared_ptr<const std::map<std::string, std::string, std::less<>>> openUris;
 
     /// True when a place is in this document (not in an included file).
     bool inDocument(const SourceLoc& loc) const { return loc.file == path; }

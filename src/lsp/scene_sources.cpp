@@ -96,19 +96,29 @@ std::uint32_t SceneSources::orderOf(int file, int line) const {
 }
 
 bool SceneSources::reaches(int from, int to) const {
-    std::vector<int> todo{from};
+    if (from == to) return true;
+    return to >= 0 && static_cast<std::size_t>(to) < files.size() &&
+           reachableFrom(from)[static_cast<std::size_t>(to)];
+}
+
+std::vector<bool> SceneSources::reachableFrom(int from) const {
     std::vector<bool> seen(files.size(), false);
+    if (from < 0 || static_cast<std::size_t>(from) >= files.size()) return seen;
+    std::vector<std::vector<int>> targets(files.size());
+    for (const IncludeLink& l : includes) targets[static_cast<std::size_t>(l.file)].push_back(l.target);
+    std::vector<int> todo{from};
+    seen[static_cast<std::size_t>(from)] = true;
     while (!todo.empty()) {
         const int f = todo.back();
         todo.pop_back();
-        if (f == to) return true;
-        if (f < 0 || seen[static_cast<std::size_t>(f)]) continue;
-        seen[static_cast<std::size_t>(f)] = true;
-        for (const IncludeLink& l : includes) {
-            if (l.file == f) todo.push_back(l.target);
+        for (const int t : targets[static_cast<std::size_t>(f)]) {
+            if (!seen[static_cast<std::size_t>(t)]) {
+                seen[static_cast<std::size_t>(t)] = true;
+                todo.push_back(t);
+            }
         }
     }
-    return false;
+    return seen;
 }
 
 SceneSources scanScene(const std::string& path, const TextDocument& document, const SourceOverlay& open) {

@@ -41,6 +41,8 @@ struct SceneSources {
     std::uint32_t orderOf(int file, int line) const;
     /// True when `to` is read through the includes of `from` (or is `from`).
     bool reaches(int from, int to) const;
+    /// For each file, whether it is read through the includes of `from` (or is `from`).
+    std::vector<bool> reachableFrom(int from) const;
 
     /// Reading order of each line of each file, first reading.
     std::vector<std::vector<std::uint32_t>> firstOrder;

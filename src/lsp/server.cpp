@@ -111,7 +111,8 @@ std::string applyChange(const std::string& text, const Json& change) {
     return text.substr(0, from) + newText + text.substr(to);
 }
 
-Server::Server(std::function<void(std::string_view)> log) : log_(std::move(log)) {}
+Server::Server(std::function<void(std::string_view)> log)
+    : log_(std::move(log)), openUris_(std::make_shared<std::map<std::string, std::string, std::less<>>>()) {}
 
 void Server::logProblem(std::string_view problem) const {
     if (log_) log_(problem);
@@ -220,19 +221,10 @@ void Server::dispatchNotification(const std::string& method, const Json& params,
         for (const Json& change : params.at("contentChanges")) text = applyChange(text, change);
         open(uri, std::move(text), intMember(params.at("textDocument"), "version"), out);
     } else if (method == "textDocument/didClose") {
-        const std::string uri = uriOf(params);
-        if (documents_.erase(uri) > 0) {
-            roots_.erase(uri);
-            out.push_back(notification("textDocument/publishDiagnostics",
-                                       {{"uri", uri}, {"diagnostics", Json::array()}}));
-            unpublishOthers(uri, {}, out);
-            publishedOthers_.erase(uri);
-            // Scenes that include it read it from disk again.
-            refresh(pathFromUri(uri), out);
-        }
+        close(uriOf(params), out);
     } else if (method == "textDocument/didSave") {
         // An included file may have changed: every open scene is read again.
-        refresh({}, out);
+        refresh({}, {}, out);
     } else if (!method.starts_with("$/") && method != "initialized" &&
                method != "workspace/didChangeConfiguration") {
         logProblem("unknown notification '" + method + "' ignored");
@@ -248,75 +240,179 @@ const Analysis& Server::document(const Json& params) const {
 void Server::open(std::string uri, std::string text, int version, std::vector<std::string>& out) {
     const std::string path = pathFromUri(uri);
     documents_[uri].document = TextDocument(std::move(text), version);
-    refresh(path, out);
+    urisByPath_[path].insert(uri);
+    syncPath(path);
+    refresh(path, {}, out);
 }
 
-SourceOverlay Server::openTexts() const {
-    SourceOverlay texts;
-    for (const auto& [uri, a] : documents_) texts[pathFromUri(uri)] = a.document.text();
-    return texts;
+void Server::close(const std::string& uri, std::vector<std::string>& out) {
+    if (documents_.erase(uri) == 0) return;
+    const std::string path = pathFromUri(uri);
+    roots_.erase(uri);
+    // The documents its includes reached may belong to another scene now.
+    const std::set<std::string> reached = unindex(uri);
+    links_.erase(uri);
+    if (auto it = urisByPath_.find(path); it != urisByPath_.end()) {
+        it->second.erase(uri);
+        if (it->second.empty()) urisByPath_.erase(it);
+    }
+    syncPath(path);
+    out.push_back(
+        notification("textDocument/publishDiagnostics", {{"uri", uri}, {"diagnostics", Json::array()}}));
+    unpublishOthers(uri, {}, out);
+    publishedOthers_.erase(uri);
+    // Scenes that include it read it from disk again.
+    refresh(path, reached, out);
 }
 
-std::string Server::rootOf(const std::string& uri,
-                           const std::map<std::string, std::set<std::string>>& closures) const {
+void Server::syncPath(const std::string& path) {
+    const auto it = urisByPath_.find(path);
+    if (it == urisByPath_.end()) {
+        texts_.erase(path);
+        openUris_->erase(path);
+        return;
+    }
+    const std::string& uri = *it->second.rbegin();
+    texts_[path] = documents_.at(uri).document.text();
+    (*openUris_)[path] = uri;
+}
+
+void Server::addDocumentsOf(const std::set<std::string>& paths, std::set<std::string>& to) const {
+    for (const std::string& path : paths) {
+        if (const auto it = urisByPath_.find(path); it != urisByPath_.end())
+            to.insert(it->second.begin(), it->second.end());
+    }
+}
+
+std::set<std::string> Server::unindex(const std::string& uri) {
+    const auto it = links_.find(uri);
+    if (it == links_.end()) return {};
+    auto forget = [&](std::map<std::string, std::set<std::string>>& reverse,
+                      const std::set<std::string>& paths) {
+        for (const std::string& path : paths) {
+            const auto entry = reverse.find(path);
+            if (entry == reverse.end()) continue;
+            entry->second.erase(uri);
+            if (entry->second.empty()) reverse.erase(entry);
+        }
+    };
+    forget(includedBy_, it->second.includes);
+    forget(readBy_, it->second.reads);
+    Links old = std::move(it->second);
+    it->second = {};
+    return std::move(old.includes);
+}
+
+std::set<std::string> Server::index(const std::string& uri) {
+    std::set<std::string> before = unindex(uri);
+    const Analysis& a = documents_.at(uri);
+    Links& links = links_[uri];
+    const std::vector<bool> reached = a.sources.reachableFrom(a.self);
+    for (std::size_t i = 0; i < a.sources.files.size(); ++i) {
+        const std::string& file = a.sources.files[i].path;
+        if (file == a.path) continue;
+        links.reads.insert(file);
+        if (reached[i]) links.includes.insert(file);
+    }
+    for (const std::string& file : a.result.files) {
+        if (file != a.path) links.reads.insert(file);
+    }
+    for (const std::string& file : links.includes) includedBy_[file].insert(uri);
+    for (const std::string& file : links.reads) readBy_[file].insert(uri);
+    return before;
+}
+
+void Server::reanalyse(const std::string& uri, const std::string& root) {
+    Analysis& a = documents_.at(uri);
+    a = analyze(uri, TextDocument(a.document.text(), a.document.version()), texts_,
+                root == uri ? std::string() : pathFromUri(root));
+    a.openUris = openUris_;
+    roots_[uri] = root;
+}
+
+std::string Server::rootOf(const std::string& uri) const {
     // The documents that include it (and that it does not include: in a cycle
     // each is its own scene); of those, one that no other includes.
-    const std::string path = pathFromUri(uri);
-    const auto& own = closures.at(uri);
+    const auto reaching = includedBy_.find(pathFromUri(uri));
+    if (reaching == includedBy_.end()) return uri;
+    const auto ownLinks = links_.find(uri);
+    const std::set<std::string> none;
+    const std::set<std::string>& own = ownLinks != links_.end() ? ownLinks->second.includes : none;
     std::vector<std::string> including;
-    for (const auto& [other, files] : closures) {
-        if (other != uri && files.contains(path) && !own.contains(pathFromUri(other)))
-            including.push_back(other);
+    for (const std::string& other : reaching->second) {
+        if (other != uri && !own.contains(pathFromUri(other))) including.push_back(other);
     }
     for (const std::string& candidate : including) {
         const std::string candidatePath = pathFromUri(candidate);
         const bool included = std::any_of(including.begin(), including.end(), [&](const std::string& o) {
-            return o != candidate && closures.at(o).contains(candidatePath);
+            return o != candidate && links_.at(o).includes.contains(candidatePath);
         });
         if (!included) return candidate;
     }
     return including.empty() ? uri : including.front();
 }
 
-void Server::refresh(const std::string& changed, std::vector<std::string>& out) {
-    const SourceOverlay texts = openTexts();
-    auto reanalyse = [&](const std::string& uri, const std::string& root) {
-        Analysis& a = documents_[uri];
-        a = analyze(uri, TextDocument(a.document.text(), a.document.version()), texts,
-                    root == uri ? std::string() : pathFromUri(root));
-        for (const auto& [other, unused] : documents_) a.openUris[pathFromUri(other)] = other;
-        roots_[uri] = root;
-    };
-    std::set<std::string> done;
-    // The changed document first, in its old scene: its includes may have changed.
-    for (const auto& [uri, a] : documents_) {
-        if (changed.empty() || pathFromUri(uri) != changed) continue;
-        const auto old = roots_.find(uri);
-        reanalyse(uri, old != roots_.end() && documents_.contains(old->second) ? old->second : uri);
-        done.insert(uri);
+void Server::refresh(const std::string& changed, const std::set<std::string>& alsoMoved,
+                     std::vector<std::string>& out) {
+    std::vector<std::string> first;  // the changed documents: published first
+    std::set<std::string> done, check;
+    // The documents whose scene read the changed file are read again.
+    std::set<std::string> reading;
+    if (changed.empty()) {
+        for (const auto& [uri, a] : documents_) reading.insert(uri);
+    } else if (const auto it = readBy_.find(changed); it != readBy_.end()) {
+        reading = it->second;
     }
-    // What each open document includes, followed through files on disk too.
-    std::map<std::string, std::set<std::string>> closures;
-    for (const auto& [uri, a] : documents_) {
-        auto& files = closures[uri];
-        for (std::size_t i = 0; i < a.sources.files.size(); ++i) {
-            if (static_cast<int>(i) != a.self && a.sources.reaches(a.self, static_cast<int>(i)))
-                files.insert(a.sources.files[i].path);
+    check = reading;
+    addDocumentsOf(alsoMoved, check);
+    // The changed document first, in its old scene: its includes may have changed.
+    if (const auto it = urisByPath_.find(changed); !changed.empty() && it != urisByPath_.end()) {
+        for (const std::string& uri : it->second) {
+            const auto old = roots_.find(uri);
+            reanalyse(uri, old != roots_.end() && documents_.contains(old->second) ? old->second : uri);
+            const std::set<std::string> before = index(uri);
+            // The documents its includes reach, before and after, may move to or from its scene.
+            addDocumentsOf(before, check);
+            addDocumentsOf(links_.at(uri).includes, check);
+            check.insert(uri);
+            done.insert(uri);
+            first.push_back(uri);
         }
     }
-    std::vector<std::string> toPublish(done.begin(), done.end());
-    for (const auto& [uri, a] : documents_) {
-        const std::string root = rootOf(uri, closures);
-        const auto old = roots_.find(uri);
-        const bool moved = old == roots_.end() || old->second != root;
-        const bool reads =
-            changed.empty() || a.sources.find(changed) >= 0 ||
-            std::find(a.result.files.begin(), a.result.files.end(), changed) != a.result.files.end();
-        if (!moved && (!reads || done.contains(uri))) continue;
-        reanalyse(uri, root);
-        if (!done.contains(uri)) toPublish.push_back(uri);
+    // Then the scenes of the documents looked at, from the index as it is; a
+    // document whose includes change on the way (a file it reaches changed)
+    // is looked at again with those it reaches, for a few rounds at most.
+    constexpr int kMaxRounds = 4;
+    std::set<std::string> toPublish;
+    for (int round = 0; round < kMaxRounds && !check.empty(); ++round) {
+        std::vector<std::pair<std::string, std::string>> work;  // URI, its scene
+        for (const std::string& uri : check) {
+            if (!documents_.contains(uri)) continue;
+            std::string root = rootOf(uri);
+            const auto old = roots_.find(uri);
+            const bool moved = old == roots_.end() || old->second != root;
+            if (!moved && (!reading.contains(uri) || done.contains(uri))) continue;
+            work.emplace_back(uri, std::move(root));
+        }
+        check.clear();
+        for (const auto& [uri, root] : work) {
+            reanalyse(uri, root);
+            const std::set<std::string> before = index(uri);
+            if (before != links_.at(uri).includes) {
+                // Its own scene too: a cycle through it may be gone.
+                check.insert(uri);
+                addDocumentsOf(before, check);
+                addDocumentsOf(links_.at(uri).includes, check);
+            }
+            done.insert(uri);
+            toPublish.insert(uri);
+        }
     }
-    for (const std::string& uri : toPublish) publish(documents_[uri], out);
+    for (const std::string& uri : first) {
+        toPublish.erase(uri);
+        publish(documents_.at(uri), out);
+    }
+    for (const std::string& uri : toPublish) publish(documents_.at(uri), out);
 }
 
 void Server::publish(const Analysis& a, std::vector<std::string>& out) {

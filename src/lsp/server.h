@@ -4,6 +4,7 @@
 /// and the fuzzer drive it directly.
 #include <functional>
 #include <map>
+#include <memory>
 #include <set>
 #include <string>
 #include <string_view>
@@ -49,19 +50,46 @@ class Server {
     void unpublishOthers(const std::string& uri, const std::set<std::string>& keep,
                          std::vector<std::string>& out);
     void open(std::string uri, std::string text, int version, std::vector<std::string>& out);
+    void close(const std::string& uri, std::vector<std::string>& out);
     /// Analyses again the open documents whose scene reads the file `changed`
     /// (all of them when it is empty), each as part of the topmost open
-    /// document that includes it, and publishes their diagnostics.
-    void refresh(const std::string& changed, std::vector<std::string>& out);
+    /// document that includes it, and publishes their diagnostics. The scene
+    /// of a document can move only when the includes of the changed document
+    /// reach it (before or after the change, `alsoMoved`): only those are
+    /// looked at, so a change costs what it touches, not the open documents.
+    void refresh(const std::string& changed, const std::set<std::string>& alsoMoved,
+                 std::vector<std::string>& out);
+    /// Analyses a document again as part of the scene `root` and indexes it.
+    void reanalyse(const std::string& uri, const std::string& root);
     /// The open document whose scene a document belongs to: the topmost open
     /// document that includes it, or itself.
-    std::string rootOf(const std::string& uri,
-                       const std::map<std::string, std::set<std::string>>& closures) const;
-    SourceOverlay openTexts() const;
+    std::string rootOf(const std::string& uri) const;
+    /// Records in the reverse indexes what a document includes and reads
+    /// (`unindex`: forgets it), returning the files its includes reached before.
+    std::set<std::string> index(const std::string& uri);
+    std::set<std::string> unindex(const std::string& uri);
+    /// The text and URI the scenes read for a path: the last open document
+    /// with that path (in URI order), or none.
+    void syncPath(const std::string& path);
+    /// Adds the open documents of the files `paths` to `to`.
+    void addDocumentsOf(const std::set<std::string>& paths, std::set<std::string>& to) const;
+
+    /// What an open document's analysis links it to, by path.
+    struct Links {
+        std::set<std::string> includes;  ///< files its own includes reach, itself excluded
+        std::set<std::string> reads;     ///< every file its scene read, itself excluded
+    };
 
     std::function<void(std::string_view)> log_;
     std::map<std::string, Analysis> documents_;  ///< open documents by URI
     std::map<std::string, std::string> roots_;   ///< URI -> the URI of the document parsed as its scene
+    SourceOverlay texts_;                        ///< open documents' texts by path: what scenes read
+    /// The URI of each open document's path, shared with their analyses.
+    std::shared_ptr<std::map<std::string, std::string, std::less<>>> openUris_;
+    std::map<std::string, std::set<std::string>> urisByPath_;  ///< path -> open documents with it
+    std::map<std::string, Links> links_;                       ///< URI -> its links
+    std::map<std::string, std::set<std::string>> includedBy_;  ///< path -> documents whose includes reach it
+    std::map<std::string, std::set<std::string>> readBy_;      ///< path -> documents whose scene read it
     /// Other files (includes) each open document has published diagnostics on.
     std::map<std::string, std::set<std::string>> publishedOthers_;
     bool initialized_ = false;
