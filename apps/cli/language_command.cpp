@@ -50,7 +50,8 @@ Command addLanguageCommand(CLI::App& app) {
     auto fill = std::make_shared<std::string>();
     auto lists = std::make_shared<bool>(false);
     CLI::App* sub = app.add_subcommand(
-        "language", "Print the scene language's commands with their syntax (or, for tool makers, its word lists)");
+        "language",
+        "Print the scene language's commands with their syntax (or, for tool makers, its word lists)");
     sub->add_option("--fill", *fill,
                     "Print TEMPLATE with each @f2:LIST@ replaced by that word list as a regular expression "
                     "alternation, and each line @f2:LIST:dict@ by one \"word\" line per word (how the "

@@ -35,7 +35,8 @@ const std::array<NamedList, 13> kLists = {{
          for (const CommandSpec& c : commands()) words.emplace_back(c.name);
          return words;
      }},
-    {"creating", [] { return commandWords([](const CommandSpec& c) { return c.group == CommandGroup::Creating; }); }},
+    {"creating",
+     [] { return commandWords([](const CommandSpec& c) { return c.group == CommandGroup::Creating; }); }},
     // The commands the parser runs that create nothing: settings, looks, motion.
     {"scene-commands",
      [] {
@@ -44,12 +45,15 @@ const std::array<NamedList, 13> kLists = {{
          });
      }},
     {"variable-commands",
-     [] { return commandWords([](const CommandSpec& c) { return c.argumentKind(0) == ArgKind::Variable; }); }},
+     [] {
+         return commandWords([](const CommandSpec& c) { return c.argumentKind(0) == ArgKind::Variable; });
+     }},
     {"path-commands",
      [] { return commandWords([](const CommandSpec& c) { return c.argumentKind(0) == ArgKind::Path; }); }},
     {"block-end-commands",
      [] {
-         return commandWords([](const CommandSpec& c) { return c.group == CommandGroup::Source && c.args.empty(); });
+         return commandWords(
+             [](const CommandSpec& c) { return c.group == CommandGroup::Source && c.args.empty(); });
      }},
     {"light-options",
      [] {
@@ -135,8 +139,10 @@ std::string fillLanguageTemplate(std::string_view text, std::string& problem) {
         out.append(text.substr(at, open - at));
         const std::size_t close = text.find('@', open + kOpen.size());
         const std::size_t newline = text.find('\n', open);
-        const std::size_t lineStart = text.rfind('\n', open) == std::string_view::npos ? 0 : text.rfind('\n', open) + 1;
-        const std::string place = std::to_string(line) + ":" + std::to_string(open - lineStart + 1) + ": error: ";
+        const std::size_t lineStart =
+            text.rfind('\n', open) == std::string_view::npos ? 0 : text.rfind('\n', open) + 1;
+        const std::string place =
+            std::to_string(line) + ":" + std::to_string(open - lineStart + 1) + ": error: ";
         if (close == std::string_view::npos || (newline != std::string_view::npos && close > newline)) {
             problem = place + "'@f2:' without its closing '@'";
             return {};

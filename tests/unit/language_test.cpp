@@ -1,21 +1,21 @@
 // The language table (core/parse/language.h) is the one list of commands,
 // options and modes: the parser and the expander run exactly its commands,
 // and the generated files are filled from it (lsp/language_files.h).
+#include "core/parse/language.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <string>
 
-#include "core/parse/language.h"
 #include "core/parse/parser.h"
 
 namespace f2 {
 namespace {
 
 bool saysUnknownCommand(const ParseResult& r) {
-    return std::any_of(r.diagnostics.begin(), r.diagnostics.end(), [](const Diagnostic& d) {
-        return d.message.starts_with("unknown command");
-    });
+    return std::any_of(r.diagnostics.begin(), r.diagnostics.end(),
+                       [](const Diagnostic& d) { return d.message.starts_with("unknown command"); });
 }
 
 TEST(LanguageTable, TheParserRunsEveryCommandOfTheTableAndNoOther) {
