@@ -7,6 +7,7 @@
 
 #include "core/anim/light_frame.h"
 #include "core/render/reflection.h"
+#include "io/comment_text.h"
 #include "io/frame_primitives.h"
 
 namespace f2 {
@@ -97,7 +98,7 @@ std::string povScene(const SceneDesc& scene, double t, const Camera& camera, con
     std::vector<PlacedPrimitive> prims = framePrimitives(scene, t);
     std::ostringstream out;
     out.imbue(std::locale::classic());
-    out << "// " << source << " at frame " << t << ", exported by f2 (F2 Stage).\n"
+    out << "// " << commentText(source) << " at frame " << t << ", exported by f2 (F2 Stage).\n"
         << "// Render: povray +I<this file> +O<image>.png +W" << camera.width << " +H" << camera.height
         << " -A +FN -D\n"
         << "// (+A0.1 for anti-aliasing). Coordinates are f2's: left-handed, y up, like POV-Ray's.\n"
@@ -164,7 +165,7 @@ std::string povScene(const SceneDesc& scene, double t, const Camera& camera, con
 
     for (const PlacedPrimitive& p : prims) {
         const Material& m = p.material;
-        out << "// " << p.label << "\n"
+        out << "// " << commentText(p.label) << "\n"
             << shape(p) << "\n  " << pigment(p) << "\n  " << matrix(p.worldFromLocal) << "\n"
             << "  finish { ambient " << formatNumber(m.ka * scene.ambient) << " diffuse "
             << formatNumber(m.kd) << " phong " << formatNumber(m.ks) << " phong_size " << formatNumber(m.n);

@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "io/comment_text.h"
 #include "io/frame_primitives.h"
 
 namespace f2 {
@@ -22,7 +23,7 @@ std::string matrix3x4(const Mat3& a, Vec3 t) {
 std::string primsScene(const SceneDesc& scene, double t, const Camera& camera, const std::string& source) {
     std::ostringstream out;
     out.imbue(std::locale::classic());
-    out << "# " << source << " at frame " << t << ", exported by f2 (F2 Stage)\n"
+    out << "# " << commentText(source) << " at frame " << t << ", exported by f2 (F2 Stage)\n"
         << "camera " << camera.width << " " << camera.height << " " << formatNumber(camera.distance) << " "
         << matrix3x4(camera.worldFromCamera, camera.eye) << "\n"
         << "background " << int(scene.background.r) << " " << int(scene.background.g) << " "

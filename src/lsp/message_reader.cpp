@@ -10,6 +10,8 @@ namespace {
 
 constexpr std::string_view kHeaderEnd = "\r\n\r\n";
 constexpr std::string_view kLengthField = "content-length:";
+/// The header fields the protocol defines; a header block starts with one.
+constexpr std::string_view kFields[] = {kLengthField, "content-type:"};
 
 bool equalsIgnoringCase(std::string_view a, std::string_view b) {
     if (a.size() != b.size()) return false;
@@ -24,6 +26,28 @@ std::string_view trim(std::string_view s) {
     while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
     while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
     return s;
+}
+
+/// Whether `bytes` starts with a header field name the protocol defines
+/// (`complete`), or is a beginning of one that more bytes may complete.
+enum class FieldStart { No, Partial, Complete };
+FieldStart fieldStart(std::string_view bytes) {
+    for (const std::string_view field : kFields) {
+        if (bytes.size() >= field.size()) {
+            if (equalsIgnoringCase(bytes.substr(0, field.size()), field)) return FieldStart::Complete;
+        } else if (equalsIgnoringCase(bytes, field.substr(0, bytes.size()))) {
+            return FieldStart::Partial;
+        }
+    }
+    return FieldStart::No;
+}
+
+/// Bytes before the first place where a header can start (every byte when there is none).
+std::size_t bytesBeforeHeader(std::string_view bytes) {
+    for (std::size_t i = 0; i < bytes.size(); ++i) {
+        if ((bytes[i] == 'c' || bytes[i] == 'C') && fieldStart(bytes.substr(i)) != FieldStart::No) return i;
+    }
+    return bytes.size();
 }
 
 }  // namespace
@@ -62,22 +86,35 @@ bool MessageReader::next(Item& item) {
 /// Reads one header block. Returns true with a problem in `item`, or false
 /// with inBody_ set (a body follows) or clear (more bytes are needed).
 bool MessageReader::readHeader(Item& item) {
-    const std::string_view pending = std::string_view(buffer_).substr(start_);
-    const std::size_t end = pending.find(kHeaderEnd);
-    if (end == std::string_view::npos) {
-        if (pending.size() <= kMaxHeaderBytes) return false;
-        // Keep the last bytes: they may be the start of a header end.
-        const std::size_t dropped = pending.size() - (kHeaderEnd.size() - 1);
-        start_ += dropped;
-        item = {Item::Kind::Problem,
-                "dropped " + std::to_string(dropped) + " bytes that are not a message header"};
-        return true;
-    }
-    const std::string_view header = pending.substr(0, end);
-    start_ += end + kHeaderEnd.size();
-    if (end > kMaxHeaderBytes) {
-        item = {Item::Kind::Problem, "dropped a message header of " + std::to_string(end) + " bytes"};
-        return true;
+    std::string_view header;
+    for (;;) {
+        std::string_view pending = std::string_view(buffer_).substr(start_);
+        // Resynchronise: bytes before a header field (a stray byte or line
+        // after the last body) are garbage. They are counted, and reported once
+        // the next header starts or when they reach kMaxHeaderBytes.
+        const std::size_t garbage = bytesBeforeHeader(pending);
+        start_ += garbage;
+        garbageBytes_ += garbage;
+        pending.remove_prefix(garbage);
+        const bool complete = fieldStart(pending) == FieldStart::Complete;
+        if (garbageBytes_ > 0 && (complete || garbageBytes_ >= kMaxHeaderBytes)) {
+            item = {Item::Kind::Problem, "dropped " + std::to_string(garbageBytes_) +
+                                             (garbageBytes_ == 1 ? " stray byte" : " stray bytes") +
+                                             " (not a message header)"};
+            garbageBytes_ = 0;
+            return true;
+        }
+        if (!complete) return false;  // more bytes are needed
+        const std::size_t end = pending.substr(0, kMaxHeaderBytes + kHeaderEnd.size()).find(kHeaderEnd);
+        if (end != std::string_view::npos) {
+            header = pending.substr(0, end);
+            start_ += end + kHeaderEnd.size();
+            break;
+        }
+        if (pending.size() < kMaxHeaderBytes + kHeaderEnd.size()) return false;  // it may still end
+        // No end within the limit: not a header. Look for one after its first byte.
+        ++start_;
+        ++garbageBytes_;
     }
     std::optional<std::size_t> length;
     std::size_t lineStart = 0;

@@ -8,9 +8,11 @@
 
 namespace f2::lsp {
 
-/// Splits a byte stream into message bodies. Bytes that do not form a valid
-/// header are dropped with a problem reported; the reader then resynchronises
-/// on the next header.
+/// Splits a byte stream into message bodies. A header block starts with a
+/// field the protocol defines (`Content-Length:` or `Content-Type:`, in any
+/// case); bytes before one (a stray byte or line between messages) are
+/// dropped with a problem reported, so the reader resynchronises on the next
+/// header. A header block that is invalid is dropped with a problem too.
 class MessageReader {
    public:
     /// A body larger than this is skipped (its bytes are read and dropped).
@@ -35,7 +37,8 @@ class MessageReader {
     std::size_t start_ = 0;      ///< consumed prefix of buffer_
     std::size_t bodyBytes_ = 0;  ///< length of the body being read
     bool inBody_ = false;
-    std::size_t skipBytes_ = 0;  ///< bytes of an oversized body still to drop
+    std::size_t skipBytes_ = 0;     ///< bytes of an oversized body still to drop
+    std::size_t garbageBytes_ = 0;  ///< bytes dropped before a header, not reported yet
 };
 
 /// A body with its header, ready to write.

@@ -21,6 +21,31 @@ std::string errorResponse(const Json& id, int code, std::string_view message) {
     return dumpJson({{"jsonrpc", "2.0"}, {"id", id}, {"error", {{"code", code}, {"message", message}}}});
 }
 
+/// True when arrays and objects in `json` nest deeper than `limit` (brackets
+/// inside strings do not count). Linear and allocation-free, so it can run
+/// before the parser on any body a client sends.
+bool nestsDeeperThan(std::string_view json, int limit) {
+    int depth = 0;
+    bool inString = false;
+    for (std::size_t i = 0; i < json.size(); ++i) {
+        const char c = json[i];
+        if (inString) {
+            if (c == '\\') {
+                ++i;  // the escaped character, a quote included
+            } else if (c == '"') {
+                inString = false;
+            }
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > limit) return true;
+        } else if ((c == ']' || c == '}') && depth > 0) {
+            --depth;
+        }
+    }
+    return false;
+}
+
 /// A member that must be an integer in the range of int (a float or a huge
 /// number from a client is an invalid parameter, not undefined behaviour).
 int intMember(const Json& object, std::string_view key) {
@@ -94,6 +119,12 @@ void Server::logProblem(std::string_view problem) const {
 
 std::vector<std::string> Server::handle(std::string_view body) {
     std::vector<std::string> out;
+    if (nestsDeeperThan(body, kMaxJsonDepth)) {
+        out.push_back(errorResponse(
+            nullptr, kParseError,
+            "the message nests arrays and objects deeper than " + std::to_string(kMaxJsonDepth) + " levels"));
+        return out;
+    }
     const Json message = Json::parse(body, nullptr, /*allow_exceptions=*/false);
     if (message.is_discarded()) {
         out.push_back(errorResponse(nullptr, kParseError, "the message is not valid JSON"));

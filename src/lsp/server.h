@@ -16,6 +16,13 @@ namespace f2::lsp {
 
 class Server {
    public:
+    /// Arrays and objects nested deeper than this make a message a parse
+    /// error (-32700) before it is parsed: JSON values are copied, dumped and
+    /// destroyed recursively, so a client's 1,000,000 `[` would overflow the
+    /// stack. LSP messages nest about 10 deep; 256 leaves room for any
+    /// client's settings and costs a few kilobytes of stack at most.
+    static constexpr int kMaxJsonDepth = 256;
+
     /// `log` receives one line per problem that has no reply (a malformed
     /// notification, a framing error); default: none.
     explicit Server(std::function<void(std::string_view)> log = {});

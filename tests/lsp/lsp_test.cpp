@@ -18,6 +18,7 @@
 #include "lsp/scene_sources.h"
 #include "lsp/server.h"
 #include "lsp/source_scan.h"
+#include "lsp/stdio_transport.h"
 
 namespace f2::lsp {
 namespace {
@@ -100,6 +101,40 @@ TEST(MessageReader, DropsEndlessGarbage) {
     const auto after = readAll(reader);
     ASSERT_FALSE(after.empty());
     EXPECT_EQ(after.back().text, "1");
+}
+
+TEST(MessageReader, DropsStrayBytesBeforeAHeaderFedByteByByte) {
+    // A stray byte glued to the next header, blank lines, a junk line, and a
+    // junk word that begins like a field name ("Cont", "content-lengthy").
+    const std::string stream = frameMessage("1") + "x" + frameMessage("2") + "\n\r\n" + frameMessage("3") +
+                               "junk: line\r\n\r\nCont" + frameMessage("4") + "content-lengthy" +
+                               "CONTENT-LENGTH: 1\r\n\r\n5";
+    for (const std::size_t chunk : {std::size_t{1}, std::size_t{3}, stream.size()}) {
+        MessageReader reader;
+        std::vector<std::string> bodies, problems;
+        for (std::size_t i = 0; i < stream.size(); i += chunk) {
+            reader.feed(std::string_view(stream).substr(i, chunk));
+            for (const auto& item : readAll(reader))
+                (item.kind == MessageReader::Item::Kind::Body ? bodies : problems).push_back(item.text);
+        }
+        EXPECT_EQ(bodies, (std::vector<std::string>{"1", "2", "3", "4", "5"})) << "chunk " << chunk;
+        EXPECT_EQ(problems, (std::vector<std::string>{"dropped 1 stray byte (not a message header)",
+                                                      "dropped 3 stray bytes (not a message header)",
+                                                      "dropped 18 stray bytes (not a message header)",
+                                                      "dropped 15 stray bytes (not a message header)"}))
+            << "chunk " << chunk;
+    }
+}
+
+TEST(MessageReader, AHeaderThatDoesNotEndIsGarbage) {
+    MessageReader reader;
+    reader.feed("Content-Length: 5" + std::string(2 * MessageReader::kMaxHeaderBytes, 'g') +
+                frameMessage("ok"));
+    const auto items = readAll(reader);
+    ASSERT_FALSE(items.empty());
+    EXPECT_EQ(items.front().kind, MessageReader::Item::Kind::Problem);
+    EXPECT_EQ(items.back().kind, MessageReader::Item::Kind::Body);
+    EXPECT_EQ(items.back().text, "ok");
 }
 
 TEST(Positions, CountUtf16Units) {
@@ -641,6 +676,121 @@ TEST(Server, ExitCodeFollowsShutdown) {
               kInvalidRequest);
     b.handle(body({{"method", "exit"}}));
     EXPECT_EQ(b.exitCode(), 0);
+}
+
+/// What `f2 lsp` does with a whole input stream: runServer reads it from a
+/// file as its standard input and writes to another as its standard output.
+struct Transcript {
+    int exitCode = -1;
+    std::vector<Json> replies;
+    std::string log;
+};
+
+std::string readWhole(std::FILE* f) {
+    std::rewind(f);
+    std::string text;
+    char buffer[65536];
+    for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, f)) > 0;) text.append(buffer, n);
+    return text;
+}
+
+Transcript runStream(const std::string& input) {
+    std::FILE* in = std::tmpfile();
+    std::FILE* out = std::tmpfile();
+    std::FILE* log = std::tmpfile();
+    std::fwrite(input.data(), 1, input.size(), in);
+    std::fflush(in);
+    std::rewind(in);
+    Transcript t;
+    t.exitCode = runServer(fileno(in), fileno(out), log);
+    MessageReader reader;
+    reader.feed(readWhole(out));
+    for (const auto& item : readAll(reader)) t.replies.push_back(Json::parse(item.text));
+    t.log = readWhole(log);
+    for (std::FILE* f : {in, out, log}) std::fclose(f);
+    return t;
+}
+
+/// initialize (id 1), a hover on an open document (id 2), shutdown (id 3) and
+/// exit, with `between` before each message after the first.
+std::string session(const std::string& between) {
+    const std::string uri = "file:///t/stream.f2";
+    return frameMessage(body({{"jsonrpc", "2.0"}, {"id", 1}, {"method", "initialize"}})) + between +
+           frameMessage(body(
+               {{"jsonrpc", "2.0"},
+                {"method", "textDocument/didOpen"},
+                {"params",
+                 {{"textDocument", {{"uri", uri}, {"version", 1}, {"text", "/sphere s 1 0 0 0\n"}}}}}})) +
+           between +
+           frameMessage(
+               body({{"jsonrpc", "2.0"},
+                     {"id", 2},
+                     {"method", "textDocument/hover"},
+                     {"params",
+                      {{"textDocument", {{"uri", uri}}}, {"position", {{"line", 0}, {"character", 9}}}}}})) +
+           between + frameMessage(body({{"jsonrpc", "2.0"}, {"id", 3}, {"method", "shutdown"}})) + between +
+           frameMessage(body({{"jsonrpc", "2.0"}, {"method", "exit"}}));
+}
+
+/// The ids of the responses, in order (null for an error without an id).
+std::vector<Json> responseIds(const Transcript& t) {
+    std::vector<Json> ids;
+    for (const Json& r : t.replies) {
+        if (!r.contains("method")) ids.push_back(r["id"]);
+    }
+    return ids;
+}
+
+TEST(Transport, StrayBytesBetweenMessagesLoseNothing) {
+    std::mt19937 rng(11);
+    std::vector<std::string> junk = {"x", "\n", "\r\n", "\r\n\r\n", "junk\r\nmore junk: 1\n\n"};
+    for (int n = 0; n < 5; ++n) {
+        std::string lines;
+        for (int k = 0; k < 1 + n; ++k) {
+            std::string line(1 + rng() % 40, ' ');
+            for (char& c : line) c = " abxyz:{}[]\t0123456789\"-"[rng() % 24];
+            lines += line + (k % 2 ? "\n" : "\r\n");
+        }
+        junk.push_back(lines);
+    }
+    for (const std::string& between : junk) {
+        const Transcript t = runStream(session(between));
+        EXPECT_EQ(t.exitCode, 0) << Json(between) << "\n" << t.log;
+        EXPECT_EQ(responseIds(t), (std::vector<Json>{1, 2, 3})) << Json(between) << "\n" << t.log;
+        for (const Json& r : t.replies) EXPECT_FALSE(r.contains("error")) << r;
+        const bool hovered = std::any_of(t.replies.begin(), t.replies.end(), [](const Json& r) {
+            return r.value("id", 0) == 2 && r["result"].contains("contents");
+        });
+        EXPECT_TRUE(hovered) << Json(between);
+        EXPECT_NE(t.log.find("f2 lsp: dropped "), std::string::npos) << t.log;
+    }
+}
+
+TEST(Transport, DeeplyNestedJsonIsAParseErrorAndTheSessionGoesOn) {
+    constexpr int kDeep = 1'000'000;
+    const std::string deepArray = std::string(kDeep, '[') + std::string(kDeep, ']');
+    // As parameters of a request: copying them overflowed the stack (SIGSEGV).
+    const std::string deepParams =
+        R"({"jsonrpc":"2.0","id":9,"method":"initialize","params":)" + deepArray + "}";
+    const std::string unclosed = std::string(kDeep, '{');
+    // At the limit: accepted (brackets in strings do not count).
+    const int limit = Server::kMaxJsonDepth;
+    const std::string atLimit = R"({"jsonrpc":"2.0","id":8,"method":"initialize","params":{"x":")" +
+                                std::string(1000, '[') + R"(\"[","y":)" + std::string(limit - 2, '[') +
+                                std::string(limit - 2, ']') + "}}";
+    const std::string overLimit = R"({"jsonrpc":"2.0","id":7,"method":"initialize","params":)" +
+                                  std::string(limit, '[') + std::string(limit, ']') + "}";
+    const Transcript t =
+        runStream(frameMessage(deepArray) + frameMessage(deepParams) + frameMessage(unclosed) +
+                  frameMessage(overLimit) + frameMessage(atLimit) + session(""));
+    EXPECT_EQ(t.exitCode, 0) << t.log;
+    ASSERT_EQ(responseIds(t), (std::vector<Json>{nullptr, nullptr, nullptr, nullptr, 8, 1, 2, 3}));
+    for (int i = 0; i < 4; ++i) {
+        EXPECT_EQ(t.replies[static_cast<std::size_t>(i)]["error"]["code"], kParseError);
+        EXPECT_EQ(t.replies[static_cast<std::size_t>(i)]["error"]["message"],
+                  "the message nests arrays and objects deeper than 256 levels");
+    }
+    EXPECT_TRUE(t.replies[4]["result"].contains("capabilities")) << t.replies[4];
 }
 
 TEST(Uris, DecodeAndEncodePaths) {

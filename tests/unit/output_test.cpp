@@ -7,6 +7,7 @@
 
 #include "core/anim/frame_builder.h"
 #include "core/render/camera.h"
+#include "io/comment_text.h"
 #include "io/frame_pattern.h"
 #include "io/frame_primitives.h"
 #include "io/pov_export.h"
@@ -200,6 +201,46 @@ TEST(PovExport, EveryPrimitiveOnceWithItsShape) {
     EXPECT_EQ(count(pov, "\nsphere {"), 3);    // two eyes, human head
     EXPECT_EQ(count(pov, "\ncylinder {"), 6);  // bodies and arms
     EXPECT_EQ(count(pov, " open"), 0);         // SPEC 4: closed cylinders
+}
+
+TEST(CommentText, EscapesEveryControlByteAndKeepsTheRest) {
+    EXPECT_EQ(commentText("scenes/demo.f2"), "scenes/demo.f2");
+    EXPECT_EQ(commentText("a\nb\rc\td"), "a\\nb\\rc\\td");
+    EXPECT_EQ(commentText(std::string("x\0y\x1b\x7f", 5)), "x\\x00y\\x1b\\x7f");
+    EXPECT_EQ(commentText("back\\slash"), "back\\\\slash");
+    EXPECT_EQ(commentText("caf\xc3\xa9 \"#*/"), "caf\xc3\xa9 \"#*/");  // printable and UTF-8 pass
+}
+
+/// Lines of `text` that are not empty and not a `//` comment.
+std::vector<std::string> liveLines(const std::string& text) {
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);)
+        if (!line.empty() && line.rfind("//", 0) != 0) lines.push_back(line);
+    return lines;
+}
+
+TEST(PovExport, NothingFromOutsideTheNumbersReachesLiveCode) {
+    // Issue 29: a newline in the scene's path ended the header comment and the
+    // rest ran in povray. Names cannot hold one today, but the label is escaped
+    // as well, so a future name rule cannot reopen the hole.
+    SceneDesc scene = test::sceneFromText("/camera 80 60 0.8\n/sphere s 10 0 0 100\n");
+    const std::string clean = povScene(scene, 0, Camera::fromDesc(scene.camera), "t.f2");
+    const std::string hostile = "dir\n#fopen F \"x\" write\r#write (F, 1) */ \"q\"\n/* #";
+    scene.objects.front().name = "s\n#declare X = 1;";
+    const std::string pov = povScene(scene, 0, Camera::fromDesc(scene.camera), hostile);
+    EXPECT_EQ(liveLines(pov), liveLines(clean));
+    EXPECT_NE(pov.find("// dir\\n#fopen F \"x\" write\\r#write (F, 1) */ \"q\"\\n/* # at frame 0"),
+              std::string::npos);
+    EXPECT_NE(pov.find("// s\\n#declare X = 1;"), std::string::npos);
+    EXPECT_EQ(pov.find('\r'), std::string::npos);
+}
+
+TEST(PrimsExport, TheHeaderCommentStaysOneLine) {
+    SceneDesc scene = test::sceneFromText("/camera 80 60 0.8\n/sphere s 10 0 0 100\n");
+    const std::string prims = primsScene(scene, 0, Camera::fromDesc(scene.camera), "a\ncamera 1 2 3\n#");
+    EXPECT_EQ(prims.rfind("# a\\ncamera 1 2 3\\n# at frame 0", 0), 0u);
+    EXPECT_EQ(count(prims, "\ncamera "), 1);
 }
 
 TEST(PrimsExport, FollowsThePeerFormat) {

@@ -144,6 +144,7 @@ class ExpressionParser {
         r.value = failed_ ? 0 : (v == 0 ? 0.0 : v);  // -0 becomes 0, as for numbers
         r.errorOffset = errorOffset_;
         r.message = message_;
+        r.followOn = followOn_;
         return r;
     }
 
@@ -329,6 +330,11 @@ class ExpressionParser {
             return call(*function, start);
         }
         if (const std::optional<double> v = variables_.find(word)) return *v;
+        if (variables_.isBroken(word)) {
+            if (!failed_) followOn_ = true;
+            fail(start, "variable " + quoteToken(word) + " has no value: its '/let' failed");
+            return 0;
+        }
         if (function) {
             fail(start, quoteToken(word) + " is a function: write " + std::string(word) + "(...)");
         } else {
@@ -425,6 +431,7 @@ class ExpressionParser {
     std::size_t pos_ = 0;
     int depth_ = 0;
     bool failed_ = false;
+    bool followOn_ = false;
     std::size_t errorOffset_ = 0;
     std::string message_;
 };
@@ -439,12 +446,20 @@ std::optional<double> Variables::find(std::string_view name) const {
 }
 
 void Variables::set(std::string_view name, double value) {
+    if (auto it = broken_.find(name); it != broken_.end()) broken_.erase(it);
     if (auto it = values_.find(name); it != values_.end()) {
         it->second = value;
     } else {
         values_.emplace(std::string(name), value);
     }
 }
+
+void Variables::markBroken(std::string_view name) {
+    erase(name);
+    broken_.emplace(name);
+}
+
+bool Variables::isBroken(std::string_view name) const { return broken_.find(name) != broken_.end(); }
 
 void Variables::erase(std::string_view name) {
     if (auto it = values_.find(name); it != values_.end()) values_.erase(it);

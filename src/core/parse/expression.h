@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <unordered_set>
 
 namespace f2 {
 
@@ -24,6 +25,11 @@ class Variables {
     /// Defines or redefines `name` (the caller checks isPredefined first).
     void set(std::string_view name, double value);
     void erase(std::string_view name);
+    /// The `/let` that would have defined `name` failed (its error is
+    /// reported): until it is set, a use of it fails as a follow-on, which is
+    /// not reported a second time.
+    void markBroken(std::string_view name);
+    bool isBroken(std::string_view name) const;
     /// `pi` cannot be redefined, by `/let` or as a loop variable.
     static bool isPredefined(std::string_view name);
 
@@ -33,6 +39,7 @@ class Variables {
         std::size_t operator()(std::string_view s) const noexcept { return std::hash<std::string_view>{}(s); }
     };
     std::unordered_map<std::string, double, Hash, std::equal_to<>> values_;
+    std::unordered_set<std::string, Hash, std::equal_to<>> broken_;
 };
 
 /// The value of an expression, or the first problem in it and where it is.
@@ -41,6 +48,8 @@ struct ExpressionResult {
     double value = 0;
     std::size_t errorOffset = 0;  ///< byte offset of the problem inside the text
     std::string message;
+    /// The problem is a variable whose `/let` failed: already reported there.
+    bool followOn = false;
 };
 
 /// Evaluates a whole expression (`i + 1`, the inside of `{ … }`). Every

@@ -167,6 +167,7 @@ struct ObjectBook {
     /// Where the target of each /interp of the object (0) and each part (1 + PartId) was given.
     std::array<std::optional<Pos>, kPartCount + 1> interps{};
     std::optional<Pos> attached;  ///< where its `/attach` is
+    std::uint32_t loopNote = 0;  ///< the loop pass it was defined in: Parser::loopNotes_ index + 1, 0 if none
 };
 
 /// A `/key` of the camera, kept until the end of the file: a key without
@@ -220,7 +221,7 @@ class Parser : private ExpansionSink {
 
    private:
     void expansionError(Pos pos, std::string message) override {
-        report(Severity::Error, pos, message + expander_.loopNote(), false);
+        report(Severity::Error, pos, std::move(message), LoopNote::Always);
     }
     bool knowsCommand(std::string_view command) const override {
         return std::any_of(kCommands.begin(), kCommands.end(),
@@ -234,10 +235,14 @@ class Parser : private ExpansionSink {
     }
 
     // Diagnostics
-    /// `noted`: add the loop values when `pos` is on the line being read.
-    void report(Severity severity, Pos pos, std::string message, bool noted = true) {
+    /// Whether a message gets the loop values: the expander's always (it reports
+    /// on the line it reads), the parser's when `pos` is on the line being read.
+    enum class LoopNote { OnThisLine, Always };
+    /// The
+    /// same message at the same place again (a later loop pass, a file
+    /// included twice) is counted on the first one, not printed again.
+    void report(Severity severity, Pos pos, std::string message, LoopNote noted = LoopNote::OnThisLine) {
         if (stopped_) return;
-        if (noted && pos.seq != 0 && pos.seq == tokens_.pos.seq) message += expander_.loopNote();
         if (severity == Severity::Warning) {
             // Warnings do not stop parsing, so a hostile file could make millions.
             if (warnings_ >= limits_.maxWarnings) {
@@ -248,28 +253,51 @@ class Parser : private ExpansionSink {
         } else {
             ++errors_;
         }
-        const SourceLoc loc{expander_.fileName(pos.file), pos.line, pos.column};
-        diagnostics_.push_back({loc, severity, std::move(message)});
-        order_.push_back(pos);
+        std::string place = std::to_string(pos.file) + ':' + std::to_string(pos.line) + ':' +
+                            std::to_string(pos.column) + (severity == Severity::Error ? "e" : "w") + message;
+        if (auto it = firstAtPlace_.find(place); it != firstAtPlace_.end()) {
+            ++repeats_[it->second].count;
+        } else {
+            const bool onThisLine = pos.seq != 0 && pos.seq == tokens_.pos.seq;
+            const std::string note =
+                noted == LoopNote::Always || onThisLine ? expander_.loopNote() : std::string();
+            const bool inLoop = !note.empty();
+            message += note;
+            firstAtPlace_.emplace(std::move(place), diagnostics_.size());
+            push({{expander_.fileName(pos.file), pos.line, pos.column}, severity, std::move(message)}, pos,
+                 inLoop);
+        }
         if (severity == Severity::Error && errors_ >= limits_.maxErrors) {
-            diagnostics_.push_back(
-                {loc, Severity::Error,
-                 "too many errors (" + std::to_string(errors_) + "); parsing stopped here"});
-            order_.push_back(pos);
+            push({{expander_.fileName(pos.file), pos.line, pos.column},
+                  Severity::Error,
+                  "too many errors (" + std::to_string(errors_) + "); parsing stopped here"},
+                 pos);
             stopped_ = true;
         }
+    }
+    void push(Diagnostic diagnostic, Pos pos, bool inLoop = false) {
+        diagnostics_.push_back(std::move(diagnostic));
+        order_.push_back(pos);
+        repeats_.push_back({0, inLoop});
     }
     void error(Pos pos, std::string message) { report(Severity::Error, pos, std::move(message)); }
     void warning(Pos pos, std::string message) { report(Severity::Warning, pos, std::move(message)); }
 
     ParseResult finish() {
         if (droppedWarnings_ > 0) {
-            diagnostics_.push_back(
-                {{expander_.fileName(firstDroppedWarning_.file), firstDroppedWarning_.line,
-                  firstDroppedWarning_.column},
-                 Severity::Warning,
-                 std::to_string(droppedWarnings_) + " more warnings from here on are not shown"});
-            order_.push_back(firstDroppedWarning_);
+            push({{expander_.fileName(firstDroppedWarning_.file), firstDroppedWarning_.line,
+                   firstDroppedWarning_.column},
+                  Severity::Warning,
+                  std::to_string(droppedWarnings_) + " more warnings from here on are not shown"},
+                 firstDroppedWarning_);
+        }
+        for (std::size_t i = 0; i < diagnostics_.size(); ++i) {
+            const Repeats& r = repeats_[i];
+            if (r.count == 0) continue;
+            const std::string n = std::to_string(r.count);
+            diagnostics_[i].message +=
+                r.inLoop ? " (and in " + n + (r.count == 1 ? " more pass)" : " more passes)")
+                         : " (and " + n + (r.count == 1 ? " more time)" : " more times)");
         }
         // Duplicate-key warnings of out-of-order tracks are found at the end;
         // reading order, not line numbers, since loops read lines again.
@@ -502,8 +530,10 @@ class Parser : private ExpansionSink {
             return false;
         }
         if (auto it = names_.find(name); it != names_.end()) {
+            const ObjectBook& first = books_[it->second];
             error(argPos(i), "duplicate name " + quoteToken(name) + " (first defined at " +
-                                 posText(books_[it->second].defined) + ")");
+                                 posText(first.defined) +
+                                 (first.loopNote == 0 ? "" : " " + loopNotes_[first.loopNote - 1]) + ")");
             return false;
         }
         return true;
@@ -907,12 +937,22 @@ class Parser : private ExpansionSink {
         if (newName(0)) addObject(std::move(object));
     }
 
+    /// The loop values of the line being read ("in /repeat k = 0") as an index
+    /// into loopNotes_ + 1, shared by the objects of one pass; 0 outside loops.
+    std::uint32_t definitionLoopNote() {
+        std::string note = expander_.loopNote();
+        if (note.empty()) return 0;
+        note = note.substr(2, note.size() - 3);  // " (in … )" -> "in …"
+        if (loopNotes_.empty() || loopNotes_.back() != note) loopNotes_.push_back(std::move(note));
+        return static_cast<std::uint32_t>(loopNotes_.size());
+    }
+
     /// Adds the object named by argument 0, which is valid and new.
     void addObject(SceneObject object) {
         object.name = std::string(arg(0));
         names_.emplace(object.name, scene_.objects.size());
         if (index_) index_->objects.push_back({object, span(argPos(0), arg(0)), sourceLoc(commandPos())});
-        books_.push_back({argPos(0), {-1, -1, -1, -1, -1}, {}, std::nullopt});
+        books_.push_back({argPos(0), {-1, -1, -1, -1, -1}, {}, std::nullopt, definitionLoopNote()});
         scene_.objects.push_back(std::move(object));
     }
 
@@ -986,7 +1026,7 @@ class Parser : private ExpansionSink {
     }
 
     void parseAnim() {
-        if (!expectArgs({1, 2})) return;
+        if (!expectArgs({1, 2}) || failed(0)) return;
         // Only validates: /key needs no /anim (SPEC 6).
         if (argCount() == 1) {
             target(0, CameraTarget::Accepted);
@@ -1140,7 +1180,8 @@ class Parser : private ExpansionSink {
         const std::string_view name = arg(0);
         const bool camera = name == kCameraName;
         std::optional<std::size_t> child;
-        if (!camera) {
+        // A `{ … }` that failed is reported already; the parent is still checked.
+        if (!camera && !failed(0)) {
             if (name.find('.') != std::string_view::npos) {
                 error(argPos(0),
                       "only a whole object or the camera can be attached, got " + quoteToken(name));
@@ -1286,6 +1327,16 @@ class Parser : private ExpansionSink {
     SceneDesc scene_;
     std::vector<Diagnostic> diagnostics_;
     std::vector<Pos> order_;  ///< parallel to diagnostics_: where each was found
+    /// Parallel to diagnostics_: how often it came again at its place, and
+    /// whether its place was a loop pass.
+    struct Repeats {
+        std::uint64_t count = 0;
+        bool inLoop = false;
+    };
+    std::vector<Repeats> repeats_;
+    std::unordered_map<std::string, std::size_t> firstAtPlace_;  ///< place + message -> index
+    /// Loop notes of objects defined in a loop ("in /repeat k = 0"); ObjectBook::loopNote - 1.
+    std::vector<std::string> loopNotes_;
     std::size_t errors_ = 0, warnings_ = 0, droppedWarnings_ = 0;
     Pos firstDroppedWarning_;
     bool stopped_ = false;

@@ -362,7 +362,7 @@ bool SourceExpander::evaluateTokens(LogicalLine& line, int first) {
         if (token.text.starts_with('(')) {
             const ExpressionResult r = evaluateParenthesized(token.text, variables_);
             if (!r.ok) {
-                error(at(token.column + static_cast<int>(r.errorOffset)), r.message);
+                if (!r.followOn) error(at(token.column + static_cast<int>(r.errorOffset)), r.message);
                 token.form = TokenForm::Failed;
                 ok = false;
                 continue;
@@ -393,7 +393,7 @@ bool SourceExpander::evaluateTokens(LogicalLine& line, int first) {
                 }
                 const ExpressionResult r = evaluateExpression(text.substr(k + 1, close - k - 1), variables_);
                 if (!r.ok) {
-                    error(at(braceColumn + 1 + static_cast<int>(r.errorOffset)), r.message);
+                    if (!r.followOn) error(at(braceColumn + 1 + static_cast<int>(r.errorOffset)), r.message);
                     token.form = TokenForm::Failed;
                     break;
                 }
@@ -470,12 +470,22 @@ void SourceExpander::runLet(const LogicalLine& line) {
               withUnusualCharacterNote(
                   "'/let' takes 2 arguments (a variable and a number), got " + std::to_string(line.count - 1),
                   writtenCommand(line), line.tokens[0].column));
+        // Its uses would each add "unknown variable": one mistake, one error.
+        const std::string_view variable = line.count > 1 ? line.tokens[1].text : std::string_view();
+        if (isVariableName(variable) && !Variables::isPredefined(variable) && !variables_.find(variable))
+            variables_.markBroken(variable);
         return;
     }
     const LogicalToken& name = line.tokens[1];
-    bool ok = variableName(name, "redefined");
+    const bool named = variableName(name, "redefined");
+    bool ok = true;
     const std::optional<double> value = numberArgument(line, 2, ok);
-    if (ok && value) variables_.set(name.text, *value);
+    if (!named) return;
+    if (ok && value) {
+        variables_.set(name.text, *value);
+    } else if (!variables_.find(name.text)) {
+        variables_.markBroken(name.text);  // a defined variable keeps its value
+    }
 }
 
 void SourceExpander::skipLoop(const LoopInfo& info) { fileStack_.back().reader = info.afterEnd; }
