@@ -105,8 +105,8 @@ void ProblemsDock::growWindow() {
     } else if (excess < 0 && !window_->isMaximized() && !window_->isFullScreen()) {
         grow = -excess;
         if (const QScreen* screen = window_->screen())
-            grow = std::max(0, std::min(grow, screen->availableGeometry().bottom() -
-                                                  window_->frameGeometry().bottom()));
+            grow = std::max(
+                0, std::min(grow, screen->availableGeometry().bottom() - window_->frameGeometry().bottom()));
         if (grow > 0) window_->resize(window_->width(), window_->height() + grow);
     }
     grownBy_ = heightBefore - windowHeight_ + grow;

@@ -58,8 +58,8 @@ class ProblemsDock : public QDockWidget {
     QMainWindow* window_;
     QListWidget* list_;
     bool openedItself_ = false;
-    bool grown_ = false;     ///< growWindow() ran for this opening
-    int grownBy_ = 0;        ///< pixels the window grew for the dock
+    bool grown_ = false;      ///< growWindow() ran for this opening
+    int grownBy_ = 0;         ///< pixels the window grew for the dock
     int pictureHeight_ = -1;  ///< the central widget's height without the dock
     int windowHeight_ = -1;   ///< the window's height without the dock
 };
