@@ -9,7 +9,6 @@
 #include <QDropEvent>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QFontDatabase>
 #include <QLabel>
 #include <QListWidget>
 #include <QMenuBar>
@@ -40,6 +39,7 @@
 #include "io/video_sink.h"
 #include "orbit_camera.h"
 #include "playback.h"
+#include "problems_dock.h"
 #include "scene_document.h"
 #include "scene_editor.h"
 #include "text_capture.h"
@@ -51,11 +51,6 @@ namespace f2::viewer {
 
 namespace {
 constexpr int kStatusRefreshMs = 500;
-constexpr int kProblemsDockHeight = 110;
-// Where a problem list item points: file, line, column.
-constexpr int kFileRole = Qt::UserRole;
-constexpr int kLineRole = Qt::UserRole + 1;
-constexpr int kColumnRole = Qt::UserRole + 2;
 const char* const kRecentKey = "recentFiles";
 const char* const kScaleKey = "renderScale";
 const char* const kPlaybackAntialiasKey = "playbackAntialias";
@@ -76,16 +71,8 @@ MainWindow::MainWindow(QWidget* parent)
     layout->addWidget(timeline_);
     setCentralWidget(central);
 
-    diagnosticsDock_ = new QDockWidget(tr("Problems"), this);
-    diagnosticsDock_->setObjectName("problemsDock");
-    problemsList_ = new QListWidget(diagnosticsDock_);
-    problemsList_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
-    problemsList_->addItem(tr("No problems."));
-    diagnosticsDock_->setWidget(problemsList_);
-    addDockWidget(Qt::BottomDockWidgetArea, diagnosticsDock_);
-    diagnosticsDock_->hide();
-    connect(problemsList_, &QListWidget::itemClicked, this, &MainWindow::onProblemClicked);
-    connect(problemsList_, &QListWidget::itemActivated, this, &MainWindow::onProblemClicked);
+    diagnosticsDock_ = new ProblemsDock(this);
+    connect(diagnosticsDock_, &ProblemsDock::problemClicked, this, &MainWindow::onProblemClicked);
 
     editorDock_ = new EditorDock(this);
     addDockWidget(Qt::LeftDockWidgetArea, editorDock_);
@@ -469,50 +456,30 @@ void MainWindow::onSceneChanged(bool newDocument) {
 }
 
 void MainWindow::onDiagnosticsChanged() {
-    const QStringList lines = document_->diagnostics();
-    problemsList_->clear();
+    const auto& list = document_->diagnosticList();
     std::vector<EditorProblem> inEditor;
     const std::string ownFile = document_->sourceName();
-    const auto& list = document_->diagnosticList();
-    for (std::size_t i = 0; i < list.size(); ++i) {
-        const Diagnostic& d = list[i];
-        auto* item = new QListWidgetItem(lines[qsizetype(i)], problemsList_);
-        item->setData(kFileRole, QString::fromStdString(d.loc.file));
-        item->setData(kLineRole, d.loc.line);
-        item->setData(kColumnRole, d.loc.column);
-        item->setForeground(d.severity == Severity::Error ? QColor(0xb0, 0x00, 0x20)
-                                                          : QColor(0x90, 0x60, 0x00));
+    for (const Diagnostic& d : list)
         // Problems in an included file are listed but not underlined here.
         if (d.loc.file == ownFile)
             inEditor.push_back(
                 {d.loc.line, d.loc.column, QString::fromStdString(d.message), d.severity == Severity::Error});
-    }
-    if (lines.isEmpty()) problemsList_->addItem(tr("No problems."));
     editor()->setProblems(std::move(inEditor));
-    if (document_->hasErrors()) {
-        showDiagnostics();
-        diagnosticsDock_->raise();
+    diagnosticsDock_->setProblems(list, document_->diagnostics());
+    if (document_->hasErrors())
         statusBar()->showMessage(
             tr("%1 has errors; showing the last good scene").arg(document_->displayName()));
-    } else {
-        if (!lines.isEmpty()) showDiagnostics();  // warnings
+    else
         statusBar()->clearMessage();
-    }
 }
 
-void MainWindow::onProblemClicked(QListWidgetItem* item) {
-    if (!item->data(kLineRole).isValid()) return;
-    if (item->data(kFileRole).toString().toStdString() != document_->sourceName()) return;
+void MainWindow::onProblemClicked(const QString& file, int line, int column) {
+    if (file.toStdString() != document_->sourceName()) return;
     editorDock_->show();
-    editor()->goTo(item->data(kLineRole).toInt(), item->data(kColumnRole).toInt());
+    editor()->goTo(line, column);
 }
 
-void MainWindow::showDiagnostics() {
-    if (diagnosticsDock_->isVisible()) return;
-    diagnosticsDock_->show();
-    // A few lines of messages; the picture keeps most of the window.
-    resizeDocks({diagnosticsDock_}, {kProblemsDockHeight}, Qt::Vertical);
-}
+QListWidget* MainWindow::problemsList() const { return diagnosticsDock_->list(); }
 
 void MainWindow::scheduleFrame() {
     if (!frameTimer_.isActive()) frameTimer_.start();

@@ -11,6 +11,7 @@
 #include "animation_exporter.h"
 #include "core/render/image.h"
 #include "playback_antialias.h"
+#include "problems_dock.h"
 #include "render_controller.h"
 #include "scene_locations.h"
 #include "selection.h"
@@ -18,7 +19,6 @@
 class QActionGroup;
 class QLabel;
 class QListWidget;
-class QListWidgetItem;
 class QMenu;
 class QDockWidget;
 
@@ -84,8 +84,8 @@ class MainWindow : public QMainWindow {
     RenderController* renderController() const { return controller_.get(); }
     /// View › Mode: what the picture shows (shaded or a diagnostic view).
     ViewModeMenu* viewModes() const { return viewModes_; }
-    QListWidget* problemsList() const { return problemsList_; }
-    QDockWidget* diagnosticsDock() const { return diagnosticsDock_; }
+    QListWidget* problemsList() const;
+    ProblemsDock* diagnosticsDock() const { return diagnosticsDock_; }
     EditorDock* editorDock() const { return editorDock_; }
     SceneEditor* editor() const;
     /// The folder the save and export dialogs start in: the scene's (the
@@ -159,7 +159,7 @@ class MainWindow : public QMainWindow {
     void createActions();
     void onSceneChanged(bool newDocument);
     void onDiagnosticsChanged();
-    void onProblemClicked(QListWidgetItem* item);
+    void onProblemClicked(const QString& file, int line, int column);
     void onTextLoaded(const QString& text);
     void onTextSettled();
     void onFileChangedOnDisk();
@@ -167,7 +167,6 @@ class MainWindow : public QMainWindow {
     bool maybeSave();
     QMessageBox::StandardButton ask(Question question, const QString& text);
     void updateTitle();
-    void showDiagnostics();
     void onFrameReady(const QImage& image, const FrameInfo& info);
     void requestFrame();
     /// Asks for the frame on screen again with more samples, if it should refine.
@@ -200,8 +199,7 @@ class MainWindow : public QMainWindow {
     Playback* playback_ = nullptr;
     ViewportWidget* viewport_ = nullptr;
     TimelineWidget* timeline_ = nullptr;
-    QDockWidget* diagnosticsDock_ = nullptr;
-    QListWidget* problemsList_ = nullptr;
+    ProblemsDock* diagnosticsDock_ = nullptr;
     EditorDock* editorDock_ = nullptr;
     Asker asker_;
     QMenu* recentMenu_ = nullptr;

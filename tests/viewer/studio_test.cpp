@@ -3,6 +3,8 @@
 // key keeps the shot's start, the Problems dock leaves the picture's size alone,
 // a pick in an included file selects its /include line, and a large scene opens
 // off the GUI thread.
+#include <QAction>
+#include <QDockWidget>
 #include <QSignalSpy>
 #include <QStatusBar>
 #include <QTemporaryDir>
@@ -12,6 +14,7 @@
 #include "core/render/camera.h"
 #include "main_window.h"
 #include "playback.h"
+#include "problems_dock.h"
 #include "scene_document.h"
 #include "scene_editor.h"
 #include "test_support.h"
@@ -54,6 +57,7 @@ class StudioTest : public QObject {
    private slots:
     void initTestCase();
     void firstCameraKeyKeepsTheShotsStart();
+    void problemsDockKeepsThePictureSize();
 };
 
 void StudioTest::initTestCase() {
@@ -101,6 +105,53 @@ void StudioTest::firstCameraKeyKeepsTheShotsStart() {
     QCOMPARE(doc->blockCount(), original.count('\n') + 2);
     w.editor()->undo();
     QCOMPARE(w.editor()->toPlainText(), original);
+}
+
+void StudioTest::problemsDockKeepsThePictureSize() {
+    QTemporaryDir dir;
+    const QString path = smallSceneFile(dir);
+    auto window = windowOn(path, 0);
+    QVERIFY(window);
+    MainWindow& w = *window;
+    w.resizeForViewport({320, 240});
+    QVERIFY(waitForShownFrame(w, 0));  // laid out at that size
+    const QSize picture = w.viewport()->size();
+    QVERIFY(!w.diagnosticsDock()->isVisible());
+
+    // An error opens the dock; the picture keeps its size (the window grows).
+    const QByteArray broken = QByteArray(kSmallScene).replace("/amb_light 0.3", "/amb_lite 0.3");
+    writeFile(path, broken);
+    QTRY_VERIFY_WITH_TIMEOUT(w.document()->hasErrors(), kWaitMs);
+    QVERIFY(w.diagnosticsDock()->isVisible());
+    QVERIFY(w.diagnosticsDock()->openedItself());
+    QTRY_COMPARE_WITH_TIMEOUT(w.viewport()->size(), picture, kWaitMs);
+    QVERIFY(w.diagnosticsDock()->height() >= ProblemsDock::kHeight / 2);
+    QVERIFY2(problemsText(w).contains(":3:1: error:"), qPrintable(problemsText(w)));
+    if (const QByteArray shot = qgetenv("F2_STUDIO_SCREENSHOT"); !shot.isEmpty())
+        w.grab().save(QString::fromLocal8Bit(shot) + "-error.png");
+
+    // Fixed: it opened itself, so it closes itself, and the window gives the room back.
+    writeFile(path, kSmallScene);
+    QTRY_VERIFY_WITH_TIMEOUT(!w.document()->hasErrors(), kWaitMs);
+    QVERIFY(!w.diagnosticsDock()->isVisible());
+    QTRY_COMPARE_WITH_TIMEOUT(w.viewport()->size(), picture, kWaitMs);
+    if (const QByteArray shot = qgetenv("F2_STUDIO_SCREENSHOT"); !shot.isEmpty())
+        w.grab().save(QString::fromLocal8Bit(shot) + "-fixed.png");
+
+    // Opened by the user (View › Problems), it stays open after the fix, saying so.
+    w.diagnosticsDock()->toggleViewAction()->trigger();
+    QVERIFY(w.diagnosticsDock()->isVisible());
+    QTRY_COMPARE_WITH_TIMEOUT(w.viewport()->size(), picture, kWaitMs);
+    writeFile(path, broken);
+    QTRY_VERIFY_WITH_TIMEOUT(w.document()->hasErrors(), kWaitMs);
+    writeFile(path, kSmallScene);
+    QTRY_VERIFY_WITH_TIMEOUT(!w.document()->hasErrors(), kWaitMs);
+    QVERIFY(w.diagnosticsDock()->isVisible());
+    QCOMPARE(problemsText(w), QStringLiteral("No problems."));
+    // Closed by the user: the picture keeps its size again.
+    w.diagnosticsDock()->toggleViewAction()->trigger();
+    QVERIFY(!w.diagnosticsDock()->isVisible());
+    QTRY_COMPARE_WITH_TIMEOUT(w.viewport()->size(), picture, kWaitMs);
 }
 
 QTEST_MAIN(StudioTest)
