@@ -62,12 +62,13 @@ void run(int n) {
     const double oneMoreMs = msSince(start);
 
     start = Clock::now();
-    replies += server.handle(Json({{"jsonrpc", "2.0"},
-                                   {"method", "textDocument/didChange"},
-                                   {"params",
-                                    {{"textDocument", {{"uri", uriOf(n / 2)}, {"version", 2}}},
-                                     {"contentChanges", Json::array({{{"text", textOf(n / 2) + "# x\n"}}})}}}})
-                                 .dump())
+    replies += server
+                   .handle(Json({{"jsonrpc", "2.0"},
+                                 {"method", "textDocument/didChange"},
+                                 {"params",
+                                  {{"textDocument", {{"uri", uriOf(n / 2)}, {"version", 2}}},
+                                   {"contentChanges", Json::array({{{"text", textOf(n / 2) + "# x\n"}}})}}}})
+                               .dump())
                    .size();
     const double changeMs = msSince(start);
 
@@ -76,7 +77,8 @@ void run(int n) {
         Json({{"jsonrpc", "2.0"},
               {"id", 2},
               {"method", "textDocument/hover"},
-              {"params", {{"textDocument", {{"uri", uriOf(n / 2)}}}, {"position", {{"line", 0}, {"character", 9}}}}}})
+              {"params",
+               {{"textDocument", {{"uri", uriOf(n / 2)}}}, {"position", {{"line", 0}, {"character", 9}}}}}})
             .dump());
     const double hoverMs = msSince(start);
     const bool answered = hover.size() == 1 && Json::parse(hover[0])["result"].contains("contents");
