@@ -173,15 +173,7 @@ void StudioTest::pickInAnIncludedFileSelectsItsInclude() {
     MainWindow& w = *window;
     w.setRenderScale(RenderScale::SceneSize);
     QVERIFY(waitForShownFrame(w, 0));
-    const Camera camera = Camera::fromDesc(w.document()->scene()->camera);
-    auto clickAt = [&](Vec3 world) {
-        float px = 0, py = 0;
-        QVERIFY(camera.project(world, px, py));
-        const QRectF onScreen = w.viewport()->imageRect();
-        QTest::mouseClick(w.viewport(), Qt::LeftButton, {},
-                          QPoint(int(onScreen.left() + px * onScreen.width() / 96),
-                                 int(onScreen.top() + py * onScreen.height() / 72)));
-    };
+    auto clickAt = [&](Vec3 world) { QVERIFY(clickWorldPoint(w, world)); };
 
     // The cap: its /include line is selected, the status bar names the file and line.
     clickAt({0, 2.5f, 8});

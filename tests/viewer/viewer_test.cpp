@@ -994,15 +994,7 @@ void ViewerTest::pickNamesTheLineALoopOrIncludeMadeItBy() {
     w.editorDock()->hide();
     w.setRenderScale(RenderScale::SceneSize);
     QVERIFY(waitForShownFrame(w, 0));
-    const Camera camera = Camera::fromDesc(w.document()->scene()->camera);
-    auto clickAt = [&](Vec3 world) {
-        float px = 0, py = 0;
-        QVERIFY(camera.project(world, px, py));
-        const QRectF onScreen = w.viewport()->imageRect();
-        QTest::mouseClick(w.viewport(), Qt::LeftButton, {},
-                          QPoint(int(onScreen.left() + px * onScreen.width() / 96),
-                                 int(onScreen.top() + py * onScreen.height() / 72)));
-    };
+    auto clickAt = [&](Vec3 world) { QVERIFY(clickWorldPoint(w, world)); };
 
     // ball2 is selected at the loop's line, and the status bar says a loop made it.
     clickAt({3, 0, 8});
