@@ -17,5 +17,6 @@ Command addInfoCommand(CLI::App& app);
 Command addExportCommand(CLI::App& app);
 Command addBenchCommand(CLI::App& app);
 Command addLspCommand(CLI::App& app);
+Command addLanguageCommand(CLI::App& app);
 
 }  // namespace f2::cli

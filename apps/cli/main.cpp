@@ -49,8 +49,9 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
 
     std::vector<f2::cli::Command> commands = {
-        f2::cli::addRenderCommand(app), f2::cli::addCheckCommand(app), f2::cli::addInfoCommand(app),
-        f2::cli::addExportCommand(app), f2::cli::addBenchCommand(app), f2::cli::addLspCommand(app),
+        f2::cli::addRenderCommand(app),   f2::cli::addCheckCommand(app), f2::cli::addInfoCommand(app),
+        f2::cli::addExportCommand(app),   f2::cli::addBenchCommand(app), f2::cli::addLspCommand(app),
+        f2::cli::addLanguageCommand(app),
     };
     // `f2` alone: the short help (the commands), as a usage error.
     if (argc == 1) {

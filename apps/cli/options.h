@@ -2,7 +2,8 @@
 /// Checks of option values shared by the subcommands, stricter than CLI11's
 /// own conversions: decimal numbers only (no `0x10`), finite (no `nan`,
 /// `inf`), and messages that say what was expected rather than "not in range"
-/// for a word that is not a number at all.
+/// for a word that is not a number at all. The rules themselves are
+/// io/option_value.h, which f2-viewer's options use too.
 #include <CLI/CLI.hpp>
 #include <string>
 

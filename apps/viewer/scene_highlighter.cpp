@@ -3,16 +3,13 @@
 #include <QRegularExpression>
 #include <QStringView>
 
+#include "core/parse/language.h"
+
 namespace f2::viewer {
 
 namespace {
 
-bool isMode(QStringView word) {
-    static const QStringView modes[] = {u"linear", u"ease", u"ease_in", u"ease_out", u"step", u"spline"};
-    for (QStringView m : modes)
-        if (word == m) return true;
-    return false;
-}
+bool isMode(QStringView word) { return modeFromWord(word.toString().toStdString()).has_value(); }
 
 bool isNumber(QStringView word) {
     static const QRegularExpression number(QStringLiteral(R"(^[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$)"));

@@ -2,14 +2,17 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QPixmap>
 #include <QSaveFile>
 #include <QTimer>
 #include <QWindow>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 
+#include "io/option_value.h"
 #include "main_window.h"
 #include "playback.h"
 #include "viewport_widget.h"
@@ -25,13 +28,28 @@ constexpr double kStatsWarmUpSeconds = 1.0;  // skip start-up (first frames, win
     std::fprintf(stderr, "f2-viewer: %s (see f2-viewer --help)\n", qPrintable(message));
     std::exit(2);
 }
+
+/// The option's value read by `read` (an io::readXxx), or a usage error naming the option.
+template <typename Read>
+auto valueOf(const QCommandLineParser& parser, const QCommandLineOption& option, Read read) {
+    const auto value = read(parser.value(option).toStdString());
+    if (!value.ok()) fail("--" + option.names().constFirst() + ": " + QString::fromStdString(value.error));
+    return value.value;
+}
+
+/// The longest --quit-after: a day (QTimer counts milliseconds in an int).
+constexpr double kMaxQuitAfterSeconds = 86400;
+/// The shortest: one millisecond (less is 0 ms, i.e. no timer at all).
+constexpr double kMinQuitAfterSeconds = 0.001;
+/// The smallest picture area --size accepts, a side.
+constexpr int kMinViewportSide = 16;
 }  // namespace
 
-ViewerOptions parseViewerOptions(const QApplication& app) {
+ViewerOptions parseViewerOptions(int& argc, char** argv) {
     QCommandLineParser parser;
     parser.setApplicationDescription("Plays an F2 scene (default: the embedded demo scene) live.");
-    parser.addHelpOption();
-    parser.addVersionOption();
+    const QCommandLineOption help = parser.addHelpOption();
+    const QCommandLineOption version = parser.addVersionOption();
     parser.addPositionalArgument("scene", "Scene file (.f2) to open");
     QCommandLineOption frame("frame", "Start paused at frame <n>.", "n");
     QCommandLineOption scale("scale", "Render scale: 25, 50, 100 or scene.", "scale");
@@ -43,19 +61,26 @@ ViewerOptions parseViewerOptions(const QApplication& app) {
                                   "the window's size and, when paused, refined), then quit.",
                                   "file");
     parser.addOptions({frame, scale, size, quitAfter, stats, screenshot});
-    // process() would exit 1 on an unknown option; parse first, then let it show --help or --version.
-    if (!parser.parse(app.arguments())) fail(parser.errorText());
-    parser.process(app);
+    // Read argv as QCoreApplication::arguments() does, without an application:
+    // no window system is needed to show the usage or to refuse an option.
+    QStringList arguments;
+    for (int i = 0; i < argc; ++i) arguments << QString::fromLocal8Bit(argv[i]);
+    // process() would exit 1 on an unknown option; parse first, then let it show --help or --version
+    // (it needs an application object for the program's name; a QCoreApplication opens no display).
+    if (!parser.parse(arguments)) fail(parser.errorText());
+    if (parser.isSet(help) || parser.isSet("help-all") || parser.isSet(version)) {
+        QCoreApplication app(argc, argv);
+        parser.process(app);  // prints and exits 0
+    }
 
     ViewerOptions options;
     const QStringList args = parser.positionalArguments();
     if (args.size() > 1) fail("expected at most one scene file");
     if (!args.isEmpty()) options.scene = args.first();
-    bool ok = true;
-    if (parser.isSet(frame)) {
-        options.frame = parser.value(frame).toDouble(&ok);
-        if (!ok || *options.frame < 0) fail("--frame: expected a number >= 0");
-    }
+    if (parser.isSet(frame))
+        options.frame = valueOf(parser, frame, [](const std::string& text) {
+            return io::readFiniteNumber(text, 0.0, 1e7, "a frame time");  // as f2 render --frame
+        });
     if (parser.isSet(scale)) {
         const QString s = parser.value(scale);
         if (s == "25")
@@ -70,16 +95,17 @@ ViewerOptions parseViewerOptions(const QApplication& app) {
             fail("--scale: expected 25, 50, 100 or scene");
     }
     if (parser.isSet(size)) {
-        const QStringList wh = parser.value(size).split('x');
-        bool okW = false, okH = false;
-        if (wh.size() == 2) options.viewportSize = QSize(wh[0].toInt(&okW), wh[1].toInt(&okH));
-        if (!okW || !okH || options.viewportSize.width() < 16 || options.viewportSize.height() < 16)
-            fail("--size: expected WIDTHxHEIGHT such as 800x600");
+        const io::ImageSize wh = valueOf(parser, size, io::readImageSize);  // as f2 render --size
+        if (wh.width < kMinViewportSide || wh.height < kMinViewportSide)
+            fail(QString("--size: %1 is smaller than the smallest picture area, %2x%2")
+                     .arg(parser.value(size))
+                     .arg(kMinViewportSide));
+        options.viewportSize = QSize(wh.width, wh.height);
     }
-    if (parser.isSet(quitAfter)) {
-        options.quitAfterSeconds = parser.value(quitAfter).toDouble(&ok);
-        if (!ok || options.quitAfterSeconds <= 0) fail("--quit-after: expected seconds > 0");
-    }
+    if (parser.isSet(quitAfter))
+        options.quitAfterSeconds = valueOf(parser, quitAfter, [](const std::string& text) {
+            return io::readFiniteNumber(text, kMinQuitAfterSeconds, kMaxQuitAfterSeconds, "a duration");
+        });
     options.stats = parser.isSet(stats);
     options.screenshot = parser.value(screenshot);
     if (parser.isSet(screenshot) && options.screenshot.isEmpty()) fail("--screenshot: expected a file");
@@ -141,7 +167,7 @@ void applyViewerOptions(const ViewerOptions& options, MainWindow& window) {
                          });
     }
     if (options.quitAfterSeconds > 0)
-        QTimer::singleShot(int(options.quitAfterSeconds * 1000), qApp, &QCoreApplication::quit);
+        QTimer::singleShot(int(std::lround(options.quitAfterSeconds * 1000)), qApp, &QCoreApplication::quit);
 }
 
 }  // namespace f2::viewer

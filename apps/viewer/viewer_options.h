@@ -4,8 +4,6 @@
 #include <QString>
 #include <optional>
 
-class QApplication;
-
 namespace f2::viewer {
 
 class MainWindow;
@@ -20,8 +18,10 @@ struct ViewerOptions {
     QString screenshot;           ///< save the window here once a frame is complete, then quit
 };
 
-/// Parses argv; exits with a message on --help, --version or a bad option.
-ViewerOptions parseViewerOptions(const QApplication& app);
+/// Parses argv before any window system is opened: prints the usage or the
+/// version and exits 0 on --help / --version, prints one line and exits 2 on
+/// a bad option or value. Numbers are read by f2's rules (io/option_value.h).
+ViewerOptions parseViewerOptions(int& argc, char** argv);
 /// Opens the scene, sets scale/size/frame, starts playing, arms --quit-after.
 void applyViewerOptions(const ViewerOptions& options, MainWindow& window);
 

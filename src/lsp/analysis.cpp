@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 
+#include "core/parse/language.h"
 #include "core/parse/lexer.h"
 
 namespace f2::lsp {
@@ -16,18 +17,10 @@ int hexValue(char c) {
     return -1;
 }
 
-bool isNameStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
-bool isNameChar(char c) { return isNameStart(c) || (c >= '0' && c <= '9'); }
-
 bool contains(const TokenSpan& span, std::size_t lineIndex, std::size_t byte, std::size_t bomBytes) {
     if (span.loc.line != static_cast<int>(lineIndex) + 1) return false;
     const std::size_t begin = bomBytes + static_cast<std::size_t>(span.loc.column - 1);
     return byte >= begin && byte <= begin + static_cast<std::size_t>(span.length);
-}
-
-bool parses(std::string_view text) {
-    SymbolIndex unused;
-    return parseScene(text, "probe.f2", ParseLimits{}, unused).ok();
 }
 
 }  // namespace
@@ -245,29 +238,6 @@ std::array<std::size_t, 5> keyCounts(const Analysis& a, std::size_t object) {
         counts[suffix ? static_cast<std::size_t>(suffix->part + 1) : 0] += 1;
     }
     return counts;
-}
-
-bool isValidName(std::string_view name) {
-    return !name.empty() && isNameStart(name.front()) &&
-           std::all_of(name.begin() + 1, name.end(), isNameChar);
-}
-
-bool LanguageFeatures::knows(std::string_view command) const {
-    return std::find(commands.begin(), commands.end(), command) != commands.end();
-}
-
-const LanguageFeatures& languageFeatures() {
-    static const LanguageFeatures features = [] {
-        LanguageFeatures f;
-        f.commands = commandNames();
-        for (std::string_view mode : {"linear", "ease", "ease_in", "ease_out", "step", "spline"}) {
-            if (parses("/sphere s 1 0 0 0\n/interp s " + std::string(mode) + "\n")) f.modes.push_back(mode);
-        }
-        f.cameraTarget = parses("/key 0 camera\n");
-        f.keyModes = parses("/sphere s 1 0 0 0\n/key 0 s linear\n");
-        return f;
-    }();
-    return features;
 }
 
 }  // namespace f2::lsp

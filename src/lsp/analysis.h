@@ -91,19 +91,4 @@ struct PartSuffix {
 };
 std::optional<PartSuffix> partAfter(const Analysis& a, const TokenSpan& name);
 
-/// Whether `name` is valid as a new object or variable name.
-bool isValidName(std::string_view name);
-
-/// What the parser of this build accepts beyond the first edition, probed once
-/// by parsing small scenes, so the server follows the language as it grows.
-struct LanguageFeatures {
-    std::vector<std::string_view> commands;  ///< every command the parser knows
-    std::vector<std::string_view> modes;     ///< interpolation modes /interp accepts
-    bool cameraTarget = false;               ///< `/key 0 camera` is valid
-    bool keyModes = false;                   ///< a `/key` may end with a mode
-
-    bool knows(std::string_view command) const;
-};
-const LanguageFeatures& languageFeatures();
-
 }  // namespace f2::lsp

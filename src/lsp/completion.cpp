@@ -4,9 +4,10 @@
 #include <cctype>
 #include <filesystem>
 
+#include "core/parse/expression.h"
+#include "core/parse/language.h"
 #include "core/parse/lexer.h"
 #include "core/scene/scene_desc.h"
-#include "lsp/command_docs.h"
 #include "lsp/features.h"
 
 namespace f2::lsp {
@@ -65,8 +66,9 @@ std::vector<const IndexedObject*> visibleObjects(const Analysis& a, int beforeLi
 }
 
 void addModes(Json& items, const Range& replace) {
-    for (std::string_view mode : languageFeatures().modes) {
-        items.push_back(item(mode, kCompletionEnumMember, "interpolation mode", replace, mode));
+    for (Interpolation mode : interpolationModes()) {
+        const std::string_view word = interpolationName(mode);
+        items.push_back(item(word, kCompletionEnumMember, "interpolation mode", replace, word));
     }
 }
 
@@ -105,7 +107,7 @@ Json expressionItems(const Analysis& a, Position p, std::string_view line, std::
                              replace, v.name));
     }
     items.push_back(item("pi", kCompletionVariable, "3.14159…", replace, "pi"));
-    for (std::string_view f : expressionFunctions()) {
+    for (std::string_view f : expressionFunctionNames()) {
         items.push_back(item(f, kCompletionFunction, f == "atan2" ? "atan2(y, x), degrees" : "function",
                              replace, std::string(f) + "($1)", true));
     }
@@ -155,24 +157,22 @@ Json completion(const Analysis& a, Position p) {
     const auto typing = typingAt(line, static_cast<std::size_t>(byteLong));
     if (!typing) return items;
     const Range replace{{p.line, utf16Length(line.substr(0, typing->begin))}, p};
-    const LanguageFeatures& language = languageFeatures();
     if (typing->index > 0 && insideExpression(line, static_cast<std::size_t>(byteLong))) {
         return expressionItems(a, p, line, static_cast<std::size_t>(byteLong));
     }
 
     if (typing->index == 0) {
-        for (const CommandDoc& doc : commandDocs()) {
-            if (!language.knows(doc.name)) continue;
+        for (const CommandSpec& doc : commands()) {
             Json j = item(doc.name, kCompletionKeyword, doc.syntax, replace, doc.snippet, true);
             j["documentation"] = {{"kind", "markdown"}, {"value", std::string(doc.meaning)}};
             items.push_back(std::move(j));
         }
         return items;
     }
-    const CommandDoc* doc = findCommandDoc(typing->command);
+    const CommandSpec* doc = findCommand(typing->command);
     if (!doc) return items;
     const int arg = typing->index - 1;
-    const ArgKind kind = argumentKind(*doc, arg);
+    const ArgKind kind = doc->argumentKind(arg);
     const int lineNumber = p.line + 1;
 
     // After `name.`: the parts of that model.
@@ -196,9 +196,7 @@ Json completion(const Analysis& a, Position p) {
                 items.push_back(item(o->object.name, kCompletionVariable, objectKindName(o->object.kind),
                                      replace, o->object.name));
             }
-            if (language.cameraTarget && std::string_view("camera").starts_with(typing->partial) &&
-                doc->name != "/paint" && doc->name != "/material" && doc->name != "/checker" &&
-                doc->name != "/look_at") {
+            if (doc->cameraArgument() == arg && kCameraName.starts_with(typing->partial)) {
                 items.push_back(item("camera", kCompletionKeyword, "the scene camera", replace, "camera"));
             }
             break;
@@ -214,7 +212,7 @@ Json completion(const Analysis& a, Position p) {
             break;
         case ArgKind::Number:
             // A /key may end with a mode after the target or after the six numbers.
-            if (doc->name == "/key" && arg == 2 && language.keyModes) addModes(items, replace);
+            if (doc->id == CommandId::Key && arg == 2) addModes(items, replace);
             break;
         case ArgKind::Path:
             if (arg == 0) return includeItems(a, p, typing->partial, typing->begin);

@@ -10,9 +10,9 @@
 #include "core/anim/camera_motion.h"
 #include "core/anim/track.h"
 #include "core/parse/expression.h"
+#include "core/parse/language.h"
 #include "core/parse/lexer.h"
 #include "core/scene/models.h"
-#include "lsp/command_docs.h"
 #include "lsp/features.h"
 
 namespace f2::lsp {
@@ -229,7 +229,7 @@ Json hover(const Analysis& a, Position p) {
         case SymbolAt::Kind::None:
             return nullptr;
         case SymbolAt::Kind::Command: {
-            const CommandDoc* doc = findCommandDoc(at.command);
+            const CommandSpec* doc = findCommand(at.command);
             if (!doc) return nullptr;
             return markdown("```f2\n" + std::string(doc->syntax) + "\n```\n" + std::string(doc->meaning),
                             at.range);

@@ -6,6 +6,7 @@
 #include <set>
 #include <tuple>
 
+#include "core/parse/language.h"
 #include "lsp/features.h"
 
 namespace f2::lsp {

@@ -3,12 +3,11 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "core/parse/language.h"
+
 namespace f2::lsp {
 
 namespace {
-
-bool isNameStart(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; }
-bool isNameChar(char c) { return isNameStart(c) || (c >= '0' && c <= '9'); }
 
 /// The line without its comment ('#' to the end; a quoted include path may hold '#').
 std::string_view withoutComment(std::string_view line) {
@@ -30,13 +29,6 @@ std::string_view firstWord(std::string_view line, std::size_t& end) {
 }
 
 }  // namespace
-
-const std::vector<std::string_view>& expressionFunctions() {
-    static const std::vector<std::string_view> kFunctions = {"sin",   "cos",   "tan", "asin",  "acos", "atan",
-                                                             "atan2", "sqrt",  "abs", "floor", "ceil", "exp",
-                                                             "log",   "round", "min", "max"};
-    return kFunctions;
-}
 
 bool insideExpression(std::string_view line, std::size_t byte) {
     const std::string_view code = withoutComment(line);

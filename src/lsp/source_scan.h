@@ -49,7 +49,4 @@ std::string resolveInclude(std::string_view documentPath, std::string_view path)
 /// True when byte `byte` of `line` is inside `( … )` or `{ … }` (not in a comment).
 bool insideExpression(std::string_view line, std::size_t byte);
 
-/// The math functions of expressions (SPEC 9.4).
-const std::vector<std::string_view>& expressionFunctions();
-
 }  // namespace f2::lsp

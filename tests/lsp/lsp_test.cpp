@@ -10,10 +10,11 @@
 #include <random>
 #include <string>
 
+#include "core/parse/language.h"
 #include "core/parse/parser.h"
 #include "core/parse/symbol_index.h"
-#include "lsp/command_docs.h"
 #include "lsp/features.h"
+#include "lsp/language_files.h"
 #include "lsp/message_reader.h"
 #include "lsp/scene_sources.h"
 #include "lsp/server.h"
@@ -584,6 +585,27 @@ TEST(Hover, CameraLineKeysLookAtAttachmentAndPose) {
     EXPECT_NE(plainText.find("eye (0, 0, -10), rotation (0, 90, 0)"), std::string::npos) << plainText;
 }
 
+TEST(LanguageFiles, FillsAlternationsLongestFirstAndDictionaryLines) {
+    std::string problem;
+    EXPECT_EQ(fillLanguageTemplate("(@f2:modes@) and @f2:camera@\n", problem),
+              "(ease_out|ease_in|linear|spline|ease|step) and camera\n");
+    EXPECT_EQ(problem, "");
+    EXPECT_EQ(fillLanguageTemplate("# parts\n@f2:parts:dict@\nend\n", problem),
+              "# parts\n\"body\"\n\"head\"\n\"lhand\"\n\"rhand\"\nend\n");
+    // Every command of the table, and only those, in the commands list.
+    const std::vector<std::string> words = languageList("slashed-commands").value();
+    EXPECT_EQ(words.size(), commands().size());
+    EXPECT_NE(std::find(words.begin(), words.end(), "/checker"), words.end());
+}
+
+TEST(LanguageFiles, AnUnknownOrUnclosedListIsAnErrorWithItsPlace) {
+    std::string problem;
+    EXPECT_EQ(fillLanguageTemplate("ok\n  x @f2:colours@\n", problem), "");
+    EXPECT_EQ(problem, "2:5: error: unknown list 'colours' (f2 language --lists names them)");
+    EXPECT_EQ(fillLanguageTemplate("@f2:modes\n@\n", problem), "");
+    EXPECT_EQ(problem, "1:1: error: '@f2:' without its closing '@'");
+}
+
 TEST(Completion, OffersTheParsersCommandsAsSnippets) {
     const Analysis a = analysed("/ro\n");
     const Json items = completion(a, {0, 3});
@@ -599,10 +621,6 @@ TEST(Completion, OffersTheParsersCommandsAsSnippets) {
     const auto robot = std::find(labels.begin(), labels.end(), "/robot") - labels.begin();
     EXPECT_EQ(items[static_cast<std::size_t>(robot)]["textEdit"]["range"], toJson(Range{{0, 0}, {0, 3}}));
     EXPECT_EQ(items[static_cast<std::size_t>(robot)]["insertTextFormat"], kInsertSnippet);
-}
-
-TEST(Completion, EveryParserCommandIsDocumented) {
-    for (std::string_view c : commandNames()) EXPECT_NE(findCommandDoc(c), nullptr) << c;
 }
 
 TEST(Completion, ModesObjectsAndNothingInComments) {

@@ -7,6 +7,7 @@
 #include <numbers>
 #include <vector>
 
+#include "core/parse/language.h"
 #include "core/parse/lexer.h"
 #include "core/parse/number.h"
 #include "core/parse/unusual_char.h"
@@ -20,9 +21,7 @@ constexpr double kRadiansPerDegree = std::numbers::pi / 180.0;
 /// SPEC 9.4: an integer field takes a value this close to a whole number.
 constexpr double kWholeTolerance = 1e-6;
 
-bool isNameStart(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; }
 bool isDigit(char c) { return c >= '0' && c <= '9'; }
-bool isNameChar(char c) { return isNameStart(c) || isDigit(c); }
 
 // Trigonometry in degrees. The angle is first reduced exactly (fmod is exact),
 // so that the multiples of 90 give exact 0 and ±1: cos(90) is 0, not 6e-17.
@@ -438,7 +437,7 @@ class ExpressionParser {
 
 }  // namespace
 
-Variables::Variables() { values_.emplace("pi", std::numbers::pi); }
+Variables::Variables() { values_.emplace(kPredefinedVariables[0], std::numbers::pi); }
 
 std::optional<double> Variables::find(std::string_view name) const {
     if (auto it = values_.find(name); it != values_.end()) return it->second;
@@ -465,7 +464,16 @@ void Variables::erase(std::string_view name) {
     if (auto it = values_.find(name); it != values_.end()) values_.erase(it);
 }
 
-bool Variables::isPredefined(std::string_view name) { return name == "pi"; }
+bool Variables::isPredefined(std::string_view name) {
+    return std::find(kPredefinedVariables.begin(), kPredefinedVariables.end(), name) !=
+           kPredefinedVariables.end();
+}
+
+std::vector<std::string_view> expressionFunctionNames() {
+    std::vector<std::string_view> names;
+    for (const FunctionInfo& f : kFunctions) names.push_back(f.name);
+    return names;
+}
 
 ExpressionResult evaluateExpression(std::string_view text, const Variables& variables) {
     return ExpressionParser(text, variables).whole();

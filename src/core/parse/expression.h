@@ -2,6 +2,7 @@
 /// Arithmetic expressions of the scene language (SPEC 9.4): `( … )` wherever a
 /// number is expected and `{ … }` inside names, over numbers, variables, the
 /// operators + - * / % ^ and a few functions of degrees.
+#include <array>
 #include <cstddef>
 #include <functional>
 #include <optional>
@@ -9,12 +10,16 @@
 #include <string_view>
 #include <unordered_map>
 #include <unordered_set>
+#include <vector>
 
 namespace f2 {
 
 /// Parentheses, unary signs and powers may nest this deep; deeper is an error
 /// rather than a stack overflow **(choice)**.
 inline constexpr int kMaxExpressionDepth = 256;
+
+/// The variables every scene has, which cannot be redefined.
+inline constexpr std::array<std::string_view, 1> kPredefinedVariables = {"pi"};
 
 /// The variables of a scene: `/let` and loop variables, plus `pi`.
 class Variables {
@@ -60,6 +65,10 @@ ExpressionResult evaluateExpression(std::string_view text, const Variables& vari
 /// Evaluates a `( … )` argument: `text` starts with '(' and must end at its
 /// matching ')'.
 ExpressionResult evaluateParenthesized(std::string_view text, const Variables& variables);
+
+/// The functions of expressions ("sin", …, "max"), in their table's order:
+/// completion and the generated grammar list these.
+std::vector<std::string_view> expressionFunctionNames();
 
 /// A whole number within 1e-6 of `value` (SPEC 9.4 integer fields), or nullopt.
 std::optional<double> nearWhole(double value);

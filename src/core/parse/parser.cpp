@@ -14,6 +14,7 @@
 #include <unordered_map>
 
 #include "core/parse/expression.h"
+#include "core/parse/language.h"
 #include "core/parse/lexer.h"
 #include "core/parse/number.h"
 #include "core/parse/source_expander.h"
@@ -25,87 +26,12 @@ namespace f2 {
 
 namespace {
 
-// Command table
-enum class Command {
-    Camera,
-    AmbLight,
-    DirLight,
-    PointLight,
-    SpotLight,
-    Background,
-    Material,
-    Sphere,
-    Cylinder,
-    Box,
-    Paint,
-    Robot,
-    Human,
-    Anim,
-    Key,
-    Interp,
-    Fps,
-    LookAt,
-    Attach,
-    Checker,
-};
-
-struct CommandName {
-    std::string_view name;
-    Command command;
-};
-
-constexpr std::array<CommandName, 20> kCommands = {{
-    {"/camera", Command::Camera},
-    {"/amb_light", Command::AmbLight},
-    {"/dir_light", Command::DirLight},
-    {"/point_light", Command::PointLight},
-    {"/spot_light", Command::SpotLight},
-    {"/background", Command::Background},
-    {"/material", Command::Material},
-    {"/sphere", Command::Sphere},
-    {"/cylinder", Command::Cylinder},
-    {"/box", Command::Box},
-    {"/paint", Command::Paint},
-    {"/robot", Command::Robot},
-    {"/human", Command::Human},
-    {"/anim", Command::Anim},
-    {"/key", Command::Key},
-    {"/interp", Command::Interp},
-    {"/fps", Command::Fps},
-    {"/look_at", Command::LookAt},
-    {"/attach", Command::Attach},
-    {"/checker", Command::Checker},
-}};
-
-/// The name of the scene camera as a target (SPEC 9.1); no object may take it.
-constexpr std::string_view kCameraName = "camera";
-
-/// Interpolation modes by their words (SPEC 9.3).
-constexpr std::array<Interpolation, 6> kModes = {Interpolation::Linear, Interpolation::Ease,
-                                                 Interpolation::EaseIn, Interpolation::EaseOut,
-                                                 Interpolation::Step,   Interpolation::Spline};
-
-std::optional<Interpolation> modeFromWord(std::string_view word) {
-    for (Interpolation m : kModes) {
-        if (interpolationName(m) == word) return m;
-    }
-    return std::nullopt;
-}
-
 /// Total work (distance table cells) spent on "did you mean" for names, so
 /// that a file with a million objects and many unknown names stays fast.
 constexpr std::size_t kMaxNameSuggestWork = 50'000'000;
 
 /// A place in the source: file, line, column and reading order (SPEC 9.5).
 using Pos = SourcePos;
-
-bool isNameStart(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; }
-bool isNameChar(char c) { return isNameStart(c) || (c >= '0' && c <= '9'); }
-
-bool isValidName(std::string_view s) {
-    if (s.empty() || !isNameStart(s.front())) return false;
-    return std::all_of(s.begin() + 1, s.end(), isNameChar);
-}
 
 /// PartId index of a part name, or -1.
 int partIndex(std::string_view s) {
@@ -120,13 +46,13 @@ std::string_view suggestCommand(std::string_view word) {
     if (word.size() > kMaxSuggestLength) return {};
     // A cut-short name ("/amb light" for "/amb_light") is a likely mistake too.
     if (word.size() >= 3) {
-        for (const CommandName& c : kCommands) {
+        for (const CommandSpec& c : commands()) {
             if (c.name.starts_with(word)) return c.name;
         }
     }
     std::string_view best;
     std::size_t bestDistance = 3;  // at most two edits
-    for (const CommandName& c : kCommands) {
+    for (const CommandSpec& c : commands()) {
         const std::size_t d = editDistance(word, c.name);
         if (d < bestDistance) {
             bestDistance = d;
@@ -224,8 +150,8 @@ class Parser : private ExpansionSink {
         report(Severity::Error, pos, std::move(message), LoopNote::Always);
     }
     bool knowsCommand(std::string_view command) const override {
-        return std::any_of(kCommands.begin(), kCommands.end(),
-                           [command](const CommandName& c) { return c.name == command; });
+        const CommandSpec* c = findCommand(command);
+        return c && c->group != CommandGroup::Source;
     }
 
     /// "3:5", or "FILE:3:5" when `p` is in another file than the current line.
@@ -348,19 +274,16 @@ class Parser : private ExpansionSink {
             std::string message = "expected a command starting with '/', got " + quoteToken(head);
             if (head.size() <= kMaxSuggestLength) {
                 const std::string slashed = "/" + std::string(head);
-                for (const CommandName& c : kCommands) {
-                    if (c.name == slashed) message += " (did you mean '" + slashed + "'?)";
-                }
+                if (findCommand(slashed)) message += " (did you mean '" + slashed + "'?)";
             }
             error(commandPos(), noteCharacters(std::move(message), head, commandPos()));
             return;
         }
-        for (const CommandName& c : kCommands) {
-            if (c.name == head) {
-                if (index_) index_->noteCommand(head, sourceLoc(commandPos()));
-                dispatch(c.command);
-                return;
-            }
+        // The Source group never arrives here: the expander runs those lines.
+        if (const CommandSpec* c = findCommand(head); c && c->group != CommandGroup::Source) {
+            if (index_) index_->noteCommand(head, sourceLoc(commandPos()));
+            dispatch(c->id);
+            return;
         }
         std::string message = "unknown command " + quoteToken(head);
         if (const std::string_view guess = suggestCommand(head); !guess.empty()) {
@@ -369,48 +292,54 @@ class Parser : private ExpansionSink {
         error(commandPos(), noteCharacters(std::move(message), head, commandPos()));
     }
 
-    void dispatch(Command command) {
+    void dispatch(CommandId command) {
+        using enum CommandId;
         switch (command) {
-            case Command::Camera:
+            case Camera:
                 return parseCamera();
-            case Command::AmbLight:
+            case AmbLight:
                 return parseAmbLight();
-            case Command::PointLight:
+            case PointLight:
                 return parseLocalLight(LocalLightKind::Point);
-            case Command::SpotLight:
+            case SpotLight:
                 return parseLocalLight(LocalLightKind::Spot);
-            case Command::DirLight:
+            case DirLight:
                 return parseDirLight();
-            case Command::Background:
+            case Background:
                 return parseBackground();
-            case Command::Material:
+            case Material:
                 return parseMaterial();
-            case Command::Sphere:
+            case Sphere:
                 return parseObject(ObjectKind::Sphere);
-            case Command::Cylinder:
+            case Cylinder:
                 return parseObject(ObjectKind::Cylinder);
-            case Command::Box:
+            case Box:
                 return parseObject(ObjectKind::Box);
-            case Command::Paint:
+            case Paint:
                 return parsePaint();
-            case Command::Robot:
+            case Robot:
                 return parseObject(ObjectKind::Robot);
-            case Command::Human:
+            case Human:
                 return parseObject(ObjectKind::Human);
-            case Command::Anim:
+            case Anim:
                 return parseAnim();
-            case Command::Key:
+            case Key:
                 return parseKey();
-            case Command::Interp:
+            case Interp:
                 return parseInterp();
-            case Command::Fps:
+            case Fps:
                 return parseFps();
-            case Command::LookAt:
+            case LookAt:
                 return parseLookAt();
-            case Command::Attach:
+            case Attach:
                 return parseAttach();
-            case Command::Checker:
+            case Checker:
                 return parseChecker();
+            case Let:
+            case Repeat:
+            case End:
+            case Include:
+                return;  // run by the SourceExpander
         }
     }
 
@@ -730,7 +659,6 @@ class Parser : private ExpansionSink {
     }
 
     /// The options a light command may end with: a word and its numbers.
-    enum class LightOption { Fade, Size, Angle, Tightness };
     struct LightOptions {
         Fade fade;
         SoftShadow shadow;
@@ -740,23 +668,12 @@ class Parser : private ExpansionSink {
     /// Reads the options after argument `first` (docs/scene-language.md,
     /// "Point and spot lights"); each of `allowed` at most once.
     bool lightOptions(int first, std::initializer_list<LightOption> allowed, LightOptions& out) {
-        struct Spec {
-            LightOption option;
-            std::string_view word;
-            int numbers;
-            std::string_view what;
-        };
-        static constexpr std::array<Spec, 4> kSpecs = {{
-            {LightOption::Fade, "fade", 2, "a distance and a power"},
-            {LightOption::Size, "size", 2, "a diameter and the samples per side"},
-            {LightOption::Angle, "angle", 2, "an angular radius and the samples per side"},
-            {LightOption::Tightness, "tightness", 1, "a number"},
-        }};
+        const std::span<const LightOptionSpec> kSpecs = f2::lightOptions();
         bool ok = true;
         std::vector<LightOption> seen;
         for (int i = first; i < argCount();) {
-            const Spec* spec = nullptr;
-            for (const Spec& candidate : kSpecs)
+            const LightOptionSpec* spec = nullptr;
+            for (const LightOptionSpec& candidate : kSpecs)
                 if (candidate.word == arg(i) &&
                     std::find(allowed.begin(), allowed.end(), candidate.option) != allowed.end())
                     spec = &candidate;
@@ -1411,9 +1328,7 @@ ParseResult parseScene(std::string_view text, std::string_view fileName, const P
 
 std::vector<std::string_view> commandNames() {
     std::vector<std::string_view> names;
-    for (const CommandName& c : kCommands) names.push_back(c.name);
-    // Run by the SourceExpander before a line reaches the command table.
-    for (std::string_view c : {"/let", "/repeat", "/end", "/include"}) names.push_back(c);
+    for (const CommandSpec& c : commands()) names.push_back(c.name);
     return names;
 }
 

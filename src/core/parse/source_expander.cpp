@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <tuple>
 
+#include "core/parse/language.h"
 #include "core/parse/number.h"
 #include "core/parse/unusual_char.h"
 
@@ -19,16 +20,14 @@ namespace f2 {
 
 namespace {
 
-bool isNameStart(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; }
-bool isNameChar(char c) { return isNameStart(c) || (c >= '0' && c <= '9'); }
+/// Variables follow the name rule of objects (SPEC 9.4).
+constexpr bool isVariableName(std::string_view s) { return isValidName(s); }
 
-bool isVariableName(std::string_view s) {
-    if (s.empty() || !isNameStart(s.front())) return false;
-    for (char c : s.substr(1)) {
-        if (!isNameChar(c)) return false;
-    }
-    return true;
-}
+/// The words of the four commands the expander runs (core/parse/language.h).
+const std::string_view kLet = command(CommandId::Let).name;
+const std::string_view kRepeat = command(CommandId::Repeat).name;
+const std::string_view kEnd = command(CommandId::End).name;
+const std::string_view kInclude = command(CommandId::Include).name;
 
 /// The first token of a line, cheaply (for the scan that pairs /repeat and /end).
 std::string_view firstWord(std::string_view line) {
@@ -188,7 +187,7 @@ struct SourceExpander::SourceFile {
             ++lineCount;
             const std::string_view word = firstWord(line.text);
             const std::uint64_t bytes = line.text.size() + 1;
-            if (word == "/end" && !open.empty()) {
+            if (word == kEnd && !open.empty()) {
                 const Open o = open.back();
                 open.pop_back();
                 const LoopInfo info{reader,
@@ -212,7 +211,7 @@ struct SourceExpander::SourceFile {
                 open.back().deepLines += 1;
                 open.back().deepBytes += static_cast<double>(bytes);
             }
-            if (word == "/repeat") {
+            if (word == kRepeat) {
                 Open o;
                 o.line = line.number;
                 if (line.text.size() <= maxLineBytes) o.passes = literalLoopPasses(line.text);
@@ -316,15 +315,15 @@ bool SourceExpander::next(LogicalLine& out) {
         tokenize(line.text, out);
         if (out.count == 0) continue;  // blank or comment
         const std::string_view command = out.tokens[0].text;
-        if (command == "/let") {
+        if (command == kLet) {
             evaluateTokens(out, 2);
             runLet(out);
-        } else if (command == "/repeat") {
+        } else if (command == kRepeat) {
             evaluateTokens(out, 2);
             runRepeat(out, line.number);
-        } else if (command == "/end") {
+        } else if (command == kEnd) {
             runEnd(out);
-        } else if (command == "/include") {
+        } else if (command == kInclude) {
             runInclude(line.text, out);
         } else {
             if (sink_.knowsCommand(command)) evaluateTokens(out, 1);

@@ -1,0 +1,195 @@
+#include "core/parse/language.h"
+
+#include <array>
+
+namespace f2 {
+
+namespace {
+
+using enum ArgKind;
+
+constexpr std::array kNumbers = {Number};
+constexpr std::array kCreate = {NewName, Number};
+constexpr std::array kTargetThenNumbers = {Target, Number};
+constexpr std::array kAnim = {Target, Part};
+constexpr std::array kKey = {Number, Target, Number, Number, Number, Number, Number, Number, Mode};
+constexpr std::array kInterp = {Target, Mode};
+constexpr std::array kLet = {Variable, Number};
+constexpr std::array kRepeat = {Variable, Number};
+constexpr std::array kInclude = {Path};
+constexpr std::array kLookAt = {PointOrTarget, Number};
+constexpr std::array kAttach = {Object, Target};
+constexpr std::array<ArgKind, 0> kNone = {};
+
+// Rows in CommandId order (checked below). The syntax and meaning are what
+// hover shows; docs/scene-language.md has each command's full story.
+constexpr std::array<CommandSpec, 24> kCommands = {{
+    {CommandId::Camera, "/camera", Edition::First, CommandGroup::Setting, kNumbers,
+     "/camera <w> <h> <d> [<px> <py> <pz> [<rx> <ry> <rz>]]",
+     "/camera ${1:800} ${2:600} ${3:0.5} ${4:0} ${5:0} ${6:0} ${7:0} ${8:0} ${9:0}",
+     "An image of `w × h` pixels seen from the eye at `p` (default the origin), looking along "
+     "the rotated +z axis. `d` is the distance to the screen in screen widths (`0.5` gives "
+     "90°). At most one per scene; without one, `/camera 800 600 0.5`.",
+     false},
+    {CommandId::AmbLight, "/amb_light", Edition::First, CommandGroup::Setting, kNumbers, "/amb_light <i>",
+     "/amb_light ${1:0.2}", "Ambient light of intensity `i ≥ 0`; several add up.", false},
+    {CommandId::DirLight, "/dir_light", Edition::First, CommandGroup::Setting, kNumbers,
+     "/dir_light <i> <x> <y> <z> [angle <r> <n>]", "/dir_light ${1:0.8} ${2:0} ${3:-1} ${4:1}",
+     "A directional light of intensity `i ≥ 0` whose light travels along `(x, y, z)`; it casts "
+     "shadows. `angle r n`: a sun of angular radius `r` degrees with soft shadows from `n × n` "
+     "shadow rays.",
+     false},
+    {CommandId::PointLight, "/point_light", Edition::Third, CommandGroup::Setting, kNumbers,
+     "/point_light <i> <x> <y> <z> [fade <d> <p>] [size <s> <n>]",
+     "/point_light ${1:0.8} ${2:0} ${3:300} ${4:0}",
+     "A light of intensity `i ≥ 0` at `(x, y, z)`, casting shadows. `fade d p`: intensity "
+     "`i · 2 / (1 + (D/d)^p)` at distance `D` (POV-Ray's fade_distance, fade_power). `size s n`: "
+     "soft shadows from a disc of diameter `s`, `n × n` shadow rays.",
+     false},
+    {CommandId::SpotLight, "/spot_light", Edition::Third, CommandGroup::Setting, kNumbers,
+     "/spot_light <i> <x> <y> <z> <dx> <dy> <dz> <radius> <falloff> [tightness <k>] [fade <d> <p>] "
+     "[size <s> <n>]",
+     "/spot_light ${1:0.8} ${2:0} ${3:300} ${4:0} ${5:0} ${6:-1} ${7:0} ${8:20} ${9:30}",
+     "A point light whose light travels along `(dx, dy, dz)` in a cone: full within `radius` "
+     "degrees of the axis, none beyond `falloff`, a smooth edge between (POV-Ray's spotlight). "
+     "Options as for `/point_light`, and `tightness k`: times `cos(θ)^k`.",
+     false},
+    {CommandId::Background, "/background", Edition::First, CommandGroup::Setting, kNumbers,
+     "/background <r> <g> <b>", "/background ${1:0} ${2:0} ${3:0}",
+     "Colour of rays that hit nothing, integers 0..255 (default black). At most one per scene.", false},
+    {CommandId::Material, "/material", Edition::First, CommandGroup::Look, kTargetThenNumbers,
+     "/material <target> <ka> <kd> <ks> <n> [<reflection>]",
+     "/material ${1:target} ${2:1} ${3:1} ${4:0.3} ${5:32}",
+     "Phong coefficients of an object or part (default `1 1 0.3 32`): `ka, kd, ks ≥ 0`, `n > 0`; "
+     "an optional mirror `reflection ≥ 0` (default 0) adds that share of what the surface "
+     "reflects, as POV-Ray's `reflection`. On a robot or human it applies to every part.",
+     false},
+    {CommandId::Sphere, "/sphere", Edition::First, CommandGroup::Creating, kCreate,
+     "/sphere <name> <r> <px> <py> <pz> [<rx> <ry> <rz>]", "/sphere ${1:name} ${2:r} ${3:0} ${4:0} ${5:0}",
+     "A sphere of radius `r > 0` centred at `p`.", false},
+    {CommandId::Cylinder, "/cylinder", Edition::First, CommandGroup::Creating, kCreate,
+     "/cylinder <name> <r> <h> <px> <py> <pz> [<rx> <ry> <rz>]",
+     "/cylinder ${1:name} ${2:r} ${3:h} ${4:0} ${5:0} ${6:0}",
+     "A closed cylinder of radius `r > 0` and height `h > 0` along its local y, centred on `p`.", false},
+    {CommandId::Box, "/box", Edition::First, CommandGroup::Creating, kCreate,
+     "/box <name> <sx> <sy> <sz> <px> <py> <pz> [<rx> <ry> <rz>]",
+     "/box ${1:name} ${2:sx} ${3:sy} ${4:sz} ${5:0} ${6:0} ${7:0}",
+     "A box with sides `sx, sy, sz > 0` along its local axes, centred on `p`.", false},
+    {CommandId::Paint, "/paint", Edition::First, CommandGroup::Look, kTargetThenNumbers,
+     "/paint <target> <r> <g> <b>", "/paint ${1:target} ${2:200} ${3:200} ${4:200}",
+     "Colour of an object, a whole model or one part (`name.head`), integers 0..255. Applied in "
+     "file order.",
+     false},
+    {CommandId::Checker, "/checker", Edition::Third, CommandGroup::Look, kTargetThenNumbers,
+     "/checker <target> <r> <g> <b> <size>", "/checker ${1:target} ${2:40} ${3:40} ${4:40} ${5:100}",
+     "A checker pattern: cells of side `size > 0` in the primitive's own frame alternate between "
+     "the `/paint` colour and this second colour (0..255), as POV-Ray's `checker`. Same targets "
+     "and file order as `/paint`.",
+     false},
+    {CommandId::Robot, "/robot", Edition::First, CommandGroup::Creating, kCreate,
+     "/robot <name> <px> <py> <pz> [<rx> <ry> <rz>]",
+     "/robot ${1:name} ${2:0} ${3:0} ${4:0} ${5:0} ${6:180} ${7:0}",
+     "The robot F-2 (200 tall, stands on local y = −105) with its root at `p`, facing its local "
+     "+z. Parts: body, head (with two eyes), lhand, rhand.",
+     false},
+    {CommandId::Human, "/human", Edition::First, CommandGroup::Creating, kCreate,
+     "/human <name> <px> <py> <pz> [<rx> <ry> <rz>]",
+     "/human ${1:name} ${2:0} ${3:0} ${4:0} ${5:0} ${6:180} ${7:0}",
+     "A human (182 tall, stands on local y = −105) with its root at `p`, facing its local +z. "
+     "Parts: body, head, lhand, rhand.",
+     false},
+    {CommandId::Anim, "/anim", Edition::First, CommandGroup::Motion, kAnim,
+     "/anim <target>  or  /anim <name> <part>", "/anim ${1:target}",
+     "Marks a target as animated (checked, no other effect: a `/key` needs no `/anim`).", true},
+    {CommandId::Key, "/key", Edition::First, CommandGroup::Motion, kKey,
+     "/key <t> <target> [<px> <py> <pz> <rx> <ry> <rz>] [<mode>]",
+     "/key ${1:0} ${2:target} ${3:0} ${4:0} ${5:0} ${6:0} ${7:0} ${8:0}",
+     "Frame `t` is a key of `target`: an object's absolute position and rotation, or a part's "
+     "offset from its pivot and rotation about it. Without the six numbers: the rest state.",
+     true},
+    {CommandId::Interp, "/interp", Edition::First, CommandGroup::Motion, kInterp, "/interp <target> <mode>",
+     "/interp ${1:target} ${2|linear,ease,spline|}",
+     "How the target moves between its keys: `linear` (default), `ease` (smoothstep), `spline` "
+     "(Catmull-Rom through the keys), and in the second edition `ease_in`, `ease_out`, `step`.",
+     true},
+    {CommandId::Fps, "/fps", Edition::First, CommandGroup::Setting, kNumbers, "/fps <n>", "/fps ${1:24}",
+     "Playback frames per second, 1..1000 (default 24).", false},
+    {CommandId::Let, "/let", Edition::Second, CommandGroup::Source, kLet, "/let <var> <number>",
+     "/let ${1:var} ${2:0}", "Defines a variable from the next line on; use it in an expression as `(var)`.",
+     false},
+    {CommandId::Repeat, "/repeat", Edition::Second, CommandGroup::Source, kRepeat,
+     "/repeat <var> <from> <to> [<step>]  …  /end", "/repeat ${1:i} ${2:1} ${3:3}\n$0\n/end",
+     "Reads the lines up to `/end` once for each value of `var` from `from` to `to`.", false},
+    {CommandId::End, "/end", Edition::Second, CommandGroup::Source, kNone, "/end", "/end",
+     "Closes a `/repeat` block.", false},
+    {CommandId::Include, "/include", Edition::Second, CommandGroup::Source, kInclude, "/include <path>",
+     "/include ${1:file.f2}",
+     "Reads another scene file here, as if its lines stood here (relative to this file's "
+     "directory).",
+     false},
+    {CommandId::LookAt, "/look_at", Edition::Second, CommandGroup::Motion, kLookAt,
+     "/look_at <x> <y> <z>  or  /look_at <target>", "/look_at ${1:target}",
+     "At every frame the camera turns to face a fixed point, an object or a part.", false},
+    {CommandId::Attach, "/attach", Edition::Second, CommandGroup::Motion, kAttach, "/attach <name> <target>",
+     "/attach ${1:name} ${2:target}",
+     "The object `name` (or `camera`) rides on `target`: its pose is read in the target's frame.", true},
+}};
+
+constexpr bool inIdOrder() {
+    for (std::size_t i = 0; i < kCommands.size(); ++i) {
+        if (static_cast<std::size_t>(kCommands[i].id) != i) return false;
+    }
+    return true;
+}
+static_assert(inIdOrder(), "kCommands must list the commands in CommandId order");
+
+constexpr std::array<LightOptionSpec, 4> kLightOptions = {{
+    {LightOption::Fade, "fade", 2, "a distance and a power"},
+    {LightOption::Size, "size", 2, "a diameter and the samples per side"},
+    {LightOption::Angle, "angle", 2, "an angular radius and the samples per side"},
+    {LightOption::Tightness, "tightness", 1, "a number"},
+}};
+
+constexpr std::array<Interpolation, 6> kModes = {Interpolation::Linear, Interpolation::Ease,
+                                                 Interpolation::EaseIn, Interpolation::EaseOut,
+                                                 Interpolation::Step,   Interpolation::Spline};
+
+}  // namespace
+
+ArgKind CommandSpec::argumentKind(int index) const {
+    if (args.empty()) return ArgKind::Number;
+    const auto i = static_cast<std::size_t>(index);
+    return i < args.size() ? args[i] : args.back();
+}
+
+int CommandSpec::cameraArgument() const {
+    if (!takesCamera) return -1;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        if (args[i] == ArgKind::Target || args[i] == ArgKind::Object) return static_cast<int>(i);
+    }
+    return -1;
+}
+
+std::span<const CommandSpec> commands() { return kCommands; }
+
+const CommandSpec& command(CommandId id) { return kCommands[static_cast<std::size_t>(id)]; }
+
+const CommandSpec* findCommand(std::string_view name) {
+    for (const CommandSpec& c : kCommands) {
+        if (c.name == name) return &c;
+    }
+    return nullptr;
+}
+
+std::span<const LightOptionSpec> lightOptions() { return kLightOptions; }
+
+std::span<const Interpolation> interpolationModes() { return kModes; }
+
+std::optional<Interpolation> modeFromWord(std::string_view word) {
+    for (Interpolation m : kModes) {
+        if (interpolationName(m) == word) return m;
+    }
+    return std::nullopt;
+}
+
+}  // namespace f2
