@@ -34,6 +34,7 @@
 #include "editor_dock.h"
 #include "help_windows.h"
 #include "image_convert.h"
+#include "include_origin.h"
 #include "io/png_writer.h"
 #include "io/sequence_sink.h"
 #include "io/video_sink.h"
@@ -42,6 +43,7 @@
 #include "problems_dock.h"
 #include "scene_document.h"
 #include "scene_editor.h"
+#include "status_bar_room.h"
 #include "text_capture.h"
 #include "timeline_widget.h"
 #include "view_mode_menu.h"
@@ -93,6 +95,9 @@ MainWindow::MainWindow(QWidget* parent)
     for (QLabel* label : {selectionStatus_, viewStatus_, refineStatus_, playbackAntialiasStatus_,
                           frameStatus_, timeStatus_, fpsStatus_, sizeStatus_})
         statusBar()->addPermanentWidget(label);
+    // A message (a pick, an error) shows whole: the readouts make room for it.
+    new StatusBarRoom(statusBar(), {fpsStatus_, timeStatus_, refineStatus_, playbackAntialiasStatus_,
+                                    sizeStatus_, viewStatus_, selectionStatus_});
 
     frameTimer_.setSingleShot(true);
     frameTimer_.setInterval(0);
@@ -578,9 +583,22 @@ void MainWindow::showCreatingLine() {
             statusBar()->showMessage(tr("%1 is made by line %2%3").arg(target).arg(line).arg(loop));
         return;
     }
-    // Another file (an /include), or text that changed since: name the place, open nothing.
-    const QString place =
-        QStringLiteral("%1:%2").arg(QString::fromStdString(created->loc.file)).arg(created->loc.line);
+    const QString place = QStringLiteral("%1:%2")
+                              .arg(includedFileName(created->loc.file, document_->path()))
+                              .arg(created->loc.line);
+    // Another file: the /include line of this file that made this one.
+    if (const int line = created->loc.file == document_->sourceName()
+                             ? 0
+                             : includingLine(editor()->toPlainText(), document_->sourceName(), created->loc,
+                                             created->instance)) {
+        QTextCursor cursor(editor()->document()->findBlockByNumber(line - 1));
+        cursor.movePosition(QTextCursor::EndOfBlock, QTextCursor::KeepAnchor);
+        editor()->setTextCursor(cursor);
+        editor()->centerCursor();
+        statusBar()->showMessage(tr("%1 made in %2 (included at line %3)").arg(target, place).arg(line));
+        return;
+    }
+    // Text that changed since (or an include no longer there): name the place, select nothing.
     statusBar()->showMessage(created->loc.file == document_->sourceName()
                                  ? tr("%1 was made by line %2 before the latest edits%3")
                                        .arg(target)

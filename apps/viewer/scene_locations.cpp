@@ -13,9 +13,11 @@ SceneLocations SceneLocations::fromIndex(const SymbolIndex& index) {
     // How many objects each line made, by (file, line).
     std::map<std::pair<std::string_view, int>, int> perLine;
     for (const IndexedObject& o : index.objects) ++perLine[{o.command.file, o.command.line}];
-    for (const IndexedObject& o : index.objects)
-        locations.objects_.try_emplace(o.object.name,
-                                       CreatedAt{o.command, perLine[{o.command.file, o.command.line}]});
+    std::map<std::pair<std::string_view, int>, int> before;
+    for (const IndexedObject& o : index.objects) {
+        const std::pair<std::string_view, int> line{o.command.file, o.command.line};
+        locations.objects_.try_emplace(o.object.name, CreatedAt{o.command, perLine[line], before[line]++});
+    }
     return locations;
 }
 

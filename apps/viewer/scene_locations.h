@@ -19,6 +19,7 @@ struct CreatedAt {
     SourceLoc loc;     ///< its first character; `file` as diagnostics name it
     int sameLine = 1;  ///< objects that line created: more than one means a
                        ///< `/repeat` loop (or a file included more than once)
+    int instance = 0;  ///< objects that line created before this one
 };
 
 class SceneLocations {

@@ -4,7 +4,9 @@
 // a pick in an included file selects its /include line, and a large scene opens
 // off the GUI thread.
 #include <QAction>
+#include <QDir>
 #include <QDockWidget>
+#include <QLabel>
 #include <QSignalSpy>
 #include <QStatusBar>
 #include <QTemporaryDir>
@@ -12,6 +14,7 @@
 #include <QTextBlock>
 
 #include "core/render/camera.h"
+#include "editor_dock.h"
 #include "main_window.h"
 #include "playback.h"
 #include "problems_dock.h"
@@ -58,6 +61,7 @@ class StudioTest : public QObject {
     void initTestCase();
     void firstCameraKeyKeepsTheShotsStart();
     void problemsDockKeepsThePictureSize();
+    void pickInAnIncludedFileSelectsItsInclude();
 };
 
 void StudioTest::initTestCase() {
@@ -152,6 +156,57 @@ void StudioTest::problemsDockKeepsThePictureSize() {
     w.diagnosticsDock()->toggleViewAction()->trigger();
     QVERIFY(!w.diagnosticsDock()->isVisible());
     QTRY_COMPARE_WITH_TIMEOUT(w.viewport()->size(), picture, kWaitMs);
+}
+
+void StudioTest::pickInAnIncludedFileSelectsItsInclude() {
+    // A cap from parts/cap.f2 (line 3), included at line 7; a post from a file included twice.
+    QTemporaryDir dir;
+    QVERIFY(QDir(dir.path()).mkpath("parts"));
+    writeFile(dir.filePath("parts/cap.f2"), "# a cap\n\n/sphere cap 1 0 2.5 8\n");
+    writeFile(dir.filePath("parts/post.f2"), "/box post{k} 1 1 1 (k - 3) -1.5 8\n");
+    const QByteArray text =
+        "/camera 96 72 0.6 0 0 -10\n/background 20 30 40\n/amb_light 0.3\n/dir_light 0.8 0.3 -0.5 1\n"
+        "/let k 0\n/include parts/post.f2\n/include parts/cap.f2\n/let k 6\n/include parts/post.f2\n";
+    writeFile(dir.filePath("main.f2"), text);
+    auto window = windowOn(dir.filePath("main.f2"), 0);
+    QVERIFY(window);
+    MainWindow& w = *window;
+    w.setRenderScale(RenderScale::SceneSize);
+    QVERIFY(waitForShownFrame(w, 0));
+    auto clickAt = [&](Vec3 world) { QVERIFY(clickWorldPoint(w, world)); };
+
+    // The cap: its /include line is selected, the status bar names the file and line.
+    clickAt({0, 2.5f, 8});
+    QVERIFY(w.selection());
+    QCOMPARE(w.selection()->target(), QStringLiteral("cap"));
+    QCOMPARE(w.editor()->textCursor().selectedText(), QStringLiteral("/include parts/cap.f2"));
+    QCOMPARE(w.editor()->textCursor().blockNumber(), 6);
+    const QString message = w.statusBar()->currentMessage();
+    QCOMPARE(message, QStringLiteral("cap made in parts/cap.f2:3 (included at line 7)"));
+
+    // Shown whole: the readouts left of it make room, and it is the tooltip too.
+    QCOMPARE(w.statusBar()->toolTip(), message);
+    QCoreApplication::processEvents();
+    int readouts = w.statusBar()->width();
+    for (QLabel* label : w.statusBar()->findChildren<QLabel*>(Qt::FindDirectChildrenOnly))
+        if (label->isVisible()) readouts = std::min(readouts, label->x());
+    if (const QByteArray shot = qgetenv("F2_STUDIO_SCREENSHOT"); !shot.isEmpty())
+        w.grab().save(QString::fromLocal8Bit(shot) + "-pick.png");
+    QVERIFY2(w.statusBar()->fontMetrics().horizontalAdvance(message) < readouts,
+             qPrintable(QStringLiteral("message %1 px, readouts from x = %2")
+                            .arg(w.statusBar()->fontMetrics().horizontalAdvance(message))
+                            .arg(readouts)));
+
+    // The second of two includes of one file: the post it made selects that line.
+    clickAt({3, -1.5f, 8});
+    QVERIFY(w.selection());
+    QCOMPARE(w.selection()->target(), QStringLiteral("post6"));
+    QCOMPARE(w.editor()->textCursor().blockNumber(), 8);
+    QCOMPARE(w.statusBar()->currentMessage(),
+             QStringLiteral("post6 made in parts/post.f2:1 (included at line 9)"));
+    clickAt({-3, -1.5f, 8});
+    QCOMPARE(w.selection()->target(), QStringLiteral("post0"));
+    QCOMPARE(w.editor()->textCursor().blockNumber(), 5);
 }
 
 QTEST_MAIN(StudioTest)

@@ -7,6 +7,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "core/render/camera.h"
 #include "core/render/renderer.h"
 #include "image_convert.h"
 #include "main_window.h"
@@ -71,6 +72,17 @@ QString problemsText(MainWindow& w) {
     QStringList lines;
     for (int i = 0; i < w.problemsList()->count(); ++i) lines << w.problemsList()->item(i)->text();
     return lines.join('\n');
+}
+
+bool clickWorldPoint(MainWindow& w, Vec3 world) {
+    const CameraDesc& desc = w.document()->scene()->camera;
+    float px = 0, py = 0;
+    if (!Camera::fromDesc(desc).project(world, px, py)) return false;
+    const QRectF onScreen = w.viewport()->imageRect();
+    QTest::mouseClick(w.viewport(), Qt::LeftButton, {},
+                      QPoint(int(onScreen.left() + px * onScreen.width() / desc.width),
+                             int(onScreen.top() + py * onScreen.height() / desc.height)));
+    return true;
 }
 
 void expectViewportMatchesCore(MainWindow& w, double t) {

@@ -60,6 +60,11 @@ bool waitForShownFrame(MainWindow& w, double t);
 /// The Problems list's lines, one per line.
 QString problemsText(MainWindow& w);
 
+/// Clicks the picture where world point `world` is drawn by the scene's
+/// /camera (the window at *Scene Size*, frame 0's camera: a camera without
+/// keys). False if the point is behind the camera.
+bool clickWorldPoint(MainWindow& w, Vec3 world);
+
 /// The picture on screen is the core's at the same camera, size and samples.
 void expectViewportMatchesCore(MainWindow& w, double t);
 
