@@ -5,8 +5,10 @@
 #include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
+#include <QTextDocument>
 #include <QToolButton>
 #include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
 
 #include "scene_editor.h"
 
@@ -65,16 +67,65 @@ EditorDock::EditorDock(QWidget* parent) : QDockWidget(tr("Scene"), parent) {
     connect(editor_, &QPlainTextEdit::textChanged, this, [this] {
         if (!loading_) settleTimer_.start();
     });
-    connect(editor_->document(), &QTextDocument::modificationChanged, this, &EditorDock::modificationChanged);
+    // The editor's own signal: it follows the document when a loaded one replaces it.
+    connect(editor_, &QPlainTextEdit::modificationChanged, this, &EditorDock::modificationChanged);
+}
+
+EditorDock::~EditorDock() {
+    for (QFutureWatcher<QTextDocument*>* layout : layouts_) {
+        layout->waitForFinished();
+        delete layout->result();
+    }
 }
 
 void EditorDock::setSceneText(const QString& text) {
     settleTimer_.stop();
+    const quint64 generation = ++generation_;
+    const bool wasLoading = isLoading();
+    loadsPending_ = 0;
+    if (text.size() < kBackgroundChars) {
+        loading_ = true;
+        if (editor_->toPlainText() != text) editor_->setPlainText(text);
+        loading_ = false;
+        editor_->setReadOnly(false);
+        editor_->document()->clearUndoRedoStacks();
+        editor_->document()->setModified(false);
+        if (wasLoading) emit loadingChanged(false);
+        emit textShown();
+        return;
+    }
+    // Until the layout arrives: an empty editor that takes no typing.
     loading_ = true;
-    if (editor_->toPlainText() != text) editor_->setPlainText(text);
+    editor_->adoptDocument(SceneEditor::makeDocument(QString(), editor_->font(), thread()));
     loading_ = false;
-    editor_->document()->clearUndoRedoStacks();
-    editor_->document()->setModified(false);
+    editor_->setReadOnly(true);
+    loadsPending_ = 1;
+    auto* layout = new QFutureWatcher<QTextDocument*>(this);
+    layouts_ << layout;
+    connect(layout, &QFutureWatcher<QTextDocument*>::finished, this, [this, layout, generation] {
+        layouts_.removeOne(layout);
+        layout->deleteLater();
+        showDocument(layout->result(), generation);
+    });
+    layout->setFuture(QtConcurrent::run(&layoutPool_, [text, font = editor_->font(), gui = thread()] {
+        return SceneEditor::makeDocument(text, font, gui);
+    }));
+    if (!wasLoading) emit loadingChanged(true);
+}
+
+void EditorDock::showDocument(QTextDocument* document, quint64 generation) {
+    if (generation != generation_) {
+        delete document;  // another text came meanwhile
+        return;
+    }
+    loading_ = true;
+    editor_->adoptDocument(document);
+    loading_ = false;
+    editor_->setReadOnly(false);
+    loadsPending_ = 0;
+    emit modificationChanged(false);
+    emit loadingChanged(false);
+    emit textShown();
 }
 
 bool EditorDock::isModified() const { return editor_->document()->isModified(); }

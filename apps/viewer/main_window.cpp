@@ -38,6 +38,7 @@
 #include "io/png_writer.h"
 #include "io/sequence_sink.h"
 #include "io/video_sink.h"
+#include "opening_indicator.h"
 #include "orbit_camera.h"
 #include "playback.h"
 #include "problems_dock.h"
@@ -96,6 +97,7 @@ MainWindow::MainWindow(QWidget* parent)
                           frameStatus_, timeStatus_, fpsStatus_, sizeStatus_})
         statusBar()->addPermanentWidget(label);
     // A message (a pick, an error) shows whole: the readouts make room for it.
+    opening_ = new OpeningIndicator(statusBar(), document_, editorDock_);
     new StatusBarRoom(statusBar(), {fpsStatus_, timeStatus_, refineStatus_, playbackAntialiasStatus_,
                                     sizeStatus_, viewStatus_, selectionStatus_});
 
@@ -320,6 +322,13 @@ bool MainWindow::openDefaultScene() {
 }
 
 void MainWindow::offerAutosave() {
+    disconnect(deferredAutosaveOffer_);
+    if (editorDock_->isLoading()) {
+        // Restored edits go into the file's text, so they wait for it.
+        deferredAutosaveOffer_ = connect(editorDock_, &EditorDock::textShown, this,
+                                         &MainWindow::offerAutosave, Qt::SingleShotConnection);
+        return;
+    }
     const std::optional<QString> copy = Autosave::read(document_->path());
     if (!copy) return;
     if (*copy == document_->text() ||
@@ -355,6 +364,7 @@ bool MainWindow::saveSceneAs() {
 }
 
 bool MainWindow::writeScene(const QString& path) {
+    if (!textIsReady()) return false;
     const QString text = editor()->toPlainText();
     QSaveFile file(path);  // a temporary file renamed over the old one
     if (!file.open(QIODevice::WriteOnly) || file.write(text.toUtf8()) < 0 || !file.commit()) {
@@ -371,6 +381,15 @@ bool MainWindow::writeScene(const QString& path) {
     updateTitle();
     statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
     return true;
+}
+
+bool MainWindow::isOpening() const { return opening_->isBusy(); }
+
+bool MainWindow::textIsReady() {
+    if (!editorDock_->isLoading()) return true;
+    statusBar()->showMessage(
+        tr("%1 is still opening: wait until its text is in the editor.").arg(document_->displayName()), 5000);
+    return false;
 }
 
 bool MainWindow::maybeSave() {
@@ -643,12 +662,14 @@ void MainWindow::updateSelectionView() {
 }
 
 void MainWindow::setCameraFromView() {
+    if (!textIsReady()) return;
     const auto scene = document_->scene();
     const Pose pose = viewport_->orbit() ? viewport_->orbit()->pose() : scene->camera.pose;
     applyEdit(editor(), cameraEdit(editor()->toPlainText(), scene->camera, pose));
 }
 
 bool MainWindow::keySelectionHere() {
+    if (!textIsReady()) return false;
     const auto scene = document_->scene();
     const auto object = selection_ ? findObject(*scene, *selection_) : std::nullopt;
     if (!object) {
@@ -668,6 +689,7 @@ bool MainWindow::keySelectionHere() {
 }
 
 void MainWindow::keyCameraHere() {
+    if (!textIsReady()) return;
     const auto scene = document_->scene();
     const int frame = playback_->frame();
     // What the user sees: the look-around if there is one, else the scene camera.

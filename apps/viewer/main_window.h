@@ -30,6 +30,7 @@ class FrameSink;
 namespace f2::viewer {
 
 class EditorDock;
+class OpeningIndicator;
 class Playback;
 class SceneEditor;
 class SceneDocument;
@@ -87,6 +88,10 @@ class MainWindow : public QMainWindow {
     QListWidget* problemsList() const;
     ProblemsDock* diagnosticsDock() const { return diagnosticsDock_; }
     EditorDock* editorDock() const { return editorDock_; }
+    /// A large file is still opening (parsing, or its text being laid out):
+    /// the text cannot be saved or edited by the studio's actions yet.
+    bool isOpening() const;
+    OpeningIndicator* openingIndicator() const { return opening_; }
     SceneEditor* editor() const;
     /// The folder the save and export dialogs start in: the scene's (the
     /// working folder for an untitled scene).
@@ -165,6 +170,8 @@ class MainWindow : public QMainWindow {
     void onFileChangedOnDisk();
     /// True when there are no unsaved edits or the user saved or discarded them.
     bool maybeSave();
+    /// False, with a status message, while the file's text is not in the editor yet.
+    bool textIsReady();
     QMessageBox::StandardButton ask(Question question, const QString& text);
     void updateTitle();
     void onFrameReady(const QImage& image, const FrameInfo& info);
@@ -201,6 +208,8 @@ class MainWindow : public QMainWindow {
     TimelineWidget* timeline_ = nullptr;
     ProblemsDock* diagnosticsDock_ = nullptr;
     EditorDock* editorDock_ = nullptr;
+    OpeningIndicator* opening_ = nullptr;
+    QMetaObject::Connection deferredAutosaveOffer_;  // waits for a large file's text
     Asker asker_;
     QMenu* recentMenu_ = nullptr;
     QLabel* frameStatus_ = nullptr;

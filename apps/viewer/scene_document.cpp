@@ -33,7 +33,8 @@ SceneDocument::SceneDocument(QObject* parent) : QObject(parent) {
         reloadTimer_.start();
     });
     connect(&watcher_, &QFileSystemWatcher::directoryChanged, this, &SceneDocument::onDirectoryChanged);
-    connect(&parseWatcher_, &QFutureWatcher<Parsed>::finished, this, &SceneDocument::onParsed);
+    connect(&parseWatcher_, &QFutureWatcher<std::shared_ptr<Parsed>>::finished, this,
+            &SceneDocument::onParsed);
 }
 
 SceneDocument::Parsed SceneDocument::parse(std::string_view text, const std::string& name) {
@@ -121,8 +122,25 @@ bool SceneDocument::reload() {
     diskText_ = *disk;
     text_ = *disk;
     emit textLoaded(text_);
-    apply(parse(text_.toStdString(), sourceName()), newDocument);
-    return !hasErrors_;
+    if (QFileInfo(path_).size() < kBackgroundBytes) {
+        apply(parse(text_.toStdString(), sourceName()), newDocument);
+        return !hasErrors_;
+    }
+    if (newDocument) {
+        // Not the previous file's scene beside this file's text while it parses.
+        scene_ = std::make_shared<const SceneDesc>();
+        locations_ = std::make_shared<const SceneLocations>();
+        emit sceneChanged(true);
+    }
+    startParse();
+    setOpening(true);
+    return true;
+}
+
+void SceneDocument::setOpening(bool opening) {
+    if (opening == opening_) return;
+    opening_ = opening;
+    emit openingChanged(opening);
 }
 
 void SceneDocument::setText(const QString& text) {
@@ -147,12 +165,13 @@ void SceneDocument::startParse() {
     parsing_ = true;
     textWaiting_ = false;
     parseDocument_ = documentId_;
-    parseWatcher_.setFuture(
-        QtConcurrent::run([utf8 = text_.toStdString(), name = sourceName()] { return parse(utf8, name); }));
+    parseWatcher_.setFuture(QtConcurrent::run(&parsePool_, [utf8 = text_.toStdString(), name = sourceName()] {
+        return std::make_shared<Parsed>(parse(utf8, name));
+    }));
 }
 
 void SceneDocument::onParsed() {
-    Parsed result = parseWatcher_.result();
+    Parsed result = std::move(*parseWatcher_.result());
     const bool current = parseDocument_ == documentId_;
     parsing_ = false;
     if (textWaiting_ && current) {
@@ -202,6 +221,7 @@ void SceneDocument::apply(Parsed parsed, bool newDocument) {
         emit sceneChanged(true);
     }
     if (diagnosticsDiffer) emit diagnosticsChanged();
+    setOpening(false);  // whatever was opening, this is the current text's scene
 }
 
 void SceneDocument::setSources(const std::vector<std::string>& files) {

@@ -12,6 +12,7 @@
 #include <QSet>
 #include <QString>
 #include <QStringList>
+#include <QThreadPool>
 #include <QTimer>
 #include <memory>
 #include <optional>
@@ -35,10 +36,14 @@ class SceneDocument : public QObject {
     void loadEmpty();
     /// Opens and watches `path` and parses its text. If it cannot be read or
     /// has errors, the stage is empty and the diagnostics say why. Returns
-    /// whether it parsed.
+    /// whether it parsed. A file of kBackgroundBytes or more is parsed on the
+    /// worker instead (seconds for a 20 MB file): the stage is empty
+    /// meanwhile, isOpening() is true, load returns true and sceneChanged or
+    /// diagnosticsChanged follows.
     bool load(const QString& path);
     /// Reads the current file again and parses it (the default scene's text
-    /// for an untitled document).
+    /// for an untitled document); a large file as load() does, keeping the
+    /// current scene until the new one is ready.
     bool reload();
     /// The editor's text changed: parse it on the worker (the file is not read).
     void setText(const QString& text);
@@ -74,10 +79,15 @@ class SceneDocument : public QObject {
     std::string sourceName() const;
     /// A parse of edited text is running or waiting.
     bool isParsing() const { return parsing_; }
+    /// A large file read by load() or reload() is being parsed.
+    bool isOpening() const { return opening_; }
 
     /// How long to wait after a change on disk before reading: editors often
     /// write a file in several steps.
     static constexpr int kReloadDelayMs = 120;
+    /// Files from this size on are parsed off the GUI thread (a 1 MB scene
+    /// parses in about 0.1 s; smaller ones at once).
+    static inline qint64 kBackgroundBytes = 1'000'000;
 
    signals:
     /// A new good scene replaced the current one. `newDocument` is true when it
@@ -91,6 +101,8 @@ class SceneDocument : public QObject {
     /// While there are unsaved edits, the file changed on disk to something
     /// other than what was last read or saved. The owner asks whether to reload().
     void fileChangedOnDisk();
+    /// isOpening() changed.
+    void openingChanged(bool opening);
 
    private:
     /// A parse and the object locations its symbol index gave.
@@ -108,6 +120,7 @@ class SceneDocument : public QObject {
     };
 
     void startParse();
+    void setOpening(bool opening);
     /// Parses the current text again (an included file changed).
     void reparse();
     void onParsed();
@@ -136,9 +149,14 @@ class SceneDocument : public QObject {
     std::vector<Diagnostic> diagnosticList_;
     bool hasErrors_ = false;
     bool holdsUnsavedEdits_ = false;
+    bool opening_ = false;  // the parse in flight is of a file just read
 
     // Parsing edits off the GUI thread: one parse in flight, the newest text waiting.
-    QFutureWatcher<Parsed> parseWatcher_;
+    // Not Qt's global pool: the GUI thread's own painting (QPainter scales
+    // images there) would wait behind a parse of seconds.
+    QThreadPool parsePool_;
+    // A pointer: QFuture hands out copies of its result, and a large scene's copy takes seconds.
+    QFutureWatcher<std::shared_ptr<Parsed>> parseWatcher_;
     bool parsing_ = false;
     bool textWaiting_ = false;
     quint64 parseDocument_ = 0;  // documentId_ of the parse in flight

@@ -3,7 +3,9 @@
 #include <QFontDatabase>
 #include <QHelpEvent>
 #include <QPainter>
+#include <QPlainTextDocumentLayout>
 #include <QTextBlock>
+#include <QThread>
 #include <QToolTip>
 
 #include "scene_highlighter.h"
@@ -53,6 +55,33 @@ SceneEditor::SceneEditor(QWidget* parent) : QPlainTextEdit(parent) {
             [this] { setViewportMargins(lineNumberAreaWidth(), 0, 0, 0); });
     connect(this, &QPlainTextEdit::updateRequest, this, &SceneEditor::updateLineNumberArea);
     connect(this, &QPlainTextEdit::cursorPositionChanged, this, &SceneEditor::updateSelections);
+    setViewportMargins(lineNumberAreaWidth(), 0, 0, 0);
+    updateSelections();
+}
+
+QTextDocument* SceneEditor::makeDocument(const QString& text, const QFont& font, QThread* owner) {
+    auto* document = new QTextDocument;
+    document->setDefaultFont(font);
+    document->setDocumentLayout(new QPlainTextDocumentLayout(document));
+    // Attached before the text goes in, so each line is coloured as it is
+    // added, in this thread (attached later, it would colour all of them at once
+    // in the GUI thread).
+    new SceneHighlighter(document);
+    document->setUndoRedoEnabled(false);
+    document->setPlainText(text);
+    document->setUndoRedoEnabled(true);
+    document->setModified(false);
+    document->moveToThread(owner);  // its layout and highlighter are children: they go with it
+    return document;
+}
+
+void SceneEditor::adoptDocument(QTextDocument* document) {
+    QTextDocument* previous = this->document();
+    document->setParent(this);
+    setDocument(document);
+    highlighter_ = document->findChild<SceneHighlighter*>();
+    setTabStopDistance(fontMetrics().horizontalAdvance(QLatin1Char(' ')) * 4);
+    if (previous && previous != document && previous->parent() == this) delete previous;
     setViewportMargins(lineNumberAreaWidth(), 0, 0, 0);
     updateSelections();
 }

@@ -6,6 +6,8 @@
 #include <QString>
 #include <vector>
 
+class QThread;
+
 namespace f2::viewer {
 
 class SceneHighlighter;
@@ -44,6 +46,14 @@ class SceneEditor : public QPlainTextEdit {
     static constexpr int kPreferredWidth = 440;
 
     SceneHighlighter* highlighter() const { return highlighter_; }
+
+    /// A document of `text` as this editor shows it: laid out for plain text,
+    /// in `font`, highlighted. Runs in any thread (a large file is laid out
+    /// off the GUI thread) and hands the document to `owner`, the GUI thread.
+    static QTextDocument* makeDocument(const QString& text, const QFont& font, QThread* owner);
+    /// Shows `document` (from makeDocument) instead of the current one, which
+    /// is deleted. Its undo history is empty and it is not modified.
+    void adoptDocument(QTextDocument* document);
     int lineNumberAreaWidth() const;
 
    protected:

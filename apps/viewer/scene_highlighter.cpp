@@ -1,9 +1,9 @@
 #include "scene_highlighter.h"
 
-#include <QRegularExpression>
 #include <QStringView>
 
 #include "core/parse/language.h"
+#include "core/parse/number.h"
 
 namespace f2::viewer {
 
@@ -11,9 +11,11 @@ namespace {
 
 bool isMode(QStringView word) { return modeFromWord(word.toString().toStdString()).has_value(); }
 
+// The parser's own rule (a decimal number, even one too large for a float);
+// it also lets documents be highlighted in several threads at once.
 bool isNumber(QStringView word) {
-    static const QRegularExpression number(QStringLiteral(R"(^[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$)"));
-    return number.match(word.toString()).hasMatch();
+    const NumberStatus status = parseNumber(word.toString().toStdString()).status;
+    return status == NumberStatus::Ok || status == NumberStatus::OutOfRange;
 }
 
 bool isSpace(QChar c) { return c == u' ' || c == u'\t' || c == u'\r'; }

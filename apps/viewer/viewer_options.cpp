@@ -8,13 +8,16 @@
 #include <QSaveFile>
 #include <QTimer>
 #include <QWindow>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
 
 #include "io/option_value.h"
 #include "main_window.h"
+#include "opening_indicator.h"
 #include "playback.h"
+#include "scene_document.h"
 #include "viewport_widget.h"
 
 namespace f2::viewer {
@@ -43,6 +46,24 @@ constexpr double kMaxQuitAfterSeconds = 86400;
 constexpr double kMinQuitAfterSeconds = 0.001;
 /// The smallest picture area --size accepts, a side.
 constexpr int kMinViewportSide = 16;
+/// Prints on quitting the longest time the GUI thread did not come back to its
+/// event loop: a timer that should tick every few milliseconds measures its gaps.
+void watchGuiPauses(MainWindow& window) {
+    auto* ticker = new QTimer(&window);
+    ticker->setInterval(5);
+    auto since = std::make_shared<QElapsedTimer>();
+    auto longestNs = std::make_shared<qint64>(0);
+    since->start();
+    QObject::connect(ticker, &QTimer::timeout, &window, [since, longestNs] {
+        *longestNs = std::max(*longestNs, since->nsecsElapsed());
+        since->restart();
+    });
+    ticker->start();
+    QObject::connect(qApp, &QCoreApplication::aboutToQuit, &window, [longestNs] {
+        std::fprintf(stderr, "f2-viewer: the GUI thread's longest pause was %.0f ms\n",
+                     double(*longestNs) * 1e-6);
+    });
+}
 }  // namespace
 
 ViewerOptions parseViewerOptions(int& argc, char** argv) {
@@ -55,7 +76,8 @@ ViewerOptions parseViewerOptions(int& argc, char** argv) {
     QCommandLineOption scale("scale", "Render scale: 25, 50, 100 or scene.", "scale");
     QCommandLineOption size("size", "Picture area size WIDTHxHEIGHT (default 800x600).", "size");
     QCommandLineOption quitAfter("quit-after", "Quit after <seconds> (for scripts).", "seconds");
-    QCommandLineOption stats("stats", "Print the achieved frames per second on exit.");
+    QCommandLineOption stats(
+        "stats", "Print the achieved frames per second and the GUI thread's longest pause on exit.");
     QCommandLineOption screenshot("screenshot",
                                   "Save the window as PNG <file> once the picture is complete (rendered at "
                                   "the window's size and, when paused, refined), then quit.",
@@ -115,13 +137,22 @@ ViewerOptions parseViewerOptions(int& argc, char** argv) {
 void applyViewerOptions(const ViewerOptions& options, MainWindow& window) {
     if (options.scale) window.setRenderScale(RenderScale(*options.scale));
     if (options.viewportSize.isValid()) window.resizeForViewport(options.viewportSize);
+    // --stats: the GUI thread's longest pause from here (opening the file) to quitting.
+    if (options.stats) watchGuiPauses(window);
     if (!options.scene.isEmpty())
         window.openFile(options.scene);
     else
         window.offerAutosave();
     if (options.frame) {
-        window.playback()->pause();
-        window.playback()->seek(*options.frame);
+        auto startAt = [&window, frame = *options.frame] {
+            window.playback()->pause();
+            window.playback()->seek(frame);
+        };
+        startAt();
+        // A large file's scene arrives later and starts at frame 0: seek again then.
+        if (window.document()->isOpening())
+            QObject::connect(window.document(), &SceneDocument::openingChanged, &window, startAt,
+                             Qt::SingleShotConnection);
     } else {
         window.playback()->play();
     }
@@ -149,22 +180,24 @@ void applyViewerOptions(const ViewerOptions& options, MainWindow& window) {
         });
     }
     if (!options.screenshot.isEmpty()) {
-        // Wait for a real condition, not a delay: the window is on screen and
-        // the frame just shown is complete. Checked after every frame (this
-        // connection runs after the window's own, which has shown it).
-        QObject::connect(window.renderController(), &RenderController::frameReady, &window,
-                         [&window, file = options.screenshot] {
-                             if (!window.isPictureComplete()) return;
-                             // Let the window paint that frame first, then grab it.
-                             QTimer::singleShot(0, &window, [&window, file] {
-                                 QSaveFile out(file);
-                                 const bool ok = out.open(QIODevice::WriteOnly) &&
-                                                 window.grab().save(&out, "PNG") && out.commit();
-                                 if (!ok)
-                                     std::fprintf(stderr, "f2-viewer: cannot write %s\n", qPrintable(file));
-                                 QCoreApplication::exit(ok ? 0 : 1);
-                             });
-                         });
+        // Wait for a real condition, not a delay: the window is on screen, the
+        // frame just shown is complete and a large file has finished opening.
+        // Checked after every frame (this connection runs after the window's
+        // own, which has shown it) and when the file's text is in the editor.
+        auto shootWhenReady = [&window, file = options.screenshot, taken = std::make_shared<bool>(false)] {
+            if (*taken || !window.isPictureComplete() || window.isOpening()) return;
+            *taken = true;
+            // Let the window paint that frame first, then grab it.
+            QTimer::singleShot(0, &window, [&window, file] {
+                QSaveFile out(file);
+                const bool ok =
+                    out.open(QIODevice::WriteOnly) && window.grab().save(&out, "PNG") && out.commit();
+                if (!ok) std::fprintf(stderr, "f2-viewer: cannot write %s\n", qPrintable(file));
+                QCoreApplication::exit(ok ? 0 : 1);
+            });
+        };
+        QObject::connect(window.renderController(), &RenderController::frameReady, &window, shootWhenReady);
+        QObject::connect(window.openingIndicator(), &OpeningIndicator::opened, &window, shootWhenReady);
     }
     if (options.quitAfterSeconds > 0)
         QTimer::singleShot(int(std::lround(options.quitAfterSeconds * 1000)), qApp, &QCoreApplication::quit);

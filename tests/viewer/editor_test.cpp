@@ -8,9 +8,11 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QSignalSpy>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTextBlock>
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -22,6 +24,7 @@
 #include "editor_dock.h"
 #include "image_convert.h"
 #include "main_window.h"
+#include "opening_indicator.h"
 #include "playback.h"
 #include "render_controller.h"
 #include "scene_document.h"
@@ -50,6 +53,26 @@ struct ScriptedAnswers {
             asked.push_back(q);
             return answer;
         };
+    }
+};
+
+bool hasObject(const SceneDesc& scene, const std::string& name) {
+    return std::any_of(scene.objects.begin(), scene.objects.end(),
+                       [&](const auto& object) { return object.name == name; });
+}
+
+/// While alive, every file and text counts as large: it opens in the
+/// background (the thresholds are sizes, so the test needs no 20 MB file).
+struct EverythingOpensInTheBackground {
+    qint64 bytes = SceneDocument::kBackgroundBytes;
+    qsizetype chars = EditorDock::kBackgroundChars;
+    EverythingOpensInTheBackground() {
+        SceneDocument::kBackgroundBytes = 0;
+        EditorDock::kBackgroundChars = 0;
+    }
+    ~EverythingOpensInTheBackground() {
+        SceneDocument::kBackgroundBytes = bytes;
+        EditorDock::kBackgroundChars = chars;
     }
 };
 
@@ -85,6 +108,8 @@ class EditorTest : public QObject {
     void commentFindAndGoToLine();
     void missingOrBrokenFileShowsItself();
     void largeSceneTypesSmoothly();
+    void largeFileOpensInTheBackground();
+    void newerFileWinsOverOneStillOpening();
     void captureWritesLinesInOneUndoStep();
     void captureLinesGoNextToTheirTarget();
     void keyCameraHereWritesTheView();
@@ -451,6 +476,111 @@ void EditorTest::largeSceneTypesSmoothly() {
         "10,000-line scene: parse %.1f ms (worker thread), open %.1f ms, typing %.2f ms per key "
         "(slowest %.2f ms) with the parse off the GUI thread",
         parseMs, openMs, perKeyMs, slowestMs);
+}
+
+void EditorTest::largeFileOpensInTheBackground() {
+    QTemporaryDir dir;
+    const QString path = smallSceneFile(dir);
+    // Unsaved edits from a crash: the offer to restore them must wait for the
+    // file's text, or the restored text would go into the empty placeholder.
+    const QString edited = QString::fromUtf8(kSmallScene) + "/fps 30\n";
+    Autosave::write(path, edited);
+    EverythingOpensInTheBackground large;
+
+    ScriptedAnswers answers;
+    answers.answer = QMessageBox::Yes;
+    MainWindow w;
+    w.setAsker(answers.asker());
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(w.openFile(path));
+
+    // openFile returned before the file was parsed and laid out.
+    QVERIFY(w.isOpening());
+    QVERIFY(w.document()->isOpening());
+    QVERIFY(w.editorDock()->isLoading());
+    QVERIFY(w.openingIndicator()->text().startsWith("Opening scene.f2 ("));
+    QVERIFY(w.document()->scene()->objects.empty());  // not the previous scene beside this text
+    QVERIFY(w.editor()->isReadOnly());
+    QCOMPARE(w.editor()->toPlainText(), QString());
+    QVERIFY(answers.asked.empty());
+    // What would write the placeholder's empty text over the file is refused.
+    QVERIFY(!w.saveScene());
+    QVERIFY(!w.keySelectionHere());
+    w.setCameraFromView();
+    QCOMPARE(w.editor()->toPlainText(), QString());
+    QCOMPARE(readFile(path), QByteArray(kSmallScene));
+
+    QTRY_VERIFY_WITH_TIMEOUT(!w.isOpening(), kWaitMs);
+    QCOMPARE(w.openingIndicator()->text(), QString());
+    QVERIFY(w.statusBar()->currentMessage().startsWith("Opened scene.f2 in "));
+    QVERIFY(!w.editor()->isReadOnly());
+    // The offer came once the text was there; the restored edits are one undo step on it.
+    QCOMPARE(answers.asked, std::vector<Question>{Question::RestoreAutosave});
+    QCOMPARE(w.editor()->toPlainText(), edited);
+    QVERIFY(w.isWindowModified());
+    w.editor()->undo();
+    QCOMPARE(w.editor()->toPlainText(), QString::fromUtf8(kSmallScene));
+    QVERIFY(!w.editor()->document()->isUndoAvailable());
+    QVERIFY(!w.editorDock()->isModified());
+
+    // Laid out on the worker, coloured as the editor colours what it shows.
+    const QTextBlock first = w.editor()->document()->firstBlock();
+    SceneHighlighter* highlighter = w.editor()->highlighter();
+    QVERIFY(highlighter && highlighter->document() == w.editor()->document());
+    QCOMPARE(formatAt(first, 0).foreground(),
+             highlighter->format(SceneHighlighter::Kind::Command).foreground());
+    QCOMPARE(formatAt(first, 8).foreground(),
+             highlighter->format(SceneHighlighter::Kind::Number).foreground());
+
+    // The scene is the file's, and the picture is the core's.
+    QTRY_VERIFY_WITH_TIMEOUT(!w.document()->isParsing(), kWaitMs);
+    QVERIFY(hasObject(*w.document()->scene(), "ball"));
+    w.playback()->pause();
+    w.playback()->seek(0);
+    QVERIFY(waitForShownFrame(w, 0));
+    expectViewportMatchesCore(w, 0);
+
+    // Typing in the loaded document is parsed as before.
+    w.editor()->moveCursor(QTextCursor::End);
+    QTest::keyClicks(w.editor(), "/fps 12");
+    QTRY_COMPARE_WITH_TIMEOUT(w.document()->scene()->fps, 12, kWaitMs);
+}
+
+void EditorTest::newerFileWinsOverOneStillOpening() {
+    QTemporaryDir dir;
+    const QString first = dir.filePath("first.f2");
+    const QString second = dir.filePath("second.f2");
+    const QByteArray secondText = QByteArray(kSmallScene).replace("ball", "other");
+    writeFile(first, kSmallScene);
+    writeFile(second, secondText);
+    EverythingOpensInTheBackground large;
+
+    MainWindow w;
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(w.openFile(first));
+    QVERIFY(w.openFile(second));  // at once: the first file is still on the workers
+    QTRY_VERIFY_WITH_TIMEOUT(
+        !w.isOpening() && !w.editorDock()->hasLayoutsInFlight() && !w.document()->isParsing(), kWaitMs);
+    QCOMPARE(w.editor()->toPlainText(), QString::fromUtf8(secondText));
+    QVERIFY(hasObject(*w.document()->scene(), "other"));
+    QVERIFY(!hasObject(*w.document()->scene(), "ball"));
+    QVERIFY(w.windowTitle().startsWith("second.f2"));
+    QVERIFY(!w.isWindowModified());
+
+    // A small file after a large one still opening: shown at once, and it stays.
+    QVERIFY(w.openFile(first));
+    SceneDocument::kBackgroundBytes = 1'000'000;
+    EditorDock::kBackgroundChars = 1'000'000;
+    QVERIFY(w.openFile(second));
+    QVERIFY(!w.editorDock()->isLoading());
+    QCOMPARE(w.editor()->toPlainText(), QString::fromUtf8(secondText));
+    QTRY_VERIFY_WITH_TIMEOUT(
+        !w.isOpening() && !w.editorDock()->hasLayoutsInFlight() && !w.document()->isParsing(), kWaitMs);
+    QCOMPARE(w.editor()->toPlainText(), QString::fromUtf8(secondText));
+    QVERIFY(hasObject(*w.document()->scene(), "other"));
+    QVERIFY(!w.editor()->isReadOnly());
 }
 
 void EditorTest::captureWritesLinesInOneUndoStep() {
