@@ -9,9 +9,9 @@
 #   scripts/sanitize.sh                    (asan tsan)
 #
 # Environment:
-#   F2_SANITIZE_EXCLUDE  ctest -E regex of tests to leave out (default: none;
-#                        e.g. 'MillionObjects' to drop the slowest test
-#                        when time is short)
+#   F2_SANITIZE_EXCLUDE  ctest -E regex of tests to leave out, instead of the
+#                        test preset's own `filter` (CMakePresets.json: asan
+#                        and tsan leave out what measures speed or memory)
 #   F2_SANITIZE_JOBS     parallel build and test jobs (default 2)
 set -uo pipefail
 cd "$(dirname "$0")/.."
