@@ -486,8 +486,8 @@ void MainWindow::onDiagnosticsChanged() {
     for (const Diagnostic& d : list)
         // Problems in an included file are listed but not underlined here.
         if (d.loc.file == ownFile)
-            inEditor.push_back(
-                {d.loc.line, d.loc.column, QString::fromStdString(d.message), d.severity == Severity::Error});
+            inEditor.push_back({d.loc.line, d.loc.column, QString::fromStdString(d.message),
+                                d.severity == Severity::Error, d.length});
     editor()->setProblems(std::move(inEditor));
     diagnosticsDock_->setProblems(list, document_->diagnostics());
     if (document_->hasErrors())

@@ -8,6 +8,7 @@
 #include <QThread>
 #include <QToolTip>
 
+#include "core/parse/diagnostic.h"
 #include "scene_highlighter.h"
 
 namespace f2::viewer {
@@ -130,11 +131,15 @@ std::pair<int, int> SceneEditor::problemRange(const EditorProblem& problem) cons
     const QTextBlock block = document()->findBlockByNumber(problem.line - 1);
     if (!block.isValid()) return {-1, 0};
     const QString text = block.text();
-    const int start = std::min(charIndexOfByteColumn(text, problem.column), int(text.size()));
-    int end = start;
-    while (end < text.size() && text[end] != u' ' && text[end] != u'\t') ++end;
-    // A problem at the end of a line (a missing argument) still gets a mark.
-    if (end == start) return {block.position() + std::max(0, start - 1), 1};
+    // The language server's rule (core markedBytes), in the line's UTF-8 bytes.
+    Diagnostic diagnostic;
+    diagnostic.loc.column = problem.column;
+    diagnostic.length = problem.length;
+    const QByteArray utf8 = text.toUtf8();
+    const ByteSpan span =
+        markedBytes(diagnostic, std::string_view(utf8.constData(), std::size_t(utf8.size())));
+    const int start = charIndexOfByteColumn(text, int(span.first) + 1);
+    const int end = charIndexOfByteColumn(text, int(span.first + span.length) + 1);
     return {block.position() + start, end - start};
 }
 

@@ -18,6 +18,7 @@ struct EditorProblem {
     int column = 1;  ///< 1-based, in bytes of the UTF-8 line (as the parser counts)
     QString message;
     bool error = true;
+    int length = 0;  ///< bytes it covers (Diagnostic::length; 0: the token there)
 };
 
 class SceneEditor : public QPlainTextEdit {

@@ -1,5 +1,5 @@
-// publishDiagnostics: the parser's errors and warnings with the range of the
-// token they point at, grouped by file (a scene's includes have their own),
+// publishDiagnostics: the parser's errors and warnings with the range of what
+// they point at, grouped by file (a scene's includes have their own),
 // and on each `/include` line of the document a summary of the problems in
 // the files it reads, which an editor shows even when those files are closed.
 #include <filesystem>
@@ -23,6 +23,12 @@ int includeLineFor(const Analysis& a, const std::string& file) {
         if (link.file == a.self && a.sources.reaches(link.target, target)) return link.line;
     }
     return -1;
+}
+
+/// What the diagnostic marks: the same bytes the viewer underlines (core markedBytes).
+Range markedRange(const TextDocument& doc, const Diagnostic& d) {
+    const ByteSpan span = markedBytes(d, doc.line(d.loc.line - 1));
+    return doc.range(d.loc.line, static_cast<int>(span.first) + 1, static_cast<int>(span.length));
 }
 
 struct IncludeSummary {
@@ -49,7 +55,7 @@ Json publishDiagnostics(const Analysis& a) {
             }
             doc = &it->second;
         }
-        const Range range = doc->tokenRange(d.loc.line, d.loc.column);
+        const Range range = markedRange(*doc, d);
         Json& list = byFile[d.loc.file];
         if (list.is_null()) list = Json::array();
         list.push_back({{"range", toJson(range)},

@@ -227,6 +227,17 @@ TEST(Diagnostics, WarningsAndErrorsWithTokenRanges) {
     EXPECT_EQ(list[1]["range"], toJson(Range{{4, 5}, {4, 8}}));
 }
 
+TEST(Diagnostics, RangesCoverWhatTheParserSaysAsTheViewerUnderlinesIt) {
+    // An expression argument with spaces, and a name inside one: the parser's
+    // extent (core markedBytes), not "up to the next space".
+    const Analysis a = analysed("/sphere b2 (1 - 3) 0 0 0\n/sphere b3 (1 + nope) 0 0 0\n");
+    const Json published = publishDiagnostics(a);
+    const Json& list = published[0]["diagnostics"];
+    ASSERT_EQ(list.size(), 2u) << list.dump();
+    EXPECT_EQ(list[0]["range"], toJson(Range{{0, 11}, {0, 18}}));  // (1 - 3)
+    EXPECT_EQ(list[1]["range"], toJson(Range{{1, 16}, {1, 20}}));  // nope
+}
+
 TEST(Outline, SymbolsListObjectsPartsCameraAndLights) {
     const Analysis a = analysed(
         "/camera 320 240 0.5\n/sphere ball 10 0 0 0\n/robot r1 0 0 0\n/dir_light 1 0 -1 0\n"

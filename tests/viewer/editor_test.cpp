@@ -238,6 +238,19 @@ void EditorTest::errorKeepsImageAndUnderlinesColumn() {
     QTRY_VERIFY_WITH_TIMEOUT(!w->document()->hasErrors(), kWaitMs);
     QVERIFY(editor->problems().empty());
     QCOMPARE(problemsText(*w), QStringLiteral("No problems."));
+
+    // An expression argument is underlined whole, spaces and all (the
+    // parser's extent, as the language server ranges it), and after a
+    // two-byte character the columns still meet the right characters.
+    typeOver(editor, 3, 12, 3, "(0.1 - 0.5)");
+    QTRY_VERIFY_WITH_TIMEOUT(editor->problems().size() == 1, kWaitMs);
+    QCOMPARE(editor->problemRange(editor->problems().front()), std::make_pair(lineStart + 11, 11));
+    while (editor->document()->isUndoAvailable()) editor->undo();
+    QTRY_VERIFY_WITH_TIMEOUT(editor->problems().empty(), kWaitMs);
+    // "\u00e9/amb_light": 2 bytes before the command (QTest types only ASCII: a cursor edit).
+    QTextCursor(editor->document()->findBlockByNumber(2)).insertText(QString::fromUtf8("\u00e9"));
+    QTRY_VERIFY_WITH_TIMEOUT(editor->problems().size() == 1, kWaitMs);
+    QCOMPARE(editor->problemRange(editor->problems().front()), std::make_pair(lineStart, 11));  // 12 bytes
 }
 
 void EditorTest::saveWritesTextAtomically() {

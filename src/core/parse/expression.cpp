@@ -142,15 +142,17 @@ class ExpressionParser {
         r.ok = !failed_;
         r.value = failed_ ? 0 : (v == 0 ? 0.0 : v);  // -0 becomes 0, as for numbers
         r.errorOffset = errorOffset_;
+        r.errorLength = errorLength_;
         r.message = message_;
         r.followOn = followOn_;
         return r;
     }
 
-    void fail(std::size_t offset, std::string message) {
+    void fail(std::size_t offset, std::string message, std::size_t length = 0) {
         if (failed_) return;
         failed_ = true;
         errorOffset_ = offset;
+        errorLength_ = length;
         message_ = std::move(message);
     }
 
@@ -331,13 +333,14 @@ class ExpressionParser {
         if (const std::optional<double> v = variables_.find(word)) return *v;
         if (variables_.isBroken(word)) {
             if (!failed_) followOn_ = true;
-            fail(start, "variable " + quoteToken(word) + " has no value: its '/let' failed");
+            fail(start, "variable " + quoteToken(word) + " has no value: its '/let' failed", word.size());
             return 0;
         }
         if (function) {
-            fail(start, quoteToken(word) + " is a function: write " + std::string(word) + "(...)");
+            fail(start, quoteToken(word) + " is a function: write " + std::string(word) + "(...)",
+                 word.size());
         } else {
-            fail(start, "unknown variable " + quoteToken(word));
+            fail(start, "unknown variable " + quoteToken(word), word.size());
         }
         return 0;
     }
@@ -432,6 +435,7 @@ class ExpressionParser {
     bool failed_ = false;
     bool followOn_ = false;
     std::size_t errorOffset_ = 0;
+    std::size_t errorLength_ = 0;
     std::string message_;
 };
 

@@ -52,6 +52,7 @@ struct ExpressionResult {
     bool ok = false;
     double value = 0;
     std::size_t errorOffset = 0;  ///< byte offset of the problem inside the text
+    std::size_t errorLength = 0;  ///< bytes it covers there (a name's); 0: a point
     std::string message;
     /// The problem is a variable whose `/let` failed: already reported there.
     bool followOn = false;

@@ -190,8 +190,11 @@ class Parser : private ExpansionSink {
             const bool inLoop = !note.empty();
             message += note;
             firstAtPlace_.emplace(std::move(place), diagnostics_.size());
-            push({{expander_.fileName(pos.file), pos.line, pos.column}, severity, std::move(message)}, pos,
-                 inLoop);
+            push({{expander_.fileName(pos.file), pos.line, pos.column},
+                  severity,
+                  std::move(message),
+                  pos.length},
+                 pos, inLoop);
         }
         if (severity == Severity::Error && errors_ >= limits_.maxErrors) {
             push({{expander_.fileName(pos.file), pos.line, pos.column},
@@ -252,10 +255,17 @@ class Parser : private ExpansionSink {
         p.column = column;
         return p;
     }
-    Pos commandPos() const { return at(tokens_.tokens[0].column); }
+    /// Where token i of the line is, with its written extent (so a diagnostic there covers it).
+    Pos tokenPos(int i) const {
+        const LogicalToken& token = tokens_.tokens[static_cast<std::size_t>(i)];
+        Pos p = at(token.column);
+        p.length = static_cast<int>(token.written.size());
+        return p;
+    }
+    Pos commandPos() const { return tokenPos(0); }
     const LogicalToken& argToken(int i) const { return tokens_.tokens[static_cast<std::size_t>(i + 1)]; }
     std::string_view arg(int i) const { return argToken(i).text; }
-    Pos argPos(int i) const { return at(argToken(i).column); }
+    Pos argPos(int i) const { return tokenPos(i + 1); }
     /// A `( … )` or `{ … }` of argument i failed; its error is already reported.
     bool failed(int i) const { return argToken(i).form == TokenForm::Failed; }
 

@@ -270,6 +270,18 @@ SourcePos SourceExpander::at(int column) const {
     return {lineNumber_, column, fileStack_.back().nameIndex, static_cast<std::uint32_t>(linesRead_)};
 }
 
+SourcePos SourceExpander::at(const LogicalToken& token) const {
+    SourcePos pos = at(token.column);
+    pos.length = static_cast<int>(token.written.size());
+    return pos;
+}
+
+SourcePos SourceExpander::inExpression(int textColumn, const ExpressionResult& result) const {
+    SourcePos pos = at(textColumn + static_cast<int>(result.errorOffset));
+    pos.length = static_cast<int>(result.errorLength);
+    return pos;
+}
+
 std::string SourceExpander::loopNote() const {
     if (loopStack_.empty()) return {};
     std::string note = " (in /repeat ";
@@ -361,7 +373,7 @@ bool SourceExpander::evaluateTokens(LogicalLine& line, int first) {
         if (token.text.starts_with('(')) {
             const ExpressionResult r = evaluateParenthesized(token.text, variables_);
             if (!r.ok) {
-                if (!r.followOn) error(at(token.column + static_cast<int>(r.errorOffset)), r.message);
+                if (!r.followOn) error(inExpression(token.column, r), r.message);
                 token.form = TokenForm::Failed;
                 ok = false;
                 continue;
@@ -392,7 +404,7 @@ bool SourceExpander::evaluateTokens(LogicalLine& line, int first) {
                 }
                 const ExpressionResult r = evaluateExpression(text.substr(k + 1, close - k - 1), variables_);
                 if (!r.ok) {
-                    if (!r.followOn) error(at(braceColumn + 1 + static_cast<int>(r.errorOffset)), r.message);
+                    if (!r.followOn) error(inExpression(braceColumn + 1, r), r.message);
                     token.form = TokenForm::Failed;
                     break;
                 }
@@ -433,7 +445,7 @@ std::optional<double> SourceExpander::numberArgument(const LogicalLine& line, in
     if (token.form == TokenForm::Expression) return token.value;
     const ParsedNumber n = parseNumber(token.text);
     if (n.status != NumberStatus::Ok) {
-        error(at(token.column), numberErrorMessage(token.text, n.status));
+        error(at(token), numberErrorMessage(token.text, n.status));
         ok = false;
         return std::nullopt;
     }
@@ -442,13 +454,12 @@ std::optional<double> SourceExpander::numberArgument(const LogicalLine& line, in
 
 bool SourceExpander::variableName(const LogicalToken& name, std::string_view cannotBe) {
     if (!isVariableName(name.text)) {
-        error(at(name.column), "invalid variable name " + quoteToken(name.text) +
-                                   " (expected a letter or '_', then letters, digits or '_')");
+        error(at(name), "invalid variable name " + quoteToken(name.text) +
+                            " (expected a letter or '_', then letters, digits or '_')");
         return false;
     }
     if (Variables::isPredefined(name.text)) {
-        error(at(name.column),
-              quoteToken(name.text) + " is predefined and cannot be " + std::string(cannotBe));
+        error(at(name), quoteToken(name.text) + " is predefined and cannot be " + std::string(cannotBe));
         return false;
     }
     return true;
@@ -465,7 +476,7 @@ std::string_view writtenCommand(const LogicalLine& line) {
 void SourceExpander::runLet(const LogicalLine& line) {
     if (line.count != 3) {
         // A no-break space glues the two arguments into one, so the count is the first thing wrong.
-        error(at(line.tokens[0].column),
+        error(at(line.tokens[0]),
               withUnusualCharacterNote(
                   "'/let' takes 2 arguments (a variable and a number), got " + std::to_string(line.count - 1),
                   writtenCommand(line), line.tokens[0].column));
@@ -491,7 +502,7 @@ void SourceExpander::skipLoop(const LoopInfo& info) { fileStack_.back().reader =
 
 void SourceExpander::runRepeat(const LogicalLine& line, int lineNumber) {
     FileFrame& frame = fileStack_.back();
-    const SourcePos commandPos = at(line.tokens[0].column);
+    const SourcePos commandPos = at(line.tokens[0]);
     const auto found = frame.source->loops.find(lineNumber);
     if (found == frame.source->loops.end()) {
         // The rest of the file is not read: it would only add follow-on errors.
@@ -516,7 +527,7 @@ void SourceExpander::runRepeat(const LogicalLine& line, int lineNumber) {
     if (line.count == 5) {
         step = numberArgument(line, 4, ok);
         if (step && *step == 0) {
-            error(at(line.tokens[4].column), "the step of '/repeat' must not be 0");
+            error(at(line.tokens[4]), "the step of '/repeat' must not be 0");
             ok = false;
         }
     }
@@ -560,10 +571,10 @@ void SourceExpander::runRepeat(const LogicalLine& line, int lineNumber) {
 void SourceExpander::runEnd(const LogicalLine& line) {
     FileFrame& frame = fileStack_.back();
     if (loopStack_.size() == frame.loopBase) {
-        error(at(line.tokens[0].column), "'/end' without '/repeat'");
+        error(at(line.tokens[0]), "'/end' without '/repeat'");
         return;
     }
-    if (line.count > 1) error(at(line.tokens[1].column), "'/end' takes no arguments");
+    if (line.count > 1) error(at(line.tokens[1]), "'/end' takes no arguments");
     LoopFrame& loop = loopStack_.back();
     if (++loop.pass < loop.passes) {
         const double value = loop.from + static_cast<double>(loop.pass) * loop.step;
@@ -580,7 +591,7 @@ void SourceExpander::runEnd(const LogicalLine& line) {
 }
 
 void SourceExpander::runInclude(std::string_view raw, const LogicalLine& line) {
-    const SourcePos commandPos = at(line.tokens[0].column);
+    const SourcePos commandPos = at(line.tokens[0]);
     // The path: a text in double quotes (kept as written, spaces and '#'
     // included), or one argument.
     std::size_t i = static_cast<std::size_t>(line.tokens[0].column - 1) + line.tokens[0].text.size();

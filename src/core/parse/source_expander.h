@@ -31,6 +31,7 @@ struct SourcePos {
     /// Ordinal of the line in reading order (each loop pass reads its lines
     /// again): sorts diagnostics across files and passes. 0 = before any line.
     std::uint32_t seq = 0;
+    int length = 0;  ///< bytes of source from column it covers (a token's); 0: a point
 };
 
 /// How an argument was written.
@@ -147,6 +148,10 @@ class SourceExpander {
     const SourceFile* loadFile(const std::string& path, SourcePos at);
     void error(SourcePos pos, std::string message) { sink_.expansionError(pos, std::move(message)); }
     SourcePos at(int column) const;
+    /// Where `token` is, with its written extent.
+    SourcePos at(const LogicalToken& token) const;
+    /// Where an expression's problem is, its text starting at `textColumn`.
+    SourcePos inExpression(int textColumn, const ExpressionResult& result) const;
 
     ExpansionLimits limits_;
     ExpansionSink& sink_;
