@@ -1,5 +1,5 @@
 #pragma once
-/// Renders frames off the GUI thread (the Qt Mandelbrot pattern, STYLE 4):
+/// Renders frames off the GUI thread (the pattern of Qt's Mandelbrot example):
 /// the GUI posts requests, one worker thread owning a core Renderer serves
 /// them, and finished frames come back as queued signals carrying a QImage.
 #include <QElapsedTimer>
