@@ -1,7 +1,6 @@
 #include "lsp/analysis.h"
 
 #include <algorithm>
-#include <cctype>
 
 #include "core/parse/language.h"
 #include "core/parse/lexer.h"
@@ -51,7 +50,10 @@ std::string uriFromPath(std::string_view path) {
     std::string uri = "file://";
     for (char c : path) {
         const auto b = static_cast<unsigned char>(c);
-        if (std::isalnum(b) || c == '/' || c == '-' || c == '_' || c == '.' || c == '~') {
+        // RFC 3986's unreserved characters (ASCII only, whatever the locale) and '/'.
+        const bool unreserved = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') ||
+                                c == '-' || c == '_' || c == '.' || c == '~';
+        if (unreserved || c == '/') {
             uri += c;
         } else {
             uri += '%';

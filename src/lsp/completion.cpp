@@ -1,7 +1,6 @@
 // textDocument/completion: commands (as snippets), object names, parts after
 // `name.`, interpolation modes, `camera` — what fits the argument under the cursor.
 #include <algorithm>
-#include <cctype>
 #include <filesystem>
 
 #include "core/parse/expression.h"
@@ -90,8 +89,7 @@ void addParts(Json& items, const Analysis& a, std::string_view objectName, const
 /// Inside `( … )` or `{ … }`: the variables defined above, pi and the functions.
 Json expressionItems(const Analysis& a, Position p, std::string_view line, std::size_t byte) {
     std::size_t begin = byte;
-    while (begin > 0 && (std::isalnum(static_cast<unsigned char>(line[begin - 1])) || line[begin - 1] == '_'))
-        --begin;
+    while (begin > 0 && isNameChar(line[begin - 1])) --begin;  // the language's name rule, not the locale's
     const Range replace{{p.line, utf16Length(line.substr(0, begin))}, p};
     Json items = Json::array();
     std::vector<std::string> seen;

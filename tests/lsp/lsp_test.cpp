@@ -200,6 +200,12 @@ TEST(Server, HandlesALargeDocument) {
     EXPECT_EQ(few.size(), 11u);  // s4999, s49990 … s49999
 }
 
+TEST(Uris, PathsArePercentEncodedByteByByte) {
+    // Only RFC 3986's unreserved ASCII characters and '/' stay as they are.
+    EXPECT_EQ(uriFromPath("/t/\xC3\xA9 d~x_1-2.f2"), "file:///t/%C3%A9%20d~x_1-2.f2");
+    EXPECT_EQ(uriFromPath("/t/a#b%c"), "file:///t/a%23b%25c");
+}
+
 TEST(Changes, ApplyRangesInUtf16Units) {
     const std::string text = "/paint \xF0\x9F\x98\x80 1\n/fps 24\n";
     const Json change = {
