@@ -711,7 +711,7 @@ TEST(Hover, CameraLineKeysLookAtAttachmentAndPose) {
 TEST(LanguageFiles, FillsAlternationsLongestFirstAndDictionaryLines) {
     std::string problem;
     EXPECT_EQ(fillLanguageTemplate("(@f2:modes@) and @f2:camera@\n", problem),
-              "(ease_out|ease_in|linear|spline|ease|step) and camera\n");
+              "(ease_out|ease_in|elastic|linear|spline|bounce|ease|step|back) and camera\n");
     EXPECT_EQ(problem, "");
     EXPECT_EQ(fillLanguageTemplate("# parts\n@f2:parts:dict@\nend\n", problem),
               "# parts\n\"body\"\n\"head\"\n\"lhand\"\n\"rhand\"\nend\n");

@@ -1,9 +1,14 @@
-// Interpolation per key (SPEC 9.3): every mode's weight at hand-computed
+// Interpolation per key (SPEC 9.3, 10.4): every mode's weight at hand-computed
 // fractions, modes per key and per target, spline neighbours of any mode.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+
 #include "core/anim/frame_builder.h"
 #include "core/anim/track.h"
+#include "core/parse/language.h"
 #include "test_scenes.h"
 
 namespace f2 {
@@ -21,13 +26,45 @@ struct ModeCase {
 
 // linear u; ease 3u²−2u³: 3/16 − 2/64 = 0.15625, 27/16 − 54/64 = 0.84375;
 // ease_in u³: 1/64, 27/64; ease_out 1 − (1−u)³: 1 − 27/64, 1 − 1/64; step 0.
-constexpr ModeCase kModes[] = {
+// SPEC 10.4: back 1 + c₃(u−1)³ + c₁(u−1)², (u−1)³ = −27/64, −1/64 and
+// (u−1)² = 9/16, 1/16; elastic: the sine's angle (10u − 0.75)·120° is 210°
+// (sin −1/2) and 810° (sin 1); bounce n·u² = 7.5625/16 below 1/d, and at 0.75
+// (between 2/d and 2.5/d) n(0.75 − 2.25/2.75)² + 0.9375 = 7.5625·(3/44)² + 0.9375.
+constexpr double kC1 = 1.70158, kC3 = kC1 + 1.0;
+const ModeCase kModes[] = {
     {Interpolation::Linear, 0.25, 0.75},
     {Interpolation::Ease, 0.15625, 0.84375},
     {Interpolation::EaseIn, 0.015625, 0.421875},
     {Interpolation::EaseOut, 0.578125, 0.984375},
     {Interpolation::Step, 0.0, 0.0},
+    {Interpolation::Back, 1.0 - kC3 * 27.0 / 64.0 + kC1 * 9.0 / 16.0, 1.0 - kC3 / 64.0 + kC1 / 16.0},
+    {Interpolation::Elastic, 1.0 - 0.5 * std::exp2(-2.5), 1.0 + std::exp2(-7.5)},
+    {Interpolation::Bounce, 7.5625 / 16.0, 7.5625 * 9.0 / 1936.0 + 0.9375},
 };
+
+TEST(Interpolation, EveryModeOfTheLanguageIsTested) {
+    for (Interpolation mode : interpolationModes()) {
+        if (mode == Interpolation::Spline) continue;  // not a blend of two keys (tests below)
+        SCOPED_TRACE(std::string(interpolationName(mode)));
+        EXPECT_TRUE(std::any_of(std::begin(kModes), std::end(kModes),
+                                [&](const ModeCase& c) { return c.mode == mode; }));
+    }
+}
+
+TEST(Interpolation, BackAndElasticOvershootBounceStaysAtOrBelowOne) {
+    double backMost = 0, elasticMost = 0, bounceMost = 0;
+    for (int i = 0; i <= 1000; ++i) {
+        const double u = i / 1000.0;
+        backMost = std::max(backMost, backFraction(u));
+        elasticMost = std::max(elasticMost, elasticFraction(u));
+        bounceMost = std::max(bounceMost, bounceFraction(u));
+    }
+    EXPECT_GT(backMost, 1.09);  // the classic 10 % overshoot
+    EXPECT_LT(backMost, 1.11);
+    EXPECT_GT(elasticMost, 1.03);
+    EXPECT_LE(bounceMost, 1.0 + 1e-12);
+    EXPECT_DOUBLE_EQ(bounceFraction(1.0 / 2.75), 1.0);  // the first touch of the ground
+}
 
 TEST(Interpolation, WeightOfEveryModeAtAQuarterAndThreeQuarters) {
     for (const ModeCase& c : kModes) {

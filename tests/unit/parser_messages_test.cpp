@@ -138,12 +138,11 @@ TEST(UnusualCharacters, InvisibleCharactersInNamesAndTargets) {
         messages("/robot r 0 0 0\n/key 0 r.\u00ADhead\n"),
         (Lines{"2:10: error: unknown part '\u00ADhead' (did you mean 'head'? it contains U+00AD SOFT HYPHEN "
                "at column 10, an invisible character: delete it)"}));
-    EXPECT_EQ(
-        messages("/robot r 0 0 0\n/interp r ease\u200D\n"),
-        (Lines{
-            "2:11: error: unknown interpolation 'ease\u200D' (expected linear, ease, ease_in, ease_out, step "
-            "or spline; it contains "
-            "U+200D ZERO WIDTH JOINER at column 15, an invisible character: delete it)"}));
+    EXPECT_EQ(messages("/robot r 0 0 0\n/interp r ease\u200D\n"),
+              (Lines{"2:11: error: unknown interpolation 'ease\u200D' (expected linear, ease, ease_in, "
+                     "ease_out, step, "
+                     "spline, back, elastic or bounce; it contains "
+                     "U+200D ZERO WIDTH JOINER at column 15, an invisible character: delete it)"}));
 }
 
 TEST(UnusualCharacters, AByteOrderMarkInTheMiddle) {
@@ -296,7 +295,7 @@ TEST(SceneWarnings, ASecondInterpForTheSameTarget) {
     // A broken /interp does not count as the first.
     EXPECT_EQ(messages("/robot r1 0 0 0\n/amb_light 1\n/interp r1 cubic\n/interp r1 ease\n"),
               (Lines{"3:12: error: unknown interpolation 'cubic' (expected linear, ease, ease_in, ease_out, "
-                     "step or spline)"}));
+                     "step, spline, back, elastic or bounce)"}));
 }
 
 }  // namespace

@@ -145,9 +145,9 @@ TEST(ParserModes, EveryModeWordOnKeysAndInterp) {
 
 TEST(ParserModes, Errors) {
     const std::string a = "/sphere a 1 0 0 0\n";
-    expectOnlyError(
-        a + "/key 0 a 1 2 3 4 5 6 wobble\n", 2, 22,
-        "unknown interpolation 'wobble' (expected linear, ease, ease_in, ease_out, step or spline)");
+    expectOnlyError(a + "/key 0 a 1 2 3 4 5 6 wobble\n", 2, 22,
+                    "unknown interpolation 'wobble' (expected linear, ease, ease_in, ease_out, step, spline, "
+                    "back, elastic or bounce)");
     expectOnlyError(a + "/key 0 a Ease\n", 2, 10, "unknown interpolation 'Ease'");  // lower case only
     expectOnlyError(a + "/interp a easein\n", 2, 11, "unknown interpolation 'easein'");
     expectOnlyError("/interp camera wobble\n", 1, 16, "unknown interpolation 'wobble'");

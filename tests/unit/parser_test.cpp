@@ -751,7 +751,8 @@ TEST(ParserError, KeyFrameValues) {
 
 TEST(ParserError, UnknownInterpolation) {
     expectError("/sphere s 1 0 0 0\n/interp s cubic\n", 2, 11,
-                "unknown interpolation 'cubic' (expected linear, ease, ease_in, ease_out, step or spline)");
+                "unknown interpolation 'cubic' (expected linear, ease, ease_in, ease_out, step, spline, "
+                "back, elastic or bounce)");
     expectError("/sphere s 1 0 0 0\n/interp s Linear\n", 2, 11, "unknown interpolation 'Linear'");
 }
 

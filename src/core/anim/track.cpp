@@ -1,8 +1,42 @@
 #include "core/anim/track.h"
 
+#include <cmath>
+#include <numbers>
+
 namespace f2 {
 
 double easeFraction(double u) { return u * u * (3.0 - 2.0 * u); }
+
+double backFraction(double u) {
+    constexpr double c1 = 1.70158;  // the classic 10 % overshoot
+    constexpr double c3 = c1 + 1.0;
+    if (u <= 0.0) return 0.0;  // 1 + c₃(−1) + c₁ is 2e-16 in doubles: a key must be exact
+    const double v = u - 1.0;
+    return 1.0 + c3 * v * v * v + c1 * v * v;
+}
+
+double elasticFraction(double u) {
+    if (u <= 0.0) return 0.0;
+    if (u >= 1.0) return 1.0;
+    constexpr double kTwoPiOverThree = 2.0 * std::numbers::pi / 3.0;
+    return std::exp2(-10.0 * u) * std::sin((10.0 * u - 0.75) * kTwoPiOverThree) + 1.0;
+}
+
+double bounceFraction(double u) {
+    constexpr double n = 7.5625;
+    constexpr double d = 2.75;
+    if (u < 1.0 / d) return n * u * u;
+    if (u < 2.0 / d) {
+        const double v = u - 1.5 / d;
+        return n * v * v + 0.75;
+    }
+    if (u < 2.5 / d) {
+        const double v = u - 2.25 / d;
+        return n * v * v + 0.9375;
+    }
+    const double v = u - 2.625 / d;
+    return n * v * v + 0.984375;
+}
 
 double interpolationWeight(Interpolation mode, double u) {
     switch (mode) {
@@ -16,6 +50,12 @@ double interpolationWeight(Interpolation mode, double u) {
         }
         case Interpolation::Step:
             return 0.0;
+        case Interpolation::Back:
+            return backFraction(u);
+        case Interpolation::Elastic:
+            return elasticFraction(u);
+        case Interpolation::Bounce:
+            return bounceFraction(u);
         case Interpolation::Linear:
         case Interpolation::Spline:
             break;

@@ -20,9 +20,18 @@ Pose evaluateTrack(const Track& track, double t, const Pose& rest);
 /// Smoothstep 3u^2 - 2u^3 used by `/interp ease`.
 double easeFraction(double u);
 
+/// SPEC 10.4's overshooting and settling easings, w(0) = 0 and w(1) = 1:
+/// `back` 1 + c₃(u−1)³ + c₁(u−1)² (c₁ = 1.70158, c₃ = c₁ + 1), past 1 then
+/// back; `elastic` 2^(−10u)·sin((10u − 0.75)·2π/3) + 1, a dying wobble
+/// about 1; `bounce` the standard ease-out bounce (n = 7.5625, d = 2.75),
+/// touching 1 three times before it rests there.
+double backFraction(double u);
+double elasticFraction(double u);
+double bounceFraction(double u);
+
 /// w(u) of SPEC 9.3 for the modes that blend two keys, P1 + (P2 - P1)·w(u):
-/// linear u, ease 3u² − 2u³, ease_in u³, ease_out 1 − (1 − u)³, step 0.
-/// (spline is not a blend of two keys: see catmullRom.)
+/// linear u, ease 3u² − 2u³, ease_in u³, ease_out 1 − (1 − u)³, step 0, and
+/// back, elastic, bounce above. (spline is not a blend of two keys: see catmullRom.)
 double interpolationWeight(Interpolation mode, double u);
 
 /// Uniform Catmull-Rom between p1 and p2 with neighbours p0, p3, at u in [0, 1].

@@ -150,9 +150,10 @@ constexpr std::array<LightOptionSpec, 4> kLightOptions = {{
     {LightOption::Tightness, "tightness", 1, "a number"},
 }};
 
-constexpr std::array<Interpolation, 6> kModes = {Interpolation::Linear, Interpolation::Ease,
-                                                 Interpolation::EaseIn, Interpolation::EaseOut,
-                                                 Interpolation::Step,   Interpolation::Spline};
+constexpr std::array<Interpolation, 9> kModes = {
+    Interpolation::Linear,  Interpolation::Ease,    Interpolation::EaseIn,
+    Interpolation::EaseOut, Interpolation::Step,    Interpolation::Spline,
+    Interpolation::Back,    Interpolation::Elastic, Interpolation::Bounce};
 
 }  // namespace
 

@@ -987,12 +987,26 @@ class Parser : private ExpansionSink {
         trackOf(*t).interpolation = *mode;  // the last /interp of a target wins
     }
 
+    /// "linear, ease, … or bounce": the language table's modes, for messages.
+    static const std::string& modeWordList() {
+        static const std::string list = [] {
+            const std::span<const Interpolation> modes = interpolationModes();
+            std::string words;
+            for (std::size_t k = 0; k < modes.size(); ++k) {
+                if (k > 0) words += k + 1 == modes.size() ? " or " : ", ";
+                words += interpolationName(modes[k]);
+            }
+            return words;
+        }();
+        return list;
+    }
+
     /// The mode word in argument i (SPEC 9.3).
     std::optional<Interpolation> interpolationMode(int i) {
         const std::optional<Interpolation> mode = modeFromWord(arg(i));
         if (!mode) {
-            error(argPos(i), noteCharacters("unknown interpolation " + quoteToken(arg(i)) +
-                                                " (expected linear, ease, ease_in, ease_out, step or spline)",
+            error(argPos(i), noteCharacters("unknown interpolation " + quoteToken(arg(i)) + " (expected " +
+                                                modeWordList() + ")",
                                             arg(i), argPos(i)));
         }
         return mode;

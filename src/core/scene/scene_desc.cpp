@@ -20,6 +20,12 @@ std::string_view interpolationName(Interpolation mode) {
             return "ease_out";
         case Interpolation::Step:
             return "step";
+        case Interpolation::Back:
+            return "back";
+        case Interpolation::Elastic:
+            return "elastic";
+        case Interpolation::Bounce:
+            return "bounce";
     }
     return "linear";
 }

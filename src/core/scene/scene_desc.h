@@ -52,8 +52,19 @@ struct Appearance {
     Checker checker;
 };
 
-/// How a target moves from one key to the next (SPEC 6 and 9.3).
-enum class Interpolation : std::uint8_t { Linear, Ease, Spline, EaseIn, EaseOut, Step };
+/// How a target moves from one key to the next (SPEC 6 and 9.3; back,
+/// elastic and bounce are SPEC 10.4's).
+enum class Interpolation : std::uint8_t {
+    Linear,
+    Ease,
+    Spline,
+    EaseIn,
+    EaseOut,
+    Step,
+    Back,
+    Elastic,
+    Bounce
+};
 
 /// The mode's word in the scene language ("linear", "ease_in", ...).
 std::string_view interpolationName(Interpolation mode);
