@@ -110,7 +110,8 @@ constexpr std::array<CommandSpec, 24> kCommands = {{
     {CommandId::Interp, "/interp", Edition::First, CommandGroup::Motion, kInterp, "/interp <target> <mode>",
      "/interp ${1:target} ${2|linear,ease,spline|}",
      "How the target moves between its keys: `linear` (default), `ease` (smoothstep), `spline` "
-     "(Catmull-Rom through the keys), and in the second edition `ease_in`, `ease_out`, `step`.",
+     "(Catmull-Rom through the keys); in the second edition `ease_in`, `ease_out`, `step`; in the "
+     "third `back` (overshoots), `elastic` (wobbles), `bounce`.",
      true},
     {CommandId::Fps, "/fps", Edition::First, CommandGroup::Setting, kNumbers, "/fps <n>", "/fps ${1:24}",
      "Playback frames per second, 1..1000 (default 24).", false},
