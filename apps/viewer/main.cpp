@@ -14,7 +14,6 @@ int main(int argc, char** argv) {
     const f2::viewer::ViewerOptions options = f2::viewer::parseViewerOptions(argc, argv);
     const auto app = f2::viewer::openWindowSystem(argc, argv);  // or one line and exit 1
     f2::viewer::MainWindow window;
-    f2::viewer::applyViewerOptions(options, window);
-    window.show();
+    f2::viewer::applyViewerOptions(options, window);  // shows the window
     return QApplication::exec();
 }

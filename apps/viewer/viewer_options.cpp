@@ -137,6 +137,9 @@ ViewerOptions parseViewerOptions(int& argc, char** argv) {
 void applyViewerOptions(const ViewerOptions& options, MainWindow& window) {
     if (options.scale) window.setRenderScale(RenderScale(*options.scale));
     if (options.viewportSize.isValid()) window.resizeForViewport(options.viewportSize);
+    // Shown before the scene opens: a Problems dock that opens for it measures
+    // the laid-out window and grows it (a hidden one would shrink the picture).
+    window.show();
     // --stats: the GUI thread's longest pause from here (opening the file) to quitting.
     if (options.stats) watchGuiPauses(window);
     if (!options.scene.isEmpty())

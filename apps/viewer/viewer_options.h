@@ -22,7 +22,8 @@ struct ViewerOptions {
 /// version and exits 0 on --help / --version, prints one line and exits 2 on
 /// a bad option or value. Numbers are read by f2's rules (io/option_value.h).
 ViewerOptions parseViewerOptions(int& argc, char** argv);
-/// Opens the scene, sets scale/size/frame, starts playing, arms --quit-after.
+/// Sets scale and size, shows the window, opens the scene, sets the frame,
+/// starts playing, arms --quit-after, --stats and --screenshot.
 void applyViewerOptions(const ViewerOptions& options, MainWindow& window);
 
 }  // namespace f2::viewer

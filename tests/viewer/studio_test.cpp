@@ -12,6 +12,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTextBlock>
+#include <cstdlib>
 
 #include "core/render/camera.h"
 #include "editor_dock.h"
@@ -21,6 +22,7 @@
 #include "scene_document.h"
 #include "scene_editor.h"
 #include "test_support.h"
+#include "viewer_options.h"
 #include "viewport_widget.h"
 
 using namespace f2;
@@ -62,6 +64,7 @@ class StudioTest : public QObject {
     void firstCameraKeyKeepsTheShotsStart();
     void problemsDockKeepsThePictureSize();
     void pickInAnIncludedFileSelectsItsInclude();
+    void aFileBrokenFromTheStartKeepsThePictureSize();
 };
 
 void StudioTest::initTestCase() {
@@ -210,4 +213,32 @@ void StudioTest::pickInAnIncludedFileSelectsItsInclude() {
 }
 
 QTEST_MAIN(StudioTest)
+void StudioTest::aFileBrokenFromTheStartKeepsThePictureSize() {
+    // `f2-viewer FILE --size 320x240`: the same picture for a good file and
+    // for one whose errors open the Problems dock before the window is shown.
+    QTemporaryDir dir;
+    const QString good = smallSceneFile(dir);
+    const QString broken = dir.filePath("broken.f2");
+    writeFile(broken, QByteArray(kSmallScene).replace("/amb_light 0.3", "/amb_lite 0.3"));
+    ViewerOptions options;
+    options.viewportSize = {320, 240};
+    options.frame = 0;
+    auto pictureFor = [&](MainWindow& w, const QString& scene) {
+        options.scene = scene;
+        applyViewerOptions(options, w);
+        return QTest::qWaitForWindowExposed(&w);
+    };
+    MainWindow reference;
+    QVERIFY(pictureFor(reference, good));
+    QVERIFY(waitForShownFrame(reference, 0));
+    QVERIFY(!reference.diagnosticsDock()->isVisible());
+    MainWindow w;
+    QVERIFY(pictureFor(w, broken));
+    QVERIFY(w.diagnosticsDock()->isVisible());
+    // The height is what the dock took (240 against 124 before); the width
+    // may differ by a few pixels as the docks settle their minimum widths.
+    QTRY_COMPARE_WITH_TIMEOUT(w.viewport()->height(), reference.viewport()->height(), kWaitMs);
+    QVERIFY(std::abs(w.viewport()->width() - reference.viewport()->width()) <= 16);
+}
+
 #include "studio_test.moc"
