@@ -82,7 +82,7 @@ void EditorDock::setSceneText(const QString& text) {
     settleTimer_.stop();
     const quint64 generation = ++generation_;
     const bool wasLoading = isLoading();
-    loadsPending_ = 0;
+    waitingForLayout_ = false;
     if (text.size() < kBackgroundChars) {
         loading_ = true;
         if (editor_->toPlainText() != text) editor_->setPlainText(text);
@@ -99,7 +99,7 @@ void EditorDock::setSceneText(const QString& text) {
     editor_->adoptDocument(SceneEditor::makeDocument(QString(), editor_->font(), thread()));
     loading_ = false;
     editor_->setReadOnly(true);
-    loadsPending_ = 1;
+    waitingForLayout_ = true;
     auto* layout = new QFutureWatcher<QTextDocument*>(this);
     layouts_ << layout;
     connect(layout, &QFutureWatcher<QTextDocument*>::finished, this, [this, layout, generation] {
@@ -122,7 +122,7 @@ void EditorDock::showDocument(QTextDocument* document, quint64 generation) {
     editor_->adoptDocument(document);
     loading_ = false;
     editor_->setReadOnly(false);
-    loadsPending_ = 0;
+    waitingForLayout_ = false;
     emit modificationChanged(false);
     emit loadingChanged(false);
     emit textShown();

@@ -30,7 +30,7 @@ class EditorDock : public QDockWidget {
     /// is empty and read-only, isLoading() is true, and textShown() follows.
     void setSceneText(const QString& text);
     /// A text given to setSceneText is still being laid out.
-    bool isLoading() const { return loadsPending_ > 0; }
+    bool isLoading() const { return waitingForLayout_; }
     /// Layouts still on the worker, the latest text's or older ones that will be dropped.
     bool hasLayoutsInFlight() const { return !layouts_.isEmpty(); }
     bool isModified() const;
@@ -70,9 +70,9 @@ class EditorDock : public QDockWidget {
     void showDocument(QTextDocument* document, quint64 generation);
 
     QTimer settleTimer_;
-    bool loading_ = false;    // the editor's text is being replaced: not the user's edit
-    quint64 generation_ = 0;  // one per setSceneText: an older layout is dropped
-    int loadsPending_ = 0;    // layouts of the latest text on the worker (0 or 1)
+    bool loading_ = false;           // the editor's text is being replaced: not the user's edit
+    quint64 generation_ = 0;         // one per setSceneText: an older layout is dropped
+    bool waitingForLayout_ = false;  // the latest text is being laid out on the worker
     QList<QFutureWatcher<QTextDocument*>*> layouts_;  // in flight, waited for on destruction
     // Not Qt's global pool: the GUI thread's own painting (QPainter scales
     // images there) would wait behind a layout of seconds.
