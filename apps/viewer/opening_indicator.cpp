@@ -26,6 +26,12 @@ OpeningIndicator::OpeningIndicator(QStatusBar* bar, SceneDocument* document, Edi
     hide();
     connect(document, &SceneDocument::openingChanged, this, &OpeningIndicator::update);
     connect(editor, &EditorDock::loadingChanged, this, &OpeningIndicator::update);
+    // Another file read (this runs before the editor is given its text): a
+    // file still opening is superseded, so its line and clock start again.
+    connect(document, &SceneDocument::textLoaded, this, [this] {
+        clock_.invalidate();
+        update();
+    });
 }
 
 bool OpeningIndicator::isBusy() const { return document_->isOpening() || editor_->isLoading(); }
