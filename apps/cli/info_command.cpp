@@ -5,6 +5,8 @@
 #include <sstream>
 
 #include "commands.h"
+#include "core/parse/expression.h"
+#include "core/parse/language.h"
 #include "core/scene/models.h"
 #include "options.h"
 #include "scene_source.h"
@@ -17,14 +19,15 @@ constexpr std::size_t kShownKeyModes = 4;
 
 void printTrack(const std::string& target, const Track& track) {
     if (track.keys.empty()) return;
-    std::cout << "    " << target << ": " << track.keys.size() << " keys, frames " << track.keys.front().frame
-              << ".." << track.keys.back().frame << ", " << interpolationName(track.interpolation);
+    std::cout << "    " << target << ": " << track.keys.size() << " keys, frames "
+              << formatNumber(track.keys.front().time) << ".." << formatNumber(track.keys.back().time) << ", "
+              << easingText(track.interpolation);
     std::size_t withMode = 0;
     for (const Key& k : track.keys) {
         if (!k.mode) continue;
         if (withMode < kShownKeyModes)
-            std::cout << (withMode == 0 ? "; from key " : ", ") << k.frame << ' '
-                      << interpolationName(*k.mode);
+            std::cout << (withMode == 0 ? "; from key " : ", ") << formatNumber(k.time) << ' '
+                      << easingText(*k.mode);
         ++withMode;
     }
     if (withMode > kShownKeyModes)

@@ -22,6 +22,7 @@
 #include <QTextBlock>
 #include <QVBoxLayout>
 #include <QWindow>
+#include <cmath>
 
 #include "animation_exporter.h"
 #include "autosave.h"
@@ -642,10 +643,12 @@ void MainWindow::updateSelectionView() {
         return;
     }
     const SceneObject& target = scene->objects[*object];
+    // The timeline's steps are whole frames: a key at a fractional time
+    // (SPEC 10.4) shows at the nearest one.
     QList<int> keys;
     for (const Key& key :
          (selection_->part ? target.partTracks[std::size_t(*selection_->part)] : target.track).keys)
-        keys << key.frame;
+        keys << int(std::lround(key.time));
     timeline_->setKeyMarkers(keys);
     EvaluatedFrame frame;
     evaluateFrame(*scene, shownFrame_.time, frame);

@@ -14,6 +14,7 @@ bool isMode(QStringView word) { return modeFromWord(word.toString().toStdString(
 // The parser's own rule (a decimal number, even one too large for a float);
 // it also lets documents be highlighted in several threads at once.
 bool isNumber(QStringView word) {
+    if (word.size() > 1 && word.endsWith(u's')) word.chop(1);  // a time in seconds, `2.5s` (SPEC 10.4)
     const NumberStatus status = parseNumber(word.toString().toStdString()).status;
     return status == NumberStatus::Ok || status == NumberStatus::OutOfRange;
 }

@@ -67,7 +67,17 @@ std::vector<const IndexedObject*> visibleObjects(const Analysis& a, int beforeLi
 void addModes(Json& items, const Range& replace) {
     for (Interpolation mode : interpolationModes()) {
         const std::string_view word = interpolationName(mode);
-        items.push_back(item(word, kCompletionEnumMember, "interpolation mode", replace, word));
+        if (modeNumberCount(mode) == 0) {
+            items.push_back(item(word, kCompletionEnumMember, "interpolation mode", replace, word));
+            continue;
+        }
+        // `bezier x1 y1 x2 y2`: CSS's `ease` curve as the placeholders.
+        std::string snippet(word);
+        const char* kPlaceholders[] = {"0.25", "0.1", "0.25", "1"};
+        for (int k = 0; k < modeNumberCount(mode); ++k)
+            snippet += " ${" + std::to_string(k + 1) + ":" + kPlaceholders[k % 4] + "}";
+        items.push_back(
+            item(word, kCompletionEnumMember, "interpolation mode (x1 y1 x2 y2)", replace, snippet, true));
     }
 }
 

@@ -711,7 +711,7 @@ TEST(Hover, CameraLineKeysLookAtAttachmentAndPose) {
 TEST(LanguageFiles, FillsAlternationsLongestFirstAndDictionaryLines) {
     std::string problem;
     EXPECT_EQ(fillLanguageTemplate("(@f2:modes@) and @f2:camera@\n", problem),
-              "(ease_out|ease_in|elastic|linear|spline|bounce|ease|step|back) and camera\n");
+              "(ease_out|ease_in|elastic|linear|spline|bounce|bezier|ease|step|back) and camera\n");
     EXPECT_EQ(problem, "");
     EXPECT_EQ(fillLanguageTemplate("# parts\n@f2:parts:dict@\nend\n", problem),
               "# parts\n\"body\"\n\"head\"\n\"lhand\"\n\"rhand\"\nend\n");
@@ -751,6 +751,12 @@ TEST(Completion, ModesObjectsAndNothingInComments) {
     const Json modes = completion(a, {1, 13});
     ASSERT_GE(modes.size(), 3u);
     EXPECT_EQ(modes[0]["label"], "linear");
+    // `bezier` comes as a snippet with its four numbers (SPEC 10.4).
+    const auto bezier =
+        std::find_if(modes.begin(), modes.end(), [](const Json& m) { return m["label"] == "bezier"; });
+    ASSERT_NE(bezier, modes.end());
+    EXPECT_EQ((*bezier)["textEdit"]["newText"], "bezier ${1:0.25} ${2:0.1} ${3:0.25} ${4:1}");
+    EXPECT_EQ((*bezier)["insertTextFormat"], 2);
     EXPECT_TRUE(completion(a, {2, 11}).empty());
     const Json names = completion(a, {3, 7});
     ASSERT_EQ(names.size(), 1u);  // not `camera`: /paint cannot take it

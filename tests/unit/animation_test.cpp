@@ -11,7 +11,7 @@
 namespace f2 {
 namespace {
 
-Track trackOf(std::initializer_list<std::pair<int, float>> keys, Interpolation mode) {
+Track trackOf(std::initializer_list<std::pair<double, float>> keys, Interpolation mode) {
     Track track;
     track.interpolation = mode;
     for (auto [frame, x] : keys) track.keys.push_back({frame, Pose{{x, 0, 0}, {0, 0, 0}}});

@@ -56,7 +56,10 @@ TEST(LanguageTable, EveryModeAndOptionParses) {
     for (Interpolation m : interpolationModes()) {
         const std::string word(interpolationName(m));
         EXPECT_EQ(modeFromWord(word), m);
-        EXPECT_TRUE(parseScene("/sphere s 1 0 0 0\n/interp s " + word + "\n", "t.f2").ok()) << word;
+        // `bezier` takes four numbers after its word, the others none.
+        const std::string numbers = modeNumberCount(m) == 4 ? " 0.5 0 0.5 1" : "";
+        EXPECT_EQ(modeNumberCount(m), m == Interpolation::Bezier ? 4 : 0);
+        EXPECT_TRUE(parseScene("/sphere s 1 0 0 0\n/interp s " + word + numbers + "\n", "t.f2").ok()) << word;
     }
     EXPECT_FALSE(modeFromWord("smooth"));
     EXPECT_EQ(lightOptions().size(), 4u);

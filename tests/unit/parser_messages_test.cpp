@@ -93,7 +93,7 @@ TEST(UnusualCharacters, ANoBreakSpaceBetweenArgumentsIsNamedInTheCountError) {
     EXPECT_EQ(
         messages("/sphere s 1 0 0 0\n/key 0\u202Fs\n"),
         (Lines{
-            "2:1: error: '/key' takes 2 or 8 arguments (a frame, a target and 0 or 6 numbers), got 1 (it "
+            "2:1: error: '/key' takes 2 or 8 arguments (a time, a target and 0 or 6 numbers), got 1 (it "
             "contains U+202F NARROW NO-BREAK SPACE at column 7, which does not separate tokens: only spaces "
             "and tabs do)"}));
 }
@@ -141,7 +141,7 @@ TEST(UnusualCharacters, InvisibleCharactersInNamesAndTargets) {
     EXPECT_EQ(messages("/robot r 0 0 0\n/interp r ease\u200D\n"),
               (Lines{"2:11: error: unknown interpolation 'ease\u200D' (expected linear, ease, ease_in, "
                      "ease_out, step, "
-                     "spline, back, elastic or bounce; it contains "
+                     "spline, back, elastic, bounce or bezier; it contains "
                      "U+200D ZERO WIDTH JOINER at column 15, an invisible character: delete it)"}));
 }
 
@@ -295,7 +295,7 @@ TEST(SceneWarnings, ASecondInterpForTheSameTarget) {
     // A broken /interp does not count as the first.
     EXPECT_EQ(messages("/robot r1 0 0 0\n/amb_light 1\n/interp r1 cubic\n/interp r1 ease\n"),
               (Lines{"3:12: error: unknown interpolation 'cubic' (expected linear, ease, ease_in, ease_out, "
-                     "step, spline, back, elastic or bounce)"}));
+                     "step, spline, back, elastic, bounce or bezier)"}));
 }
 
 }  // namespace

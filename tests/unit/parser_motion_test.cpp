@@ -3,6 +3,7 @@
 // exact line and column.
 #include <gtest/gtest.h>
 
+#include "core/parse/language.h"
 #include "core/parse/parser.h"
 #include "test_scenes.h"
 
@@ -133,13 +134,14 @@ TEST(ParserAttach, TreesWithoutCyclesAreFine) {
 
 // 9.3 Interpolation per key
 TEST(ParserModes, EveryModeWordOnKeysAndInterp) {
-    for (std::string_view word : {"linear", "ease", "ease_in", "ease_out", "step", "spline"}) {
+    for (std::string_view word : {"linear", "ease", "ease_in", "ease_out", "step", "spline", "back",
+                                  "elastic", "bounce", "bezier 0.25 0.1 0.25 1"}) {
         const std::string w(word);
         const SceneDesc s = sceneFromText("/robot r 0 0 0\n/interp r " + w + "\n/key 0 r " + w +
                                           "\n/key 1 r.head 0 0 0 1 2 3 " + w + "\n");
-        EXPECT_EQ(interpolationName(s.objects[0].track.interpolation), word);
-        EXPECT_EQ(interpolationName(*s.objects[0].track.keys[0].mode), word);
-        EXPECT_EQ(interpolationName(*s.objects[0].partTracks[std::size_t(PartId::Head)].keys[0].mode), word);
+        EXPECT_EQ(easingText(s.objects[0].track.interpolation), word);
+        EXPECT_EQ(easingText(*s.objects[0].track.keys[0].mode), word);
+        EXPECT_EQ(easingText(*s.objects[0].partTracks[std::size_t(PartId::Head)].keys[0].mode), word);
     }
 }
 
@@ -147,7 +149,7 @@ TEST(ParserModes, Errors) {
     const std::string a = "/sphere a 1 0 0 0\n";
     expectOnlyError(a + "/key 0 a 1 2 3 4 5 6 wobble\n", 2, 22,
                     "unknown interpolation 'wobble' (expected linear, ease, ease_in, ease_out, step, spline, "
-                    "back, elastic or bounce)");
+                    "back, elastic, bounce or bezier)");
     expectOnlyError(a + "/key 0 a Ease\n", 2, 10, "unknown interpolation 'Ease'");  // lower case only
     expectOnlyError(a + "/interp a easein\n", 2, 11, "unknown interpolation 'easein'");
     expectOnlyError("/interp camera wobble\n", 1, 16, "unknown interpolation 'wobble'");
@@ -158,6 +160,27 @@ TEST(ParserModes, Errors) {
     // Longer than any key: its last word is past the stored tokens (found by the fuzzer).
     expectOnlyError(a + "/key 0 a 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 ease\n", 2, 1,
                     "'/key' takes 0 or 6 numbers after the target, got 18");
+}
+
+// 10.4 bezier x1 y1 x2 y2: its numbers, their ranges, and where each error points.
+TEST(ParserModes, BezierErrors) {
+    const std::string a = "/sphere a 1 0 0 0\n";
+    expectOnlyError(a + "/key 0 a bezier\n", 2, 10, "'bezier' takes 4 numbers after it (x1 y1 x2 y2), got 0");
+    expectOnlyError(a + "/key 0 a 1 2 3 4 5 6 bezier 0 0\n", 2, 22,
+                    "'bezier' takes 4 numbers after it (x1 y1 x2 y2), got 2");
+    expectOnlyError(a + "/interp a bezier 0 0 1\n", 2, 1, "'/interp' takes 2 or 6 arguments, got 5");
+    expectOnlyError(a + "/interp a ease 0 0 1 1\n", 2, 11, "'ease' takes no numbers after it, got 4");
+    expectOnlyError(a + "/key 0 a bezier 1.5 0 1 1\n", 2, 17, "bezier's x1 must be from 0 to 1, got 1.5");
+    expectOnlyError(a + "/interp a bezier 0 0 -0.1 1\n", 2, 22, "bezier's x2 must be from 0 to 1, got -0.1");
+    expectOnlyError(a + "/key 0 a bezier 0 y 1 1\n", 2, 19, "expected a number, got 'y'");
+    // y may leave [0, 1] (an overshoot, as in CSS).
+    const SceneDesc s = sceneFromText(a + "/key 0 a bezier 0.3 -0.5 0.7 1.5\n");
+    EXPECT_EQ(s.objects[0].track.keys[0].mode, (Easing{Interpolation::Bezier, {0.3f, -0.5f, 0.7f, 1.5f}}));
+    // Seconds stand only where a key time does.
+    expectOnlyError("/sphere a 2s 0 0 0\n", 1, 11,
+                    "a time in seconds ('2s') stands only where a key time does; here a number is expected");
+    expectOnlyError("/sphere a (1+1)s 0 0 0\n", 1, 11,
+                    "a time in seconds ('(1+1)s') stands only where a key time does");
 }
 
 }  // namespace

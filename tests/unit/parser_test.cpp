@@ -58,9 +58,9 @@ Pose makePose(float px, float py, float pz, float rx, float ry, float rz) {
     return {{px, py, pz}, {rx, ry, rz}};
 }
 
-std::vector<int> framesOf(const Track& t) {
-    std::vector<int> frames;
-    for (const Key& k : t.keys) frames.push_back(k.frame);
+std::vector<double> framesOf(const Track& t) {
+    std::vector<double> frames;
+    for (const Key& k : t.keys) frames.push_back(k.time);
     return frames;
 }
 
@@ -355,11 +355,11 @@ TEST(Parser, KeyWithoutNumbersUsesRestState) {
         "/key 8 r1.head\n");
     const SceneObject& r = object(s, "r1");
     ASSERT_EQ(r.track.keys.size(), 1u);
-    EXPECT_EQ(r.track.keys[0].frame, 7);
+    EXPECT_EQ(r.track.keys[0].time, 7);
     EXPECT_EQ(r.track.keys[0].pose, r.rest);  // the object as created
     const Track& head = partTrack(r, PartId::Head);
     ASSERT_EQ(head.keys.size(), 1u);
-    EXPECT_EQ(head.keys[0].frame, 8);
+    EXPECT_EQ(head.keys[0].time, 8);
     EXPECT_EQ(head.keys[0].pose, Pose{});  // zero offset and rotation
     EXPECT_TRUE(partTrack(r, PartId::Body).keys.empty());
     EXPECT_EQ(s.lastFrame(), 8);
@@ -372,7 +372,7 @@ TEST(Parser, KeyWithSixNumbersOnObjectPrimitiveAndPart) {
         "/key 1e1 b -1 -2 -3 -4 -5 -6\n"
         "/key 15 r1.lhand 0 0 0 120 45 0\n");
     EXPECT_EQ(object(s, "r1").track.keys[0].pose, makePose(1, 2, 3, 4, 5, 6));
-    EXPECT_EQ(object(s, "b").track.keys[0].frame, 10);
+    EXPECT_EQ(object(s, "b").track.keys[0].time, 10);
     EXPECT_EQ(object(s, "b").track.keys[0].pose, makePose(-1, -2, -3, -4, -5, -6));
     const Track& l = partTrack(object(s, "r1"), PartId::LHand);
     ASSERT_EQ(l.keys.size(), 1u);
@@ -385,7 +385,7 @@ TEST(Parser, KeysAreSortedByFrame) {
         "/sphere s 1 0 0 0\n"
         "/key 30 s 3 0 0 0 0 0\n/key 10 s 1 0 0 0 0 0\n/key 20 s 2 0 0 0 0 0\n/key 0 s\n");
     const Track& t = object(s, "s").track;
-    EXPECT_EQ(framesOf(t), (std::vector<int>{0, 10, 20, 30}));
+    EXPECT_EQ(framesOf(t), (std::vector<double>{0, 10, 20, 30}));
     EXPECT_FLOAT_EQ(t.keys[1].pose.position.x, 1);
     EXPECT_FLOAT_EQ(t.keys[2].pose.position.x, 2);
     EXPECT_FLOAT_EQ(t.keys[3].pose.position.x, 3);
@@ -431,7 +431,7 @@ TEST(Parser, DuplicateKeyOutOfOrderReplacesWithWarningInFileOrder) {
         kFile);
     ASSERT_TRUE(r.ok()) << dump(r);
     const Track& t = partTrack(r.scene->objects[0], PartId::Head);
-    EXPECT_EQ(framesOf(t), (std::vector<int>{0, 5, 9}));
+    EXPECT_EQ(framesOf(t), (std::vector<double>{0, 5, 9}));
     EXPECT_FLOAT_EQ(t.keys[1].pose.position.x, 2);
 }
 
@@ -495,16 +495,16 @@ TEST(Parser, SeedExampleOfSpec8) {
     const SceneObject& r1 = s.objects[1];
     EXPECT_EQ(r1.kind, ObjectKind::Robot);
     EXPECT_EQ(r1.rest, makePose(0, 0, 200, 0, 180, 0));
-    ASSERT_EQ(framesOf(r1.track), (std::vector<int>{0, 5}));
+    ASSERT_EQ(framesOf(r1.track), (std::vector<double>{0, 5}));
     EXPECT_EQ(r1.track.keys[0].pose, r1.rest);
     EXPECT_EQ(r1.track.keys[1].pose, makePose(0, 0, 200, 0, 135, 0));
     const Track& l = partTrack(r1, PartId::LHand);
-    ASSERT_EQ(framesOf(l), (std::vector<int>{0, 5, 15}));
+    ASSERT_EQ(framesOf(l), (std::vector<double>{0, 5, 15}));
     EXPECT_EQ(l.keys[0].pose, Pose{});
     EXPECT_EQ(l.keys[1].pose, Pose{});
     EXPECT_EQ(l.keys[2].pose, makePose(0, 0, 0, 120, 45, 0));
     const Track& rh = partTrack(r1, PartId::RHand);
-    ASSERT_EQ(framesOf(rh), (std::vector<int>{0, 5, 15}));
+    ASSERT_EQ(framesOf(rh), (std::vector<double>{0, 5, 15}));
     EXPECT_EQ(rh.keys[2].pose, makePose(0, 0, 0, 120, -45, 0));
     EXPECT_TRUE(partTrack(r1, PartId::Head).keys.empty());
 
@@ -624,7 +624,7 @@ TEST(ParserError, WrongArgumentCountPointsAtTheCommand) {
     expectError("/sphere s 1 0 0 0\n/paint s 1 2\n", 2, 1, "'/paint' takes 4 arguments, got 3");
     expectError("/sphere s 1 0 0 0\n/material s 1 1 1\n", 2, 1, "'/material' takes 5 or 6 arguments, got 4");
     expectError("/anim\n", 1, 1, "'/anim' takes 1 or 2 arguments, got 0");
-    expectError("/interp s\n", 1, 1, "'/interp' takes 2 arguments, got 1");
+    expectError("/interp s\n", 1, 1, "'/interp' takes 2 or 6 arguments, got 1");
     // Many tokens are counted even beyond the ones the lexer keeps.
     std::string many = "/fps";
     for (int i = 0; i < 50; ++i) many += " 1";
@@ -740,11 +740,15 @@ TEST(ParserError, FpsValues) {
 
 TEST(ParserError, KeyFrameValues) {
     const std::string base = "/sphere s 1 0 0 0\n";
-    expectError(base + "/key -1 s\n", 2, 6, "key frame must be a whole number from 0 to 10000000, got -1");
-    expectError(base + "/key 1.5 s\n", 2, 6, "key frame must be a whole number from 0 to 10000000, got 1.5");
-    expectError(base + "/key 10000001 s\n", 2, 6,
-                "key frame must be a whole number from 0 to 10000000, got 10000001");
+    expectError(base + "/key -1 s\n", 2, 6, "a key time must be >= 0, got -1");
+    expectError(base + "/key -0.5s s\n", 2, 6, "a key time must be >= 0, got -0.5s");
+    expectError(base + "/key 10000001 s\n", 2, 6, "a key time must be at most 10000000 frames, got 10000001");
     expectError(base + "/key 1e8 s\n", 2, 6, "got 1e8");
+    expectError(base + "/key 1.5x s\n", 2, 6, "expected a number, got '1.5x'");
+    expectError(base + "/key s s\n", 2, 6, "expected a number, got 's'");
+    // Seconds at the scene's fps, wherever /fps stands (here 25 fps: 400,001 s is over the limit).
+    expectError(base + "/key 400001s s\n/fps 25\n", 2, 6,
+                "a key time must be at most 10000000 frames, got 400001 s = 10000025 frames at 25 fps");
     const SceneDesc s = parseOk(base + "/key 1e7 s\n");  // the limit itself is fine
     EXPECT_EQ(s.lastFrame(), 10'000'000);
 }
@@ -752,7 +756,7 @@ TEST(ParserError, KeyFrameValues) {
 TEST(ParserError, UnknownInterpolation) {
     expectError("/sphere s 1 0 0 0\n/interp s cubic\n", 2, 11,
                 "unknown interpolation 'cubic' (expected linear, ease, ease_in, ease_out, step, spline, "
-                "back, elastic or bounce)");
+                "back, elastic, bounce or bezier)");
     expectError("/sphere s 1 0 0 0\n/interp s Linear\n", 2, 11, "unknown interpolation 'Linear'");
 }
 
@@ -1024,7 +1028,7 @@ TEST(ParserLimits, AMillionLinesWithOutOfOrderKeysParse) {
     ASSERT_TRUE(r.ok());
     EXPECT_EQ(r.scene->objects.size(), 1000u);
     EXPECT_EQ(r.scene->objects[1].track.keys.size(), 999u);
-    EXPECT_EQ(r.scene->objects[1].track.keys.front().frame, 1);
+    EXPECT_EQ(r.scene->objects[1].track.keys.front().time, 1);
     EXPECT_EQ(r.scene->lastFrame(), 999);
     // No bound on the time, only printed: a unit test must not depend on the
     // machine's speed or load (0.7 s optimised, 119 s under ASan on a loaded machine).

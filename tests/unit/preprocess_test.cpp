@@ -139,7 +139,7 @@ TEST(NameInterpolation, BracesGiveWholeNumbers) {
     EXPECT_EQ(names(s), (std::vector<std::string>{"r3", "r20_2", "big1000"}));
     EXPECT_EQ(s.objects[0].appearance[0].color, (Color8{1, 2, 3}));
     ASSERT_EQ(s.objects[0].track.keys.size(), 1u);
-    EXPECT_EQ(s.objects[0].track.keys[0].frame, 4);
+    EXPECT_EQ(s.objects[0].track.keys[0].time, 4);
 }
 
 TEST(NameInterpolation, Errors) {

@@ -120,7 +120,7 @@ TEST(Robustness, HugeNumbersAreOutOfRange) {
     expectOneError("/fps 4294967297\n",
                    "t.f2:1:6: error: fps must be a whole number from 1 to 1000, got 4294967297");
     expectOneError("/sphere s 1 0 0 0\n/key 2147483648 s\n",
-                   "t.f2:2:6: error: key frame must be a whole number from 0 to 10000000, got 2147483648");
+                   "t.f2:2:6: error: a key time must be at most 10000000 frames, got 2147483648");
 }
 
 TEST(Robustness, LongButSmallNumbersAreAccepted) {
@@ -139,7 +139,8 @@ TEST(Robustness, NegativeZeroIsZero) {
         test::sceneFromText("/sphere s 1 -0 -0.0 -0e5 -0 -0 -0\n/key -0 s\n/background -0 -0 -0\n");
     EXPECT_FALSE(std::signbit(s.objects[0].rest.position.x));
     EXPECT_FALSE(std::signbit(s.objects[0].rest.rotation.z));
-    EXPECT_EQ(s.objects[0].track.keys.at(0).frame, 0);
+    EXPECT_EQ(s.objects[0].track.keys.at(0).time, 0);
+    EXPECT_FALSE(std::signbit(s.objects[0].track.keys.at(0).time));
     expectOneError("/camera -0 10 1\n",
                    "t.f2:1:9: error: image width must be a whole number from 1 to 16384, got -0");
     expectOneError("/dir_light 1 -0 0 -0\n", "t.f2:1:14: error: light direction must not be 0 0 0");

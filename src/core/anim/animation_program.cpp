@@ -110,14 +110,16 @@ class Compiler {
     std::uint32_t layoutOf(const Track& track) {
         std::string key;
         for (std::size_t i = 0; i < track.keys.size(); ++i) {
-            appendBytes(key, track.keys[i].frame);
-            appendBytes(key, track.modeAfter(i));
+            const Easing& easing = track.modeAfter(i);
+            appendBytes(key, track.keys[i].time);
+            appendBytes(key, easing.mode);  // field by field: Easing has padding
+            appendBytes(key, easing.curve);
         }
         auto [it, added] = layoutIndex_.try_emplace(std::move(key), std::uint32_t(p_.layouts.size()));
         if (added) {
             p_.layouts.push_back({std::uint32_t(p_.frames.size()), std::uint32_t(track.keys.size())});
             for (std::size_t i = 0; i < track.keys.size(); ++i) {
-                p_.frames.push_back(track.keys[i].frame);
+                p_.frames.push_back(track.keys[i].time);
                 p_.modes.push_back(track.modeAfter(i));
             }
         }
@@ -180,11 +182,11 @@ std::shared_ptr<const AnimationProgram> AnimationProgram::compile(const SceneDes
 void AnimationProgram::segmentsAt(double t, std::vector<TrackSegment>& segments) const {
     segments.resize(layouts.size());
     for (std::size_t l = 0; l < layouts.size(); ++l) {
-        const int* keyFrames = &frames[layouts[l].first];
-        const Interpolation* keyModes = &modes[layouts[l].first];
+        const double* keyFrames = &frames[layouts[l].first];
+        const Easing* keyModes = &modes[layouts[l].first];
         segments[l] = segmentAt(
             layouts[l].count, [keyFrames](std::uint32_t i) { return keyFrames[i]; },
-            [keyModes](std::uint32_t i) { return keyModes[i]; }, t);
+            [keyModes](std::uint32_t i) -> const Easing& { return keyModes[i]; }, t);
     }
 }
 

@@ -85,8 +85,8 @@ struct AnimationProgram {
     std::vector<AnimatedTrack> tracks;
     std::vector<Pose> poses;  ///< keys' poses, track after track in scene order
     std::vector<KeyLayout> layouts;
-    std::vector<int> frames;           ///< key frames of the layouts
-    std::vector<Interpolation> modes;  ///< mode from each key to the next, of the layouts
+    std::vector<double> frames;  ///< key times (frames) of the layouts
+    std::vector<Easing> modes;   ///< mode from each key to the next, of the layouts
     std::vector<TurnTrack> turnTracks;
     std::vector<float> angles;  ///< keys' angles of the turn tracks, track after track
     std::vector<ConstantMotion> constantMotions;

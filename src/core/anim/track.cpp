@@ -38,8 +38,29 @@ double bounceFraction(double u) {
     return n * v * v + 0.984375;
 }
 
-double interpolationWeight(Interpolation mode, double u) {
-    switch (mode) {
+double bezierFraction(const BezierCurve& curve, double u) {
+    if (u <= 0.0) return 0.0;
+    if (u >= 1.0) return 1.0;
+    // B(s) = 3(1−s)²s·c1 + 3(1−s)s²·c2 + s³, for x and for y.
+    auto along = [](double c1, double c2, double s) {
+        const double r = 1.0 - s;
+        return 3.0 * r * r * s * c1 + 3.0 * r * s * s * c2 + s * s * s;
+    };
+    // Bisection, not Newton: the same steps for every u, so w(u) is one exact
+    // function of u on every machine; 30 halvings leave s within 1e-9.
+    double lo = 0.0, hi = 1.0;
+    for (int step = 0; step < 30; ++step) {
+        const double mid = 0.5 * (lo + hi);
+        if (along(curve.x1, curve.x2, mid) < u)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return along(curve.y1, curve.y2, 0.5 * (lo + hi));
+}
+
+double interpolationWeight(const Easing& easing, double u) {
+    switch (easing.mode) {
         case Interpolation::Ease:
             return easeFraction(u);
         case Interpolation::EaseIn:
@@ -56,6 +77,8 @@ double interpolationWeight(Interpolation mode, double u) {
             return elasticFraction(u);
         case Interpolation::Bounce:
             return bounceFraction(u);
+        case Interpolation::Bezier:
+            return bezierFraction(easing.curve, u);
         case Interpolation::Linear:
         case Interpolation::Spline:
             break;
@@ -67,8 +90,8 @@ Pose evaluateTrack(const Track& track, double t, const Pose& rest) {
     const std::vector<Key>& keys = track.keys;
     if (keys.empty()) return rest;
     const TrackSegment segment = segmentAt(
-        keys.size(), [&](std::size_t i) { return keys[i].frame; },
-        [&](std::size_t i) { return track.modeAfter(i); }, t);
+        keys.size(), [&](std::size_t i) { return keys[i].time; },
+        [&](std::size_t i) -> const Easing& { return track.modeAfter(i); }, t);
     return poseInSegment(segment, [&](std::size_t i) -> const Pose& { return keys[i].pose; });
 }
 

@@ -29,10 +29,15 @@ double backFraction(double u);
 double elasticFraction(double u);
 double bounceFraction(double u);
 
+/// SPEC 10.4's `bezier x1 y1 x2 y2`, CSS's cubic-bezier: y(s) where x(s) = u,
+/// s found by bisection to within 1e-9 (the curve's x is monotonic for x1 and
+/// x2 in [0, 1]); exactly 0 at u <= 0 and 1 at u >= 1.
+double bezierFraction(const BezierCurve& curve, double u);
+
 /// w(u) of SPEC 9.3 for the modes that blend two keys, P1 + (P2 - P1)·w(u):
 /// linear u, ease 3u² − 2u³, ease_in u³, ease_out 1 − (1 − u)³, step 0, and
-/// back, elastic, bounce above. (spline is not a blend of two keys: see catmullRom.)
-double interpolationWeight(Interpolation mode, double u);
+/// back, elastic, bounce, bezier above. (spline is not a blend of two keys: see catmullRom.)
+double interpolationWeight(const Easing& easing, double u);
 
 /// Uniform Catmull-Rom between p1 and p2 with neighbours p0, p3, at u in [0, 1].
 /// Inline: evaluation computes it for six channels at once.
@@ -55,9 +60,9 @@ struct TrackSegment {
     double weight = 0;                             ///< w(u) for Blend, u for Spline
 };
 
-/// The segment of time `t` among `keyCount` keys (at least one) whose frames,
+/// The segment of time `t` among `keyCount` keys (at least one) whose times,
 /// sorted and unique, are `frameOf(i)` and whose segment modes are `modeOf(i)`
-/// (the mode from key i to key i + 1). NaN gives the first key.
+/// (the Easing from key i to key i + 1). NaN gives the first key.
 template <class FrameOf, class ModeOf>
 TrackSegment segmentAt(std::size_t keyCount, FrameOf frameOf, ModeOf modeOf, double t) {
     const std::uint32_t last = std::uint32_t(keyCount - 1);
@@ -75,8 +80,9 @@ TrackSegment segmentAt(std::size_t keyCount, FrameOf frameOf, ModeOf modeOf, dou
             lo = mid + 1;
     }
     const std::uint32_t i2 = lo, i1 = i2 - 1;
-    const double u = (t - frameOf(i1)) / double(frameOf(i2) - frameOf(i1));
-    const Interpolation mode = modeOf(i1);
+    const double u = (t - frameOf(i1)) / (frameOf(i2) - frameOf(i1));
+    const Easing& easing = modeOf(i1);
+    const Interpolation mode = easing.mode;
     if (mode == Interpolation::Step)
         return {TrackSegment::Kind::Hold, i1, i1, i1, i1, 0};  // until the next key
     if (mode == Interpolation::Spline) {
@@ -84,7 +90,7 @@ TrackSegment segmentAt(std::size_t keyCount, FrameOf frameOf, ModeOf modeOf, dou
         // key stands in for a missing one.
         return {TrackSegment::Kind::Spline, i1 == 0 ? i1 : i1 - 1, i1, i2, i2 < last ? i2 + 1 : i2, u};
     }
-    return {TrackSegment::Kind::Blend, i1, i1, i2, i2, interpolationWeight(mode, u)};
+    return {TrackSegment::Kind::Blend, i1, i1, i2, i2, interpolationWeight(easing, u)};
 }
 
 /// One channel in a Blend or Spline `segment`, from that channel of keys p0..p3.

@@ -1,6 +1,7 @@
 #include "core/parse/language.h"
 
 #include <array>
+#include <charconv>
 
 namespace f2 {
 
@@ -104,14 +105,16 @@ constexpr std::array<CommandSpec, 24> kCommands = {{
     {CommandId::Key, "/key", Edition::First, CommandGroup::Motion, kKey,
      "/key <t> <target> [<px> <py> <pz> <rx> <ry> <rz>] [<mode>]",
      "/key ${1:0} ${2:target} ${3:0} ${4:0} ${5:0} ${6:0} ${7:0} ${8:0}",
-     "Frame `t` is a key of `target`: an object's absolute position and rotation, or a part's "
-     "offset from its pivot and rotation about it. Without the six numbers: the rest state.",
+     "Time `t` is a key of `target`: an object's absolute position and rotation, or a part's "
+     "offset from its pivot and rotation about it. Without the six numbers: the rest state. "
+     "`t` is in frames (fractions allowed) or, as `2.5s` or `(expr)s`, in seconds at the scene's `/fps`.",
      true},
     {CommandId::Interp, "/interp", Edition::First, CommandGroup::Motion, kInterp, "/interp <target> <mode>",
      "/interp ${1:target} ${2|linear,ease,spline|}",
      "How the target moves between its keys: `linear` (default), `ease` (smoothstep), `spline` "
      "(Catmull-Rom through the keys); in the second edition `ease_in`, `ease_out`, `step`; in the "
-     "third `back` (overshoots), `elastic` (wobbles), `bounce`.",
+     "third `back` (overshoots), `elastic` (wobbles), `bounce`, `bezier x1 y1 x2 y2` (CSS's "
+     "cubic-bezier).",
      true},
     {CommandId::Fps, "/fps", Edition::First, CommandGroup::Setting, kNumbers, "/fps <n>", "/fps ${1:24}",
      "Playback frames per second, 1..1000 (default 24).", false},
@@ -151,10 +154,10 @@ constexpr std::array<LightOptionSpec, 4> kLightOptions = {{
     {LightOption::Tightness, "tightness", 1, "a number"},
 }};
 
-constexpr std::array<Interpolation, 9> kModes = {
-    Interpolation::Linear,  Interpolation::Ease,    Interpolation::EaseIn,
-    Interpolation::EaseOut, Interpolation::Step,    Interpolation::Spline,
-    Interpolation::Back,    Interpolation::Elastic, Interpolation::Bounce};
+constexpr std::array<Interpolation, 10> kModes = {
+    Interpolation::Linear, Interpolation::Ease,   Interpolation::EaseIn, Interpolation::EaseOut,
+    Interpolation::Step,   Interpolation::Spline, Interpolation::Back,   Interpolation::Elastic,
+    Interpolation::Bounce, Interpolation::Bezier};
 
 }  // namespace
 
@@ -192,6 +195,23 @@ std::optional<Interpolation> modeFromWord(std::string_view word) {
         if (interpolationName(m) == word) return m;
     }
     return std::nullopt;
+}
+
+int modeNumberCount(Interpolation mode) { return mode == Interpolation::Bezier ? 4 : 0; }
+
+std::string easingText(const Easing& easing) {
+    std::string text(interpolationName(easing.mode));
+    if (easing.mode == Interpolation::Bezier) {
+        for (float v : {easing.curve.x1, easing.curve.y1, easing.curve.x2, easing.curve.y2}) {
+            // The float's own shortest form: 0.1, not 0.10000000149011612.
+            std::array<char, 32> buffer{};
+            const auto written =
+                std::to_chars(buffer.data(), buffer.data() + buffer.size(), v == 0 ? 0.0f : v);
+            text += ' ';
+            text.append(buffer.data(), written.ptr);
+        }
+    }
+    return text;
 }
 
 }  // namespace f2

@@ -109,6 +109,10 @@ std::span<const LightOptionSpec> lightOptions();
 std::span<const Interpolation> interpolationModes();
 /// The mode named `word`, if any.
 std::optional<Interpolation> modeFromWord(std::string_view word);
+/// How many numbers follow the mode's word: 4 for `bezier x1 y1 x2 y2`, else 0.
+int modeNumberCount(Interpolation mode);
+/// The mode's words as written: "ease_in", or "bezier 0.25 0.1 0.25 1".
+std::string easingText(const Easing& easing);
 
 /// The name of the scene camera as a target (SPEC 9.1); no object may take it.
 inline constexpr std::string_view kCameraName = "camera";

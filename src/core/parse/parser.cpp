@@ -83,6 +83,15 @@ struct TrackBook {
     Target target;
     std::vector<Pos> origins;
     bool sorted = true;  ///< keys arrived in increasing frame order so far
+    /// Keys whose time is still in seconds (SPEC 10.4), turned into frames at
+    /// the end of the file, when `/fps` is known.
+    std::vector<std::uint32_t> inSeconds;
+};
+
+/// A key time as written (SPEC 10.4): frames, or seconds (`2.5s`, `(expr)s`).
+struct KeyTime {
+    double value = 0;
+    bool seconds = false;
 };
 
 /// Parse-time bookkeeping of one object.
@@ -99,9 +108,9 @@ struct ObjectBook {
 /// A `/key` of the camera, kept until the end of the file: a key without
 /// numbers takes `/camera`'s pose, wherever `/camera` stands (SPEC 9.1).
 struct CameraKey {
-    int frame = 0;
+    KeyTime time;
     std::optional<Pose> pose;
-    std::optional<Interpolation> mode;
+    std::optional<Easing> mode;
     Pos origin;
 };
 
@@ -139,6 +148,7 @@ class Parser : private ExpansionSink {
         }
         while (!stopped_ && expander_.next(tokens_)) parseLine();
         addCameraKeys();
+        convertSecondsToFrames();
         sortUnsortedTracks();
         orderAttachments();
         if (errors_ == 0) warnAboutTheWholeScene();
@@ -390,9 +400,44 @@ class Parser : private ExpansionSink {
         }
         const ParsedNumber n = parseNumber(token.text);
         if (n.status == NumberStatus::Ok) return n.value;
-        error(argPos(i), noteCharacters(numberErrorMessage(token.text, n.status), token.text, argPos(i)));
+        if (secondsValue(token.text)) {
+            error(argPos(i), "a time in seconds (" + quoteToken(token.written) +
+                                 ") stands only where a key time does; here a number is expected");
+        } else {
+            error(argPos(i), noteCharacters(numberErrorMessage(token.text, n.status), token.text, argPos(i)));
+        }
         ok = false;
         return 0;
+    }
+
+    /// The number of seconds in `2.5s` (an expression `(…)s` arrives so too), if `text` is one.
+    static std::optional<double> secondsValue(std::string_view text) {
+        if (text.size() < 2 || text.back() != 's') return std::nullopt;
+        const ParsedNumber n = parseNumber(text.substr(0, text.size() - 1));
+        if (n.status != NumberStatus::Ok) return std::nullopt;
+        return n.value;
+    }
+
+    /// A key time (SPEC 10.4): a number of frames >= 0, fractions allowed, or
+    /// seconds. Seconds are checked against the frame limit once `/fps` is known.
+    KeyTime keyTime(int i, bool& ok) {
+        KeyTime time;
+        if (argToken(i).form == TokenForm::Word) {
+            if (const std::optional<double> seconds = secondsValue(arg(i))) time = {*seconds, true};
+        }
+        bool good = true;
+        if (!time.seconds) time.value = number(i, good);
+        if (good && time.value < 0) {
+            error(argPos(i), "a key time must be >= 0, got " + printable(arg(i)));
+            good = false;
+        } else if (good && !time.seconds && time.value > limits_.maxKeyFrame) {
+            error(argPos(i), "a key time must be at most " + std::to_string(limits_.maxKeyFrame) +
+                                 " frames, got " + printable(arg(i)));
+            good = false;
+        }
+        ok = ok && good;
+        if (time.value == 0) time.value = 0;  // -0 is 0, as for the other numbers
+        return good ? time : KeyTime{};
     }
 
     float real(int i, bool& ok) { return static_cast<float>(number(i, ok)); }
@@ -973,9 +1018,9 @@ class Parser : private ExpansionSink {
     }
 
     void parseInterp() {
-        if (!expectArgs({2})) return;
+        if (!expectArgs({2, 6})) return;
         const std::optional<Target> t = target(0, CameraTarget::Accepted);
-        const std::optional<Interpolation> mode = interpolationMode(1);
+        const std::optional<Easing> mode = easing(1, argCount());
         if (!t || !mode) return;
         std::optional<Pos>& before =
             t->camera ? cameraInterp_ : books_[t->object].interps[static_cast<std::size_t>(t->part + 1)];
@@ -1021,19 +1066,26 @@ class Parser : private ExpansionSink {
         }
         const int n = argCount();
         if (n < 2) {
-            error(
-                commandPos(),
-                noteCharacters("'/key' takes 2 or 8 arguments (a frame, a target and 0 or 6 numbers), got " +
-                                   std::to_string(n),
-                               commandLine(), commandPos()));
+            error(commandPos(),
+                  noteCharacters("'/key' takes 2 or 8 arguments (a time, a target and 0 or 6 numbers), got " +
+                                     std::to_string(n),
+                                 commandLine(), commandPos()));
             return;
         }
-        // A last argument that is a word, not a number, is the key's mode (SPEC 9.3).
-        // Only a line short enough to be a key has its last token stored.
-        constexpr int kMostKeyArgs = 9;  // frame, target, six numbers, mode
-        const bool hasMode = n > 2 && n <= kMostKeyArgs && argToken(n - 1).form == TokenForm::Word &&
-                             !arg(n - 1).empty() && isNameStart(arg(n - 1).front());
-        const int numbers = n - 2 - (hasMode ? 1 : 0);
+        // The key's mode (SPEC 9.3) is a last argument that is a word, or a
+        // mode with numbers after it (`bezier x1 y1 x2 y2`, SPEC 10.4). Only a
+        // line short enough to be a key has its tokens stored.
+        constexpr int kMostKeyArgs = 13;  // time, target, six numbers, bezier and its four
+        int modeAt = n;
+        if (n <= kMostKeyArgs) {
+            for (int i = 2; i < n && modeAt == n; ++i) {
+                if (!isWordArgument(i)) continue;
+                const std::optional<Interpolation> mode = modeFromWord(arg(i));
+                if (mode && modeNumberCount(*mode) > 0) modeAt = i;
+            }
+            if (modeAt == n && n > 2 && isWordArgument(n - 1)) modeAt = n - 1;
+        }
+        const int numbers = modeAt - 2;
         if (numbers != 0 && numbers != 6) {
             error(commandPos(), noteCharacters("'/key' takes 0 or 6 numbers after the target, got " +
                                                    std::to_string(numbers),
@@ -1041,31 +1093,73 @@ class Parser : private ExpansionSink {
             return;
         }
         bool ok = true;
-        const int frame = whole(0, "key frame", 0, limits_.maxKeyFrame, ok);
+        const KeyTime time = keyTime(0, ok);
         const std::optional<Target> t = target(1, CameraTarget::Accepted);
         Pose p;
         if (numbers == 6) p = pose(2, true, ok);
-        std::optional<Interpolation> mode;
-        if (hasMode) {
-            mode = interpolationMode(n - 1);
+        std::optional<Easing> mode;
+        if (modeAt < n) {
+            mode = easing(modeAt, n);
             ok = ok && mode.has_value();
         }
         if (!t || !ok) return;
         if (t->camera) {
             // `/camera` may come later: its pose is filled in at the end.
             cameraKeys_.push_back(
-                {frame, numbers == 6 ? std::optional<Pose>(p) : std::nullopt, mode, argPos(0)});
+                {time, numbers == 6 ? std::optional<Pose>(p) : std::nullopt, mode, argPos(0)});
             return;
         }
         // Without numbers: an object's pose as created, a part's zero offset and rotation.
         if (numbers == 0 && t->part < 0) p = scene_.objects[t->object].rest;
-        addKey(*t, {frame, p, mode}, argPos(0));
+        addKey(*t, time, {time.value, p, mode}, argPos(0));
+    }
+
+    /// Whether argument i is a word that may be a mode (not a number, not an expression).
+    bool isWordArgument(int i) const {
+        return argToken(i).form == TokenForm::Word && !arg(i).empty() && isNameStart(arg(i).front());
+    }
+
+    /// The mode word in argument i with the numbers after it up to argument
+    /// `end` (SPEC 9.3; `bezier x1 y1 x2 y2`, SPEC 10.4).
+    std::optional<Easing> easing(int i, int end) {
+        const std::optional<Interpolation> mode = interpolationMode(i);
+        if (!mode) return std::nullopt;
+        const int given = end - i - 1, wanted = modeNumberCount(*mode);
+        if (given != wanted) {
+            const std::string word = quoteToken(arg(i));
+            error(argPos(i), wanted == 0 ? word + " takes no numbers after it, got " + std::to_string(given)
+                                         : word + " takes 4 numbers after it (x1 y1 x2 y2), got " +
+                                               std::to_string(given));
+            return std::nullopt;
+        }
+        Easing out{*mode};
+        if (*mode == Interpolation::Bezier) {
+            bool ok = true;
+            auto unitX = [&](int k, std::string_view what) {
+                bool good = true;
+                const float v = real(k, good);
+                if (good && !(v >= 0 && v <= 1)) {
+                    error(argPos(k),
+                          "bezier's " + std::string(what) + " must be from 0 to 1, got " + printable(arg(k)));
+                    good = false;
+                }
+                ok = ok && good;
+                return v;
+            };
+            out.curve.x1 = unitX(i + 1, "x1");
+            out.curve.y1 = real(i + 2, ok);
+            out.curve.x2 = unitX(i + 3, "x2");
+            out.curve.y2 = real(i + 4, ok);
+            if (!ok) return std::nullopt;
+        }
+        return out;
     }
 
     /// The camera's keys, in file order, now that `/camera`'s pose is known.
     void addCameraKeys() {
         for (const CameraKey& k : cameraKeys_) {
-            addKey(Target{0, -1, true}, {k.frame, k.pose.value_or(scene_.camera.pose), k.mode}, k.origin);
+            addKey(Target{0, -1, true}, k.time, {k.time.value, k.pose.value_or(scene_.camera.pose), k.mode},
+                   k.origin);
         }
         cameraKeys_ = {};
     }
@@ -1075,30 +1169,54 @@ class Parser : private ExpansionSink {
         return books_[t.object].tracks[static_cast<std::size_t>(t.part + 1)];
     }
 
-    void addKey(Target t, const Key& key, Pos origin) {
-        const int frame = key.frame;
+    /// `key.time` is `time.value`: frames, or seconds until convertSecondsToFrames.
+    void addKey(Target t, KeyTime time, const Key& key, Pos origin) {
         Track& track = trackOf(t);
         int& bookIndex = trackBookIndex(t);
         if (bookIndex < 0) {
             bookIndex = static_cast<int>(trackBooks_.size());
-            trackBooks_.push_back({t, {}, true});
+            trackBooks_.push_back({t, {}, true, {}});
         }
         TrackBook& book = trackBooks_[static_cast<std::size_t>(bookIndex)];
+        if (time.seconds) {
+            // Its place among the keys is known only with `/fps`: the track is
+            // sorted at the end, and no key of it is replaced before that.
+            book.sorted = false;
+            book.inSeconds.push_back(static_cast<std::uint32_t>(track.keys.size()));
+        }
         // Keys in increasing order (the usual case) stay sorted as they come; a
         // track that goes back is sorted once at the end, so a reversed file of
         // n keys costs O(n log n), not O(n²).
         if (book.sorted && !track.keys.empty()) {
             Key& last = track.keys.back();
-            if (frame == last.frame) {
-                warnReplaced(t, frame, origin, book.origins.back());
+            if (key.time == last.time) {
+                warnReplaced(t, key.time, origin, book.origins.back());
                 last = key;
                 book.origins.back() = origin;
                 return;
             }
-            if (frame < last.frame) book.sorted = false;
+            if (key.time < last.time) book.sorted = false;
         }
         track.keys.push_back(key);
         book.origins.push_back(origin);
+    }
+
+    /// Keys written in seconds become frames at the scene's `/fps`, wherever it stands (SPEC 10.4).
+    void convertSecondsToFrames() {
+        for (TrackBook& book : trackBooks_) {
+            std::vector<Key>& keys = trackOf(book.target).keys;
+            for (std::uint32_t k : book.inSeconds) {
+                const double frames = keys[k].time * scene_.fps;
+                if (frames > limits_.maxKeyFrame) {
+                    error(book.origins[k], "a key time must be at most " +
+                                               std::to_string(limits_.maxKeyFrame) + " frames, got " +
+                                               formatNumber(keys[k].time) + " s = " + formatNumber(frames) +
+                                               " frames at " + std::to_string(scene_.fps) + " fps");
+                }
+                keys[k].time = frames;
+            }
+            book.inSeconds = {};
+        }
     }
 
     void parseLookAt() {
@@ -1208,8 +1326,8 @@ class Parser : private ExpansionSink {
         }
     }
 
-    void warnReplaced(Target t, int frame, Pos now, Pos before) {
-        warning(now, "key frame " + std::to_string(frame) + " of " + quoteToken(targetName(t)) +
+    void warnReplaced(Target t, double frame, Pos now, Pos before) {
+        warning(now, "key frame " + formatNumber(frame) + " of " + quoteToken(targetName(t)) +
                          " is given again; it replaces the key at " + posText(before));
     }
 
@@ -1222,13 +1340,13 @@ class Parser : private ExpansionSink {
             std::iota(order.begin(), order.end(), 0u);
             // Stable: keys of one frame stay in file order, so the last one wins.
             std::stable_sort(order.begin(), order.end(),
-                             [&](std::uint32_t a, std::uint32_t b) { return keys[a].frame < keys[b].frame; });
+                             [&](std::uint32_t a, std::uint32_t b) { return keys[a].time < keys[b].time; });
             std::vector<Key> sorted;
             sorted.reserve(keys.size());
             Pos lastOrigin;
             for (std::uint32_t k : order) {
-                if (!sorted.empty() && sorted.back().frame == keys[k].frame) {
-                    warnReplaced(t, keys[k].frame, book.origins[k], lastOrigin);
+                if (!sorted.empty() && sorted.back().time == keys[k].time) {
+                    warnReplaced(t, keys[k].time, book.origins[k], lastOrigin);
                     sorted.back() = keys[k];
                 } else {
                     sorted.push_back(keys[k]);

@@ -371,16 +371,22 @@ bool SourceExpander::evaluateTokens(LogicalLine& line, int first) {
         LogicalToken& token = line.tokens[static_cast<std::size_t>(i)];
         const std::size_t offset = storage_.size();
         if (token.text.starts_with('(')) {
-            const ExpressionResult r = evaluateParenthesized(token.text, variables_);
+            // `(expr)s` is a time in seconds (SPEC 10.4): it becomes the word
+            // `<value>s`, read as `2.5s` is.
+            const bool seconds = token.text.size() > 2 && token.text.ends_with(")s");
+            const std::string_view expression =
+                seconds ? token.text.substr(0, token.text.size() - 1) : token.text;
+            const ExpressionResult r = evaluateParenthesized(expression, variables_);
             if (!r.ok) {
                 if (!r.followOn) error(inExpression(token.column, r), r.message);
                 token.form = TokenForm::Failed;
                 ok = false;
                 continue;
             }
-            token.form = TokenForm::Expression;
+            token.form = seconds ? TokenForm::Word : TokenForm::Expression;
             token.value = r.value;
             storage_ += formatNumber(r.value);
+            if (seconds) storage_ += 's';
         } else if (token.text.find('{') != std::string_view::npos) {
             // Each { … } becomes the whole number its expression gives: r{i+1} -> r3.
             const std::string_view text = token.text;

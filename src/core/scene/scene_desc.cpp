@@ -1,6 +1,7 @@
 #include "core/scene/scene_desc.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/scene/models.h"
 
@@ -26,21 +27,23 @@ std::string_view interpolationName(Interpolation mode) {
             return "elastic";
         case Interpolation::Bounce:
             return "bounce";
+        case Interpolation::Bezier:
+            return "bezier";
     }
     return "linear";
 }
 
 int SceneDesc::lastFrame() const {
-    int last = 0;
+    double last = 0;
     auto scan = [&](const Track& t) {
-        if (!t.keys.empty()) last = std::max(last, t.keys.back().frame);
+        if (!t.keys.empty()) last = std::max(last, t.keys.back().time);
     };
     for (const SceneObject& o : objects) {
         scan(o.track);
         for (const Track& t : o.partTracks) scan(t);
     }
     scan(camera.track);
-    return last;
+    return int(std::ceil(last));
 }
 
 std::size_t SceneDesc::primitiveCount() const {

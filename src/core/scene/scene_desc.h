@@ -53,7 +53,7 @@ struct Appearance {
 };
 
 /// How a target moves from one key to the next (SPEC 6 and 9.3; back,
-/// elastic and bounce are SPEC 10.4's).
+/// elastic, bounce and bezier are SPEC 10.4's).
 enum class Interpolation : std::uint8_t {
     Linear,
     Ease,
@@ -63,28 +63,49 @@ enum class Interpolation : std::uint8_t {
     Step,
     Back,
     Elastic,
-    Bounce
+    Bounce,
+    Bezier
 };
 
 /// The mode's word in the scene language ("linear", "ease_in", ...).
 std::string_view interpolationName(Interpolation mode);
 
+/// `bezier x1 y1 x2 y2` (SPEC 10.4): CSS's cubic-bezier, the curve from (0, 0)
+/// to (1, 1) with control points (x1, y1) and (x2, y2), x1 and x2 in [0, 1].
+struct BezierCurve {
+    float x1 = 0, y1 = 0, x2 = 1, y2 = 1;
+    friend bool operator==(const BezierCurve&, const BezierCurve&) = default;
+};
+
+/// A mode with what it needs: the curve, for `bezier` (unused by the others).
+/// Converts from a plain mode, so `track.interpolation = Interpolation::Ease`.
+struct Easing {
+    Interpolation mode = Interpolation::Linear;
+    BezierCurve curve{};
+
+    Easing() = default;
+    Easing(Interpolation m, BezierCurve c = {}) : mode(m), curve(c) {}  // NOLINT: implicit on purpose
+    friend bool operator==(const Easing&, const Easing&) = default;
+};
+
 struct Key {
-    int frame = 0;
+    /// The key's time in frames (SPEC 10.4: may be fractional, written in
+    /// frames or seconds; seconds are converted with the scene's `/fps`).
+    double time = 0;
     Pose pose;
     /// The key's own mode word (SPEC 9.3), if it has one: how the target moves
     /// from this key to the next. Without one the track's `interpolation` holds.
-    std::optional<Interpolation> mode = std::nullopt;
+    std::optional<Easing> mode = std::nullopt;
 };
 
 /// Key frames of one target (an object, one part or the camera), sorted by
-/// frame, unique frames.
+/// time, unique times.
 struct Track {
     std::vector<Key> keys;
-    Interpolation interpolation = Interpolation::Linear;  ///< `/interp`, for keys without a mode
+    Easing interpolation = Interpolation::Linear;  ///< `/interp`, for keys without a mode
 
     /// The mode of the segment that starts at key i.
-    Interpolation modeAfter(std::size_t i) const { return keys[i].mode.value_or(interpolation); }
+    const Easing& modeAfter(std::size_t i) const { return keys[i].mode ? *keys[i].mode : interpolation; }
 };
 
 enum class ObjectKind : std::uint8_t { Sphere, Cylinder, Box, Robot, Human };
@@ -184,7 +205,8 @@ struct SceneDesc {
     /// The objects' animation compiled for evaluation (anim/animation_program.h).
     AnimationCache animation;
 
-    /// Last frame of the animation: the largest key frame of the scene (0 if none).
+    /// Last frame of the animation: the smallest whole number at or after the
+    /// largest key time of the scene (0 if none; SPEC 10.4).
     int lastFrame() const;
     /// Number of primitives after expanding models (robot 6, human 4).
     std::size_t primitiveCount() const;
