@@ -11,7 +11,7 @@ set -euo pipefail
 # Building and running f2 and the viewer.
 RUN_PACKAGES=(
   g++ cmake ninja-build pkg-config
-  libpng-dev libcli11-dev qt6-base-dev libgl-dev libegl-dev nlohmann-json3-dev
+  libpng-dev libcli11-dev qt6-base-dev libgl-dev libegl-dev nlohmann-json3-dev libstb-dev
 )
 # Everything else: tests, benchmarks, video and POV-Ray output, plots, fuzzing.
 MORE_PACKAGES=(

@@ -57,6 +57,12 @@ int runExport(const ExportArgs& args) {
     std::string error;
     if (!args.size.empty() && !parseSize(args.size, camera.width, camera.height, error))
         return usageError("export", error);
+    // Text over the picture is F2's own (SPEC 10.5): neither output can hold it.
+    std::size_t shown = 0;
+    for (const Caption& c : loaded->scene.captions) shown += c.shownAt(args.frame);
+    if (shown > 0)
+        std::cerr << "f2 export: warning: " << shown << (shown == 1 ? " caption" : " captions")
+                  << " of frame " << args.frame << " left out (captions are drawn by f2 only)\n";
     std::string text = args.pov ? povScene(loaded->scene, args.frame, camera, loaded->name)
                                 : primsScene(loaded->scene, args.frame, camera, loaded->name);
     if (!writeOutput(text, args.output, error)) {

@@ -1,4 +1,5 @@
 // f2 info: what a scene holds.
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -118,6 +119,15 @@ int runInfo(const std::string& path) {
               << "  source:     " << loaded->files.size()
               << (loaded->files.size() == 1 ? " file, " : " files, ") << loaded->linesInFiles << " lines, "
               << loaded->linesRead << " read with /repeat and /include expanded\n";
+    if (!s.captions.empty()) {
+        double first = s.captions.front().from, end = s.captions.front().to;
+        for (const Caption& c : s.captions) {
+            first = std::min(first, c.from);
+            end = std::max(end, c.to);
+        }
+        std::cout << "  captions:   " << s.captions.size() << ", from frame " << formatNumber(first) << " to "
+                  << formatNumber(end) << '\n';
+    }
     printCamera(s);
     printLights(s);
     for (const SceneObject& o : s.objects) {

@@ -34,6 +34,7 @@ SceneHighlighter::SceneHighlighter(QTextDocument* document) : QSyntaxHighlighter
     mode.setForeground(QColor(0xa0, 0x1c, 0x6c));
     mode.setFontItalic(true);
     formats_[int(Kind::Expression)].setForeground(QColor(0x00, 0x7a, 0x87));
+    formats_[int(Kind::Text)].setForeground(QColor(0xb0, 0x30, 0x20));
     auto& comment = formats_[int(Kind::Comment)];
     comment.setForeground(QColor(0x80, 0x80, 0x80));
     comment.setFontItalic(true);
@@ -56,13 +57,26 @@ void SceneHighlighter::highlightBlock(const QString& text) {
         }
         const int start = i;
         int depth = 0;
-        while (i < n && (depth > 0 || (!isSpace(text[i]) && text[i] != u'#'))) {
-            if (text[i] == u'(' || text[i] == u'{') ++depth;
-            if ((text[i] == u')' || text[i] == u'}') && depth > 0) --depth;
+        bool quoted = false;  // a caption's text (SPEC 10.5): spaces and '#' inside, \" does not close it
+        while (i < n && (quoted || depth > 0 || (!isSpace(text[i]) && text[i] != u'#'))) {
+            if (quoted) {
+                if (text[i] == u'\\' && i + 1 < n)
+                    ++i;
+                else if (text[i] == u'"')
+                    quoted = false;
+            } else if (text[i] == u'"') {
+                quoted = true;
+            } else if (text[i] == u'(' || text[i] == u'{') {
+                ++depth;
+            } else if ((text[i] == u')' || text[i] == u'}') && depth > 0) {
+                --depth;
+            }
             ++i;
         }
         if (first && text[start] == u'/')
             setKind(start, i - start, Kind::Command);
+        else if (text[start] == u'"')
+            setKind(start, i - start, Kind::Text);
         else
             highlightWord(text, start, i - start);
         first = false;

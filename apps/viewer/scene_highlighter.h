@@ -14,7 +14,7 @@ class SceneHighlighter : public QSyntaxHighlighter {
     explicit SceneHighlighter(QTextDocument* document);
 
     /// What a span of text is, for the colours and for tests.
-    enum class Kind { Command, Number, Name, Part, Mode, Expression, Comment };
+    enum class Kind { Command, Number, Name, Part, Mode, Expression, Comment, Text, Count };
     const QTextCharFormat& format(Kind kind) const { return formats_[int(kind)]; }
 
    protected:
@@ -24,7 +24,7 @@ class SceneHighlighter : public QSyntaxHighlighter {
     void setKind(int start, int length, Kind kind) { setFormat(start, length, format(kind)); }
     void highlightWord(const QString& text, int start, int length);
 
-    QTextCharFormat formats_[7];
+    QTextCharFormat formats_[int(Kind::Count)];
 };
 
 }  // namespace f2::viewer

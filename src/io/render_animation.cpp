@@ -66,7 +66,7 @@ AnimationResult renderAnimation(const SceneDesc& scene, const AnimationRange& ra
         const FrameTimings timings =
             blur.enabled()
                 ? renderer.renderAveraged(
-                      scene, blur.subFrames(scene, view, t, range.frameLength()), image, options.render,
+                      scene, t, blur.subFrames(scene, view, t, range.frameLength()), image, options.render,
                       cancel,
                       [&](int subFrames) {
                           if (progress && subFrames < blur.samples)

@@ -227,6 +227,7 @@ Json completion(const Analysis& a, Position p) {
             break;
         case ArgKind::NewName:
         case ArgKind::Variable:
+        case ArgKind::Text:
             break;
     }
     return items;

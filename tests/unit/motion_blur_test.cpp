@@ -44,7 +44,7 @@ Image blurred(const SceneDesc& scene, double t, MotionBlur blur, int threads, in
     Renderer renderer(threads);
     Image image;
     const FrameView view = FrameView::sceneCamera(96, 72);
-    EXPECT_TRUE(renderer.renderAveraged(scene, blur.subFrames(scene, view, t, 1.0), image, {aa}).complete);
+    EXPECT_TRUE(renderer.renderAveraged(scene, t, blur.subFrames(scene, view, t, 1.0), image, {aa}).complete);
     return image;
 }
 
@@ -140,8 +140,8 @@ TEST(MotionBlur, SameBytesForAnyThreadCountAndHistory) {
     Renderer renderer(3);
     Image image;
     for (double t : {9.0, 0.0, 6.5}) renderer.render(scene, t, cameraAt(scene, t).resized(96, 72), image);
-    renderer.renderAveraged(scene, blur.subFrames(scene, FrameView::sceneCamera(96, 72), 6.25, 1), image,
-                            {2});
+    renderer.renderAveraged(scene, 6.25, blur.subFrames(scene, FrameView::sceneCamera(96, 72), 6.25, 1),
+                            image, {2});
     EXPECT_TRUE(image == one);
     EXPECT_TRUE(blurred(scene, 6.25, blur, 2, 2) == one);
 }
@@ -154,8 +154,8 @@ TEST(MotionBlur, CancelStopsBetweenSubFrames) {
     Image image;
     std::vector<int> reported;
     const FrameTimings timings =
-        renderer.renderAveraged(scene, blur.subFrames(scene, FrameView::sceneCamera(96, 72), 5, 1), image, {},
-                                &cancel, [&](int done) {
+        renderer.renderAveraged(scene, 5, blur.subFrames(scene, FrameView::sceneCamera(96, 72), 5, 1), image,
+                                {}, &cancel, [&](int done) {
                                     reported.push_back(done);
                                     if (done == 2) cancel = true;
                                 });
@@ -170,7 +170,7 @@ TEST(MotionBlur, DiagnosticViewShowsTheMiddleSubFrame) {
     depth.view = ViewMode::Depth;
     Renderer renderer(2);
     Image averaged, middle;
-    renderer.renderAveraged(scene, subs, averaged, depth);
+    renderer.renderAveraged(scene, 5, subs, averaged, depth);
     renderer.render(scene, subs[2].time, subs[2].camera, middle, depth);
     EXPECT_TRUE(averaged == middle);
 }

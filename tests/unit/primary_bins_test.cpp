@@ -226,8 +226,8 @@ TEST(PrimaryBins, AveragedImagesAreThoseOfTheTreeWalk) {
     binned.setPrimaryBinsFrom(0);
     walked.setPrimaryBinsFrom(std::numeric_limits<std::size_t>::max());
     Image a, b;
-    binned.renderAveraged(scene, subFrames, a);
-    walked.renderAveraged(scene, subFrames, b);
+    binned.renderAveraged(scene, 0, subFrames, a);
+    walked.renderAveraged(scene, 0, subFrames, b);
     ASSERT_EQ(a.pixels.size(), b.pixels.size());
     EXPECT_EQ(std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(Rgb8)), 0);
 }

@@ -142,7 +142,8 @@ void EditorTest::editorShowsFileAndHighlights() {
     SceneHighlighter highlighter(&doc);
     doc.setPlainText(
         "/key 10 r1.head 0 (x*2) 0 0 0 0 ease  # turn\n"
-        "/sphere ball{i} 1 2 3 4\n");
+        "/sphere ball{i} 1 2 3 4\n"
+        "/caption 2.5s 3s 0 0 0.1 \"a \\\" # b\" colour 1 2 3\n");
     highlighter.rehighlight();
     using Kind = SceneHighlighter::Kind;
     const QTextBlock key = doc.firstBlock();
@@ -159,6 +160,14 @@ void EditorTest::editorShowsFileAndHighlights() {
     const QTextBlock sphere = key.next();
     QVERIFY(is(sphere, 8, Kind::Name));         // ball
     QVERIFY(is(sphere, 12, Kind::Expression));  // {i}
+    // A caption's text is one piece, its '#' and escaped quote inside; seconds are numbers.
+    const QTextBlock caption = sphere.next();
+    QVERIFY(is(caption, 9, Kind::Number));   // 2.5s
+    QVERIFY(is(caption, 26, Kind::Text));    // "a
+    QVERIFY(is(caption, 31, Kind::Text));    // #
+    QVERIFY(is(caption, 34, Kind::Text));    // b"
+    QVERIFY(is(caption, 37, Kind::Name));    // colour
+    QVERIFY(is(caption, 43, Kind::Number));  // 1
 }
 
 void EditorTest::typingRendersLive() {

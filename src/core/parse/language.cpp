@@ -20,11 +20,12 @@ constexpr std::array kRepeat = {Variable, Number};
 constexpr std::array kInclude = {Path};
 constexpr std::array kLookAt = {PointOrTarget, Number};
 constexpr std::array kAttach = {Object, Target};
+constexpr std::array kCaption = {Number, Number, Number, Number, Number, Text, Number};
 constexpr std::array<ArgKind, 0> kNone = {};
 
 // Rows in CommandId order (checked below). The syntax and meaning are what
 // hover shows; docs/scene-language.md has each command's full story.
-constexpr std::array<CommandSpec, 24> kCommands = {{
+constexpr std::array<CommandSpec, 25> kCommands = {{
     {CommandId::Camera, "/camera", Edition::First, CommandGroup::Setting, kNumbers,
      "/camera <w> <h> <d> [<px> <py> <pz> [<rx> <ry> <rz>]]",
      "/camera ${1:800} ${2:600} ${3:0.5} ${4:0} ${5:0} ${6:0} ${7:0} ${8:0} ${9:0}",
@@ -137,6 +138,14 @@ constexpr std::array<CommandSpec, 24> kCommands = {{
     {CommandId::Attach, "/attach", Edition::Second, CommandGroup::Motion, kAttach, "/attach <name> <target>",
      "/attach ${1:name} ${2:target}",
      "The object `name` (or `camera`) rides on `target`: its pose is read in the target's frame.", true},
+    {CommandId::Caption, "/caption", Edition::Third, CommandGroup::Setting, kCaption,
+     "/caption <from> <to> <x> <y> <size> \"<text>\" [colour <r> <g> <b>]",
+     "/caption ${1:0} ${2:2s} ${3:0.05} ${4:0.9} ${5:0.06} \"${6:text}\"",
+     "Text over the picture while `from ≤ t < to` (key times: frames, or seconds as `2s`): its "
+     "baseline starts at `(x, y)` in fractions of the image (0 0 top left), its font is `size` "
+     "of the image height; `colour r g b` (default white). `\\\"` and `\\\\` in the text stand for "
+     "`\"` and `\\`, `{ … }` is expanded.",
+     false},
 }};
 
 constexpr bool inIdOrder() {

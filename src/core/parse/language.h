@@ -31,6 +31,7 @@ enum class ArgKind : std::uint8_t {
     Variable,       ///< a variable's name
     Path,           ///< a file path
     PointOrTarget,  ///< /look_at: x y z, or a target
+    Text,           ///< a text in double quotes (/caption)
 };
 
 /// What a command does; the grammar and the highlighters colour by it.
@@ -68,6 +69,7 @@ enum class CommandId : std::uint8_t {
     Include,
     LookAt,
     Attach,
+    Caption,
 };
 
 struct CommandSpec {

@@ -84,11 +84,25 @@ void tokenizeLine(std::string_view line, LineTokens& out) {
         if (c == '#') break;  // comment to the end of the line
         const std::size_t start = i;
         // Inside ( ) and { } spaces do not split (SPEC 9.4: "( 1 + 2 )" is one
-        // argument); '#' still starts a comment.
+        // argument); '#' still starts a comment. Inside double quotes (a
+        // caption's text, SPEC 10.5) neither spaces nor '#' end the token, and
+        // \" does not close it.
         int depth = 0;
-        while (i < n && line[i] != '#' && (depth > 0 || (line[i] != ' ' && line[i] != '\t'))) {
-            if (line[i] == '(' || line[i] == '{') ++depth;
-            if ((line[i] == ')' || line[i] == '}') && depth > 0) --depth;
+        bool quoted = false;
+        while (i < n && (quoted || (line[i] != '#' && (depth > 0 || (line[i] != ' ' && line[i] != '\t'))))) {
+            const char ch = line[i];
+            if (quoted) {
+                if (ch == '\\' && i + 1 < n)
+                    ++i;  // \" and \\ stay inside
+                else if (ch == '"')
+                    quoted = false;
+            } else if (ch == '"') {
+                quoted = true;
+            } else if (ch == '(' || ch == '{') {
+                ++depth;
+            } else if ((ch == ')' || ch == '}') && depth > 0) {
+                --depth;
+            }
             ++i;
         }
         if (out.count < kMaxStoredTokens) {

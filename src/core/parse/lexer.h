@@ -49,7 +49,9 @@ struct LineTokens {
 
 /// Splits a line at spaces and tabs, stopping at the first '#'. Spaces inside
 /// parentheses or braces do not split: "( 1 + 2 )" and "r{ i }" are one token
-/// each (an unclosed one runs to the end of the line or the comment).
+/// each (an unclosed one runs to the end of the line or the comment). A text
+/// in double quotes is one token with its spaces and '#'s (`\"` inside it
+/// does not close it); an unclosed one runs to the end of the line.
 void tokenizeLine(std::string_view line, LineTokens& out);
 
 /// One character decoded from UTF-8; `bytes` is 0 when s[i] does not start

@@ -17,6 +17,7 @@
 #include "core/parse/language.h"
 #include "core/parse/lexer.h"
 #include "core/parse/number.h"
+#include "core/parse/quoted_text.h"
 #include "core/parse/source_expander.h"
 #include "core/parse/suggest.h"
 #include "core/parse/symbol_index.h"
@@ -103,6 +104,13 @@ struct ObjectBook {
     std::array<std::optional<Pos>, kPartCount + 1> interps{};
     std::optional<Pos> attached;  ///< where its `/attach` is
     std::uint32_t loopNote = 0;  ///< the loop pass it was defined in: Parser::loopNotes_ index + 1, 0 if none
+};
+
+/// Where a `/caption`'s times stand and whether they are in seconds: they
+/// become frames at the end of the file, then `to` must follow `from`.
+struct CaptionBook {
+    Pos from, to;
+    bool fromInSeconds = false, toInSeconds = false;
 };
 
 /// A `/key` of the camera, kept until the end of the file: a key without
@@ -355,6 +363,8 @@ class Parser : private ExpansionSink {
                 return parseAttach();
             case Checker:
                 return parseChecker();
+            case Caption:
+                return parseCaption();
             case Let:
             case Repeat:
             case End:
@@ -1155,6 +1165,57 @@ class Parser : private ExpansionSink {
         return out;
     }
 
+    /// `/caption <from> <to> <x> <y> <size> "<text>" [colour <r> <g> <b>]` (SPEC 10.5).
+    void parseCaption() {
+        const int n = argCount();
+        if (n != 6 && n != 10) {
+            error(commandPos(), noteCharacters("'/caption' takes 6 or 10 arguments (from, to, x, y, size, "
+                                               "\"text\", then optionally colour r g b), got " +
+                                                   std::to_string(n),
+                                               commandLine(), commandPos()));
+            return;
+        }
+        bool ok = true;
+        const KeyTime from = keyTime(0, ok), to = keyTime(1, ok);
+        Caption caption;
+        caption.x = real(2, ok);
+        caption.y = real(3, ok);
+        caption.size = positive(4, "caption size", ok);
+        if (ok && caption.size > 1) {
+            error(argPos(4),
+                  "caption size is a fraction of the image height, at most 1, got " + printable(arg(4)));
+            ok = false;
+        }
+        if (!failed(5)) {
+            QuotedText text = readQuotedText(arg(5));
+            if (text.ok) {
+                caption.text = std::move(text.text);
+            } else {
+                // Columns inside the token hold as written unless `{ … }` changed it.
+                const bool asWritten = argToken(5).written == argToken(5).text;
+                Pos at = argPos(5);
+                if (asWritten) at.column += static_cast<int>(text.offset);
+                error(at, text.message);
+                ok = false;
+            }
+        } else {
+            ok = false;
+        }
+        if (n == 10) {
+            if (arg(6) != "colour") {
+                error(argPos(6), "expected 'colour' after the caption's text, got " + quoteToken(arg(6)));
+                ok = false;
+            } else {
+                caption.colour = color(7, ok);
+            }
+        }
+        if (!ok) return;
+        caption.from = from.value;
+        caption.to = to.value;
+        scene_.captions.push_back(std::move(caption));
+        captionBooks_.push_back({argPos(0), argPos(1), from.seconds, to.seconds});
+    }
+
     /// The camera's keys, in file order, now that `/camera`'s pose is known.
     void addCameraKeys() {
         for (const CameraKey& k : cameraKeys_) {
@@ -1201,20 +1262,36 @@ class Parser : private ExpansionSink {
         book.origins.push_back(origin);
     }
 
-    /// Keys written in seconds become frames at the scene's `/fps`, wherever it stands (SPEC 10.4).
+    /// A time in seconds (at `origin`) in frames at the scene's `/fps`; beyond
+    /// the frame limit an error there.
+    double framesOfSeconds(double seconds, Pos origin) {
+        const double frames = seconds * scene_.fps;
+        if (frames > limits_.maxKeyFrame) {
+            error(origin, "a key time must be at most " + std::to_string(limits_.maxKeyFrame) +
+                              " frames, got " + formatNumber(seconds) + " s = " + formatNumber(frames) +
+                              " frames at " + std::to_string(scene_.fps) + " fps");
+        }
+        return frames;
+    }
+
+    /// Keys and captions written in seconds become frames at the scene's
+    /// `/fps`, wherever it stands (SPEC 10.4); then a caption must end after it starts.
     void convertSecondsToFrames() {
+        for (std::size_t k = 0; k < scene_.captions.size(); ++k) {
+            Caption& c = scene_.captions[k];
+            const CaptionBook& book = captionBooks_[k];
+            if (book.fromInSeconds) c.from = framesOfSeconds(c.from, book.from);
+            if (book.toInSeconds) c.to = framesOfSeconds(c.to, book.to);
+            if (!(c.to > c.from)) {
+                error(book.to, "a caption must end after it starts: it starts at frame " +
+                                   formatNumber(c.from) + " and ends at frame " + formatNumber(c.to));
+            }
+        }
+        captionBooks_ = {};
         for (TrackBook& book : trackBooks_) {
             std::vector<Key>& keys = trackOf(book.target).keys;
-            for (std::uint32_t k : book.inSeconds) {
-                const double frames = keys[k].time * scene_.fps;
-                if (frames > limits_.maxKeyFrame) {
-                    error(book.origins[k], "a key time must be at most " +
-                                               std::to_string(limits_.maxKeyFrame) + " frames, got " +
-                                               formatNumber(keys[k].time) + " s = " + formatNumber(frames) +
-                                               " frames at " + std::to_string(scene_.fps) + " fps");
-                }
-                keys[k].time = frames;
-            }
+            for (std::uint32_t k : book.inSeconds)
+                keys[k].time = framesOfSeconds(keys[k].time, book.origins[k]);
             book.inSeconds = {};
         }
     }
@@ -1410,6 +1487,7 @@ class Parser : private ExpansionSink {
     std::size_t keyLines_ = 0;
     std::size_t lightLines_ = 0;
     std::vector<CameraKey> cameraKeys_;
+    std::vector<CaptionBook> captionBooks_;  ///< parallel to scene_.captions
     int cameraTrackBook_ = -1;
     /// Attachment trees as disjoint sets (union by size, path halving), each
     /// set knowing the object at its top: an `/attach` closes a cycle exactly

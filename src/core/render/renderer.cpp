@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "core/anim/frame_builder.h"
+#include "core/render/captions.h"
 #include "core/render/diagnostic_view.h"
 #include "core/render/frame_preparation.h"
 #include "core/render/packet_reflection.h"
@@ -323,12 +324,15 @@ FrameTimings Renderer::render(const SceneDesc& scene, double t, const Camera& ca
     prepare(scene, t, timings);
     const auto start = Clock::now();
     timings.complete = trace(frame_, camera, out, options, cancel, &timings.rays);
+    // Captions are part of the picture, not of a diagnostic view (SPEC 10.5).
+    if (timings.complete && options.view == ViewMode::Shaded) drawCaptions(out, scene.captions, t);
     timings.traceMs = millisecondsSince(start);
     return timings;
 }
 
-FrameTimings Renderer::renderAveraged(const SceneDesc& scene, std::span<const SubFrame> subFrames, Image& out,
-                                      const RenderOptions& options, const std::atomic<bool>* cancel,
+FrameTimings Renderer::renderAveraged(const SceneDesc& scene, double t, std::span<const SubFrame> subFrames,
+                                      Image& out, const RenderOptions& options,
+                                      const std::atomic<bool>* cancel,
                                       const std::function<void(int)>& subFrameDone) {
     FrameTimings timings;
     if (subFrames.empty()) return timings;
@@ -364,6 +368,7 @@ FrameTimings Renderer::renderAveraged(const SceneDesc& scene, std::span<const Su
             out.at(x, y) = {toByte(s.r * weight), toByte(s.g * weight), toByte(s.b * weight)};
         }
     });
+    drawCaptions(out, scene.captions, t);  // sharp, at the frame's own time: they do not move
     timings.traceMs += millisecondsSince(start);
     return timings;
 }

@@ -55,7 +55,8 @@ class Renderer {
     bool trace(const FrameScene& frame, const Camera& camera, Image& out, const RenderOptions& options = {},
                const std::atomic<bool>* cancel = nullptr, RayCounts* rays = nullptr);
 
-    /// The whole frame: evaluate `scene` at time `t` (frames), build, trace.
+    /// The whole frame: evaluate `scene` at time `t` (frames), build, trace,
+    /// and in the shaded view draw the captions shown at `t` (captions.h).
     /// Reuses this renderer's frame buffers, so steady-state frames do not allocate.
     FrameTimings render(const SceneDesc& scene, double t, const Camera& camera, Image& out,
                         const RenderOptions& options = {}, const std::atomic<bool>* cancel = nullptr);
@@ -67,8 +68,10 @@ class Renderer {
     /// any thread count; one sub-frame gives render()'s bytes. A diagnostic
     /// view (options.view) shows the middle sub-frame alone. `subFrameDone`
     /// (optional) is called on this thread after each sub-frame with the number done.
-    FrameTimings renderAveraged(const SceneDesc& scene, std::span<const SubFrame> subFrames, Image& out,
-                                const RenderOptions& options = {}, const std::atomic<bool>* cancel = nullptr,
+    /// `t` is the frame's own time: its captions (SPEC 10.5) are drawn sharp over the mean.
+    FrameTimings renderAveraged(const SceneDesc& scene, double t, std::span<const SubFrame> subFrames,
+                                Image& out, const RenderOptions& options = {},
+                                const std::atomic<bool>* cancel = nullptr,
                                 const std::function<void(int done)>& subFrameDone = {});
 
     /// Frames of at least this many primitives trace their primary rays from

@@ -43,6 +43,7 @@ int SceneDesc::lastFrame() const {
         for (const Track& t : o.partTracks) scan(t);
     }
     scan(camera.track);
+    for (const Caption& c : captions) last = std::max(last, c.to);
     return int(std::ceil(last));
 }
 

@@ -170,6 +170,17 @@ struct DirectionalLight {
     SoftShadow sun;  ///< `angle`: the sun's angular radius (degrees) and samples per side
 };
 
+/// `/caption` (SPEC 10.5): text drawn over the picture while `from <= t < to`.
+struct Caption {
+    double from = 0, to = 0;  ///< key times, in frames
+    float x = 0, y = 0;       ///< the left end of its baseline, in fractions of the image (0 0: top left)
+    float size = 0;           ///< the font's em, in fractions of the image height
+    std::string text;         ///< valid UTF-8, escapes undone and `{ … }` expanded
+    Color8 colour{255, 255, 255};
+
+    bool shownAt(double t) const { return from <= t && t < to; }
+};
+
 struct AnimationProgram;  // anim/animation_program.h
 
 /// Where a scene keeps the compiled form of its animation
@@ -202,11 +213,13 @@ struct SceneDesc {
     /// Indices of the attached objects, each after the object it rides on
     /// when that one is attached too: the order in which to evaluate them.
     std::vector<std::uint32_t> attachOrder;
+    /// `/caption`s in file order: drawn in that order over the traced picture.
+    std::vector<Caption> captions;
     /// The objects' animation compiled for evaluation (anim/animation_program.h).
     AnimationCache animation;
 
     /// Last frame of the animation: the smallest whole number at or after the
-    /// largest key time of the scene (0 if none; SPEC 10.4).
+    /// largest key time of the scene, a caption's times included (0 if none; SPEC 10.4).
     int lastFrame() const;
     /// Number of primitives after expanding models (robot 6, human 4).
     std::size_t primitiveCount() const;
