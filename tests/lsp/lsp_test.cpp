@@ -244,6 +244,21 @@ TEST(Diagnostics, RangesCoverWhatTheParserSaysAsTheViewerUnderlinesIt) {
     EXPECT_EQ(list[1]["range"], toJson(Range{{1, 16}, {1, 20}}));  // nope
 }
 
+TEST(Diagnostics, ThirdEditionLinesAsTheParserReadsThem) {
+    // A caption's quoted text with spaces and '#', seconds and a bezier key: no diagnostics;
+    // a caption whose quote is left open: the parser's one error, at the quote.
+    const Analysis good = analysed(
+        "/amb_light 1\n/sphere b 1 0 0 0\n/key 0.5s b bezier 0.25 0.1 0.25 1\n/key 2s b 1 0 0 0 0 0\n"
+        "/caption 0 1s 0.1 0.9 0.1 \"a # b \\\" c\" colour 1 2 3\n");
+    EXPECT_TRUE(publishDiagnostics(good)[0]["diagnostics"].empty()) << publishDiagnostics(good).dump();
+    const Analysis open = analysed("/sphere b 1 0 0 0\n/caption 0 1 0 0 0.1 \"a # b\n");
+    const Json published = publishDiagnostics(open);
+    const Json& list = published[0]["diagnostics"];
+    ASSERT_EQ(list.size(), 1u) << list.dump();
+    EXPECT_EQ(list[0]["message"], "this '\"' has no closing '\"'");
+    EXPECT_EQ(list[0]["range"]["start"], toJson(Range{{1, 21}, {1, 21}})["start"]);
+}
+
 TEST(Outline, SymbolsListObjectsPartsCameraAndLights) {
     const Analysis a = analysed(
         "/camera 320 240 0.5\n/sphere ball 10 0 0 0\n/robot r1 0 0 0\n/dir_light 1 0 -1 0\n"
