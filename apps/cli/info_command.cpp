@@ -53,6 +53,7 @@ void printCamera(const SceneDesc& s) {
     printVec(c.pose.rotation);
     std::cout << '\n';
     printTrack("camera", c.track);
+    printTrack("camera d", c.zoom);
     if (c.attachedTo) std::cout << "    rides on " << refName(s, *c.attachedTo) << '\n';
     if (c.lookAt) {
         std::cout << "    looks at ";
@@ -75,20 +76,42 @@ std::string shadowText(const char* word, const SoftShadow& shadow) {
     return text.str();
 }
 
-/// One line per directional, point and spot light.
+/// " 'lamp'" for a named light, nothing for another.
+std::string lightName(const SceneDesc& s, std::int32_t motion) {
+    return motion == kStillLight ? std::string() : " '" + s.lightMotions[std::size_t(motion)].name + "'";
+}
+
+/// A named light's attachment and keys (SPEC 10.2, 10.3).
+void printLightMotion(const SceneDesc& s, std::int32_t motion) {
+    if (motion == kStillLight) return;
+    const LightMotion& m = s.lightMotions[std::size_t(motion)];
+    if (m.attachedTo) std::cout << "    rides on " << refName(s, *m.attachedTo) << '\n';
+    printTrack(m.name, m.track);
+    printTrack(m.name + " intensity", m.intensity);
+}
+
+/// One line per named ambient, directional, point and spot light.
 void printLights(const SceneDesc& s) {
-    for (const DirectionalLight& l : s.lights)
-        std::cout << "  dir_light " << l.intensity << " along " << l.direction.x << ' ' << l.direction.y
-                  << ' ' << l.direction.z << ", " << shadowText("angle", l.sun) << '\n';
+    for (const AmbientLight& l : s.namedAmbients) {
+        std::cout << "  amb_light" << lightName(s, std::int32_t(l.motion)) << ' ' << l.intensity << '\n';
+        printLightMotion(s, std::int32_t(l.motion));
+    }
+    for (const DirectionalLight& l : s.lights) {
+        std::cout << "  dir_light" << lightName(s, l.motion) << ' ' << l.intensity << " along "
+                  << l.direction.x << ' ' << l.direction.y << ' ' << l.direction.z << ", "
+                  << shadowText("angle", l.sun) << '\n';
+        printLightMotion(s, l.motion);
+    }
     for (const LocalLight& l : s.localLights) {
         const bool spot = l.kind == LocalLightKind::Spot;
-        std::cout << (spot ? "  spot_light " : "  point_light ") << l.intensity << " at " << l.position.x
-                  << ' ' << l.position.y << ' ' << l.position.z;
+        std::cout << (spot ? "  spot_light" : "  point_light") << lightName(s, l.motion) << ' ' << l.intensity
+                  << " at " << l.position.x << ' ' << l.position.y << ' ' << l.position.z;
         if (spot)
             std::cout << " along " << l.direction.x << ' ' << l.direction.y << ' ' << l.direction.z
                       << ", radius " << l.radius << " falloff " << l.falloff << " tightness " << l.tightness;
         if (l.fade.fades()) std::cout << ", fade " << l.fade.distance << ' ' << l.fade.power;
         std::cout << ", " << shadowText("size", l.area) << '\n';
+        printLightMotion(s, l.motion);
     }
 }
 
@@ -113,8 +136,8 @@ int runInfo(const std::string& path) {
               << '\n'
               << "  frames:     0.." << last << " at " << s.fps << " fps: " << describeLength(last, s.fps)
               << '\n'
-              << "  lights:     ambient " << s.ambient << ", " << s.lights.size() << " directional, "
-              << s.localLights.size() << " point or spot\n"
+              << "  lights:     ambient " << s.ambient << ", " << s.namedAmbients.size() << " named ambient, "
+              << s.lights.size() << " directional, " << s.localLights.size() << " point or spot\n"
               << "  objects:    " << s.objects.size() << " (" << s.primitiveCount() << " primitives)\n"
               << "  source:     " << loaded->files.size()
               << (loaded->files.size() == 1 ? " file, " : " files, ") << loaded->linesInFiles << " lines, "
@@ -137,6 +160,7 @@ int runInfo(const std::string& path) {
         if (isModel(o.kind))
             for (int p = 0; p < kPartCount; ++p) printTrack(o.name + "." + kPartNames[p], o.partTracks[p]);
     }
+    for (const ColourTrack& c : s.colourTracks) printTrack(refName(s, c.target) + " colour", c.track);
     return 0;
 }
 }  // namespace

@@ -1,6 +1,7 @@
 #include "io/frame_primitives.h"
 
 #include <charconv>
+#include <cmath>
 
 #include "core/anim/frame_builder.h"
 
@@ -19,10 +20,12 @@ std::string shapeLabel(const SceneObject& object, const ModelShape& shape) {
 std::vector<PlacedPrimitive> framePrimitives(const SceneDesc& scene, double t) {
     std::vector<PlacedPrimitive> out;
     out.reserve(scene.primitiveCount());
+    std::vector<std::size_t> firstOf(scene.objects.size());  // each object's first primitive in `out`
     std::vector<Transform> attachedRoots;
     attachedRootFrames(scene, t, attachedRoots);
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
+        firstOf[i] = out.size();
         Transform worldFromObject = worldFromRoot(scene, i, t, attachedRoots);
         if (!isModel(object.kind)) {
             const Appearance& look = object.appearance[0];
@@ -40,6 +43,12 @@ std::vector<PlacedPrimitive> framePrimitives(const SceneDesc& scene, double t) {
                            shape.ownColor ? Checker{} : look.checker});
         }
     }
+    // Colour keys (SPEC 10.3), to the nearest of the formats' whole numbers.
+    forEachKeyedColour(scene, t, [&](std::size_t object, std::size_t shape, Vec3 rgb) {
+        out[firstOf[object] + shape].color = {std::uint8_t(std::lround(rgb.x)),
+                                              std::uint8_t(std::lround(rgb.y)),
+                                              std::uint8_t(std::lround(rgb.z))};
+    });
     return out;
 }
 

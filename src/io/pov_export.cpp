@@ -132,10 +132,13 @@ std::string povScene(const SceneDesc& scene, double t, const Camera& camera, con
     for (const PlacedPrimitive& p : prims) grow(p.worldFromLocal.translation, boundingRadius(p));
     Vec3 centre = (lo + hi) * 0.5f;
     float far = length(hi - lo) * 2 + 1000;
+    // Named lights (SPEC 10.2) where they are and as bright as they are at t.
     for (const DirectionalLight& light : scene.lights) {
-        Vec3 toLight = -normalize(light.direction);
-        out << "light_source { " << vec(centre + toLight * far) << " " << grey(light.intensity)
-            << " parallel point_at " << vec(centre);
+        const Vec3 direction = placeLight(scene, light.motion, Vec3{}, light.direction, t).direction;
+        Vec3 toLight = -normalize(direction);
+        out << "light_source { " << vec(centre + toLight * far) << " "
+            << grey(lightIntensityAt(scene, light.motion, light.intensity, t)) << " parallel point_at "
+            << vec(centre);
         if (light.sun.soft()) {
             // The sun's disc (angular radius r) as a parallel area light: its
             // sample k shines along the light's place plus the sample's offset,
@@ -144,14 +147,16 @@ std::string povScene(const SceneDesc& scene, double t, const Camera& camera, con
             const float span = far * float(2.0 * std::tan(double(light.sun.size) * std::numbers::pi / 180.0));
             out << "\n  " << areaLight(axes.a * span, axes.b * span, light.sun.samplesPerSide, false) << "\n";
         }
-        out << " }  // travels along " << vec(light.direction) << "\n";
+        out << " }  // travels along " << vec(direction) << "\n";
     }
     for (const LocalLight& light : scene.localLights) {
-        out << "light_source { " << vec(light.position) << " " << grey(light.intensity);
+        const PlacedLight placed = placeLight(scene, light.motion, light.position, light.direction, t);
+        out << "light_source { " << vec(placed.position) << " "
+            << grey(lightIntensityAt(scene, light.motion, light.intensity, t));
         if (light.kind == LocalLightKind::Spot)
-            out << "\n  spotlight point_at " << vec(light.position + normalize(light.direction)) << " radius "
-                << formatNumber(light.radius) << " falloff " << formatNumber(light.falloff) << " tightness "
-                << formatNumber(light.tightness);
+            out << "\n  spotlight point_at " << vec(placed.position + normalize(placed.direction))
+                << " radius " << formatNumber(light.radius) << " falloff " << formatNumber(light.falloff)
+                << " tightness " << formatNumber(light.tightness);
         if (light.fade.fades())
             out << "\n  fade_distance " << formatNumber(light.fade.distance) << " fade_power "
                 << formatNumber(light.fade.power);
@@ -163,12 +168,13 @@ std::string povScene(const SceneDesc& scene, double t, const Camera& camera, con
     }
     out << "\n";
 
+    const float ambient = ambientAt(scene, t);
     for (const PlacedPrimitive& p : prims) {
         const Material& m = p.material;
         out << "// " << commentText(p.label) << "\n"
             << shape(p) << "\n  " << pigment(p) << "\n  " << matrix(p.worldFromLocal) << "\n"
-            << "  finish { ambient " << formatNumber(m.ka * scene.ambient) << " diffuse "
-            << formatNumber(m.kd) << " phong " << formatNumber(m.ks) << " phong_size " << formatNumber(m.n);
+            << "  finish { ambient " << formatNumber(m.ka * ambient) << " diffuse " << formatNumber(m.kd)
+            << " phong " << formatNumber(m.ks) << " phong_size " << formatNumber(m.n);
         if (m.reflection > 0) out << " reflection " << formatNumber(m.reflection);
         out << " }\n}\n";
     }

@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "core/anim/light_frame.h"
 #include "io/comment_text.h"
 #include "io/frame_primitives.h"
 
@@ -29,11 +30,13 @@ std::string primsScene(const SceneDesc& scene, double t, const Camera& camera, c
         << "background " << int(scene.background.r) << " " << int(scene.background.g) << " "
         << int(scene.background.b)
         << "\n"
-        // The parsed scene keeps only the sum of its /amb_light lines; one line says the same.
-        << "amb " << formatNumber(scene.ambient) << "\n";
-    for (const DirectionalLight& light : scene.lights)
-        out << "dir " << formatNumber(light.intensity) << " " << formatNumber(light.direction.x) << " "
-            << formatNumber(light.direction.y) << " " << formatNumber(light.direction.z) << "\n";
+        // The sum of the /amb_light lines at t: one line says the same.
+        << "amb " << formatNumber(ambientAt(scene, t)) << "\n";
+    for (const DirectionalLight& light : scene.lights) {
+        const Vec3 d = placeLight(scene, light.motion, Vec3{}, light.direction, t).direction;
+        out << "dir " << formatNumber(lightIntensityAt(scene, light.motion, light.intensity, t)) << " "
+            << formatNumber(d.x) << " " << formatNumber(d.y) << " " << formatNumber(d.z) << "\n";
+    }
     for (const PlacedPrimitive& p : framePrimitives(scene, t)) {
         float r = p.kind == ShapeKind::Box ? 0 : p.size.x;
         float h = p.kind == ShapeKind::Cylinder ? p.size.y : 0;

@@ -64,6 +64,18 @@ std::vector<const IndexedObject*> visibleObjects(const Analysis& a, int beforeLi
     return out;
 }
 
+/// `colour ${1:255} ${2:255} ${3:255}`, `intensity …`, `d …`: the key properties.
+void addKeyProperties(Json& items, const Range& replace) {
+    for (const KeyPropertySpec& p : keyProperties()) {
+        std::string snippet(p.word);
+        for (int k = 0; k < p.numbers; ++k)
+            snippet += " ${" + std::to_string(k + 1) + ":" + (p.numbers == 3 ? "255" : "1") + "}";
+        items.push_back(item(p.word, kCompletionField,
+                             "key property (" + std::string(p.values) + ") of " + std::string(p.targets),
+                             replace, snippet, true));
+    }
+}
+
 void addModes(Json& items, const Range& replace) {
     for (Interpolation mode : interpolationModes()) {
         const std::string_view word = interpolationName(mode);
@@ -220,7 +232,11 @@ Json completion(const Analysis& a, Position p) {
             break;
         case ArgKind::Number:
             // A /key may end with a mode after the target or after the six numbers.
-            if (doc->id == CommandId::Key && arg == 2) addModes(items, replace);
+            // …or a property word (SPEC 10.3) and its values.
+            if (doc->id == CommandId::Key && arg == 2) {
+                addModes(items, replace);
+                addKeyProperties(items, replace);
+            }
             break;
         case ArgKind::Path:
             if (arg == 0) return includeItems(a, p, typing->partial, typing->begin);

@@ -26,7 +26,7 @@ struct NamedList {
     std::vector<std::string> (*words)();
 };
 
-const std::array<NamedList, 13> kLists = {{
+const std::array<NamedList, 14> kLists = {{
     {"commands", [] { return commandWords([](const CommandSpec&) { return true; }); }},
     // As written in a scene: "/camera", … (the fuzz dictionary's entries).
     {"slashed-commands",
@@ -59,6 +59,12 @@ const std::array<NamedList, 13> kLists = {{
      [] {
          std::vector<std::string> words;
          for (const LightOptionSpec& o : lightOptions()) words.emplace_back(o.word);
+         return words;
+     }},
+    {"key-properties",
+     [] {
+         std::vector<std::string> words;
+         for (const KeyPropertySpec& p : keyProperties()) words.emplace_back(p.word);
          return words;
      }},
     {"modes",

@@ -62,7 +62,7 @@ TEST(LanguageTable, EveryModeAndOptionParses) {
         EXPECT_TRUE(parseScene("/sphere s 1 0 0 0\n/interp s " + word + numbers + "\n", "t.f2").ok()) << word;
     }
     EXPECT_FALSE(modeFromWord("smooth"));
-    EXPECT_EQ(lightOptions().size(), 4u);
+    EXPECT_EQ(lightOptions().size(), 5u);
     for (std::size_t i = 0; i < lightOptions().size(); ++i)
         EXPECT_EQ(static_cast<std::size_t>(lightOptions()[i].option), i);
 }

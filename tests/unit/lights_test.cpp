@@ -45,7 +45,7 @@ TEST(LightCommands, PointAndSpotLightsAreKeptAsWritten) {
 
 TEST(LightCommands, BadOptionsAreErrorsAtTheirPlace) {
     test::expectOnlyError("/point_light 1 0 0 0 soft 2\n", 1, 22,
-                          "unknown option 'soft' of '/point_light' (expected 'fade' or 'size')");
+                          "unknown option 'soft' of '/point_light' (expected 'fade', 'size' or 'name')");
     test::expectOnlyError("/point_light 1 0 0 0 fade 1 2 fade 1 2\n", 1, 31, "second 'fade' option");
     test::expectOnlyError("/point_light 1 0 0 0 size 20\n", 1, 22,
                           "'size' takes a diameter and the samples per side");
@@ -55,15 +55,15 @@ TEST(LightCommands, BadOptionsAreErrorsAtTheirPlace) {
     test::expectOnlyError("/dir_light 1 0 -1 0 angle 60 4\n", 1, 27,
                           "angular radius must be at most 45 degrees, got 60");
     test::expectOnlyError("/dir_light 1 0 -1 0 size 1 4\n", 1, 21,
-                          "unknown option 'size' of '/dir_light' (expected 'angle')");
+                          "unknown option 'size' of '/dir_light' (expected 'angle' or 'name')");
     test::expectOnlyError("/spot_light 1 0 0 0 0 -1 0 30 20\n", 1, 28,
                           "spot radius must be at most its falloff (20), got 30");
     test::expectOnlyError("/spot_light 1 0 0 0 0 -1 0 10 120\n", 1, 31,
                           "spot falloff must be at most 90 degrees, got 120");
     test::expectOnlyError("/spot_light 1 0 0 0 0 0 0 10 20\n", 1, 21, "light direction must not be 0 0 0");
     test::expectOnlyError("/spot_light 1 0 0 0 0 -1 0 10\n", 1, 1, "'/spot_light' takes 9 arguments, got 8");
-    test::expectOnlyError("/point_light 1 0 0 0 fade 1 2 fade 1 2 fade 1 2 fade 1 2 fade 1 2\n", 1, 1,
-                          "'/point_light' takes at most 17 arguments with its options, got 19");
+    test::expectOnlyError("/point_light 1 0 0 0 fade 1 2 fade 1 2 fade 1 2 fade 1 2 fade 1 2 fade 1 2\n", 1,
+                          1, "'/point_light' takes at most 19 arguments with its options, got 22");
 }
 
 TEST(LightCommands, TheDiscPatternIsPovRaysCircularGrid) {

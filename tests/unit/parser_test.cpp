@@ -617,7 +617,7 @@ TEST(ParserError, WrongArgumentCountPointsAtTheCommand) {
     expectError("/box b 1 1 1 0 0 0 0\n", 1, 1, "'/box' takes 7 or 10 arguments, got 8");
     expectError("/robot r 0 0\n", 1, 1, "'/robot' takes 4 or 7 arguments, got 3");
     expectError("/human h\n", 1, 1, "'/human' takes 4 or 7 arguments, got 1");
-    expectError("/amb_light\n", 1, 1, "'/amb_light' takes 1 argument, got 0");
+    expectError("/amb_light\n", 1, 1, "'/amb_light' takes 1 or 3 arguments, got 0");
     expectError("/dir_light 1 0 0\n", 1, 1, "'/dir_light' takes 4 arguments, got 3");
     expectError("/background 1 2\n", 1, 1, "'/background' takes 3 arguments, got 2");
     expectError("/fps 1 2\n", 1, 1, "'/fps' takes 1 argument, got 2");

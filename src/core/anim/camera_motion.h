@@ -12,6 +12,10 @@ namespace f2 {
 /// pose.
 Transform cameraFrameAt(const SceneDesc& scene, double t);
 
+/// The camera's `d` at time t: its `d` keys (SPEC 10.3), else `/camera`'s.
+/// An easing that overshoots is kept above zero.
+double cameraDistanceAt(const SceneDesc& scene, double t);
+
 /// Euler angles (degrees, SPEC 1) that turn the camera's forward axis to the
 /// direction `toPoint` (need not be unit): rx = −asin(f_y), ry = atan2(f_x, f_z),
 /// rz = 0. When f_x = f_z = 0 the given `ry` is kept. `toPoint` must not be 0.

@@ -79,13 +79,14 @@ FrameEvaluation FrameEvaluation::begin(const SceneDesc& scene, double t, Evaluat
     // The front ends refuse a time that is not a finite number (a NaN frame is
     // meaningless); the tracks still stay on their keys if one gets through.
     assert(std::isfinite(t));
-    evaluateLights(scene, frame);
-    frame.ambient = scene.ambient;
+    evaluateLights(scene, t, frame);
     frame.background = toUnitColor(scene.background);
 
     // Each object owns a fixed run of primitive slots, so objects can be
     // evaluated in any order, in parallel, straight into place.
     FrameEvaluation evaluation;
+    evaluation.scene = &scene;
+    evaluation.t = t;
     evaluation.program = animationProgramOf(scene);
     evaluation.refill = frame.filledBy == evaluation.program;
     frame.filledBy = nullptr;  // until the frame is whole again
@@ -127,6 +128,17 @@ void FrameEvaluation::evaluateObjectsIntoLeaves(EvaluatedFrame& frame, std::span
                                                 std::span<Primitive> leaves, ThreadPool* pool) const {
     forObjectChunks(program->kinds.size(), pool, [&](std::size_t begin, std::size_t end) {
         program->evaluateObjectsIntoLeaves(begin, end, frame.segments.data(), frame, leafOf, leaves);
+    });
+}
+
+void FrameEvaluation::finish(EvaluatedFrame& frame) && {
+    applyColourTracks(*scene, t, frame);
+    frame.filledBy = std::move(program);
+}
+
+void applyColourTracks(const SceneDesc& scene, double t, EvaluatedFrame& frame) {
+    forEachKeyedColour(scene, t, [&](std::size_t object, std::size_t shape, Vec3 rgb) {
+        frame.surfaces[frame.firstPrimitive[object] + shape].color = rgb / 255.0f;
     });
 }
 

@@ -1,11 +1,14 @@
 #pragma once
 /// Evaluates the animation of a scene at a time: key frames -> part frames ->
 /// world-space primitives.
+#include <algorithm>
 #include <memory>
 #include <span>
 
 #include "core/anim/evaluated_frame.h"
+#include "core/anim/track.h"
 #include "core/math/transform.h"
+#include "core/scene/models.h"
 #include "core/util/thread_pool.h"
 
 namespace f2 {
@@ -66,7 +69,41 @@ struct FrameEvaluation {
     /// leaves[leafOf[i]] (AnimationProgram::evaluateObjectsIntoLeaves).
     void evaluateObjectsIntoLeaves(EvaluatedFrame& frame, std::span<const std::uint32_t> leafOf,
                                    std::span<Primitive> leaves, ThreadPool* pool) const;
-    void finish(EvaluatedFrame& frame) && { frame.filledBy = std::move(program); }
+    /// The colour keys (applyColourTracks), and the frame is whole.
+    void finish(EvaluatedFrame& frame) &&;
+
+    const SceneDesc* scene = nullptr;
+    double t = 0;
 };
+
+/// Sets the colours of the shapes that `colour` keys reach (SPEC 10.3) at
+/// time t, over the surfaces evaluated from `/paint`.
+void applyColourTracks(const SceneDesc& scene, double t, EvaluatedFrame& frame);
+
+/// Calls visit(object, shape, rgb) for every shape a `colour` track reaches at
+/// time t (shape: its index among the object's primitives; rgb: 0..255,
+/// unrounded), least specific target first, so the last call for a shape
+/// is its colour. A shape painted in its model is not reached (SPEC 10.3).
+template <class Visit>
+void forEachKeyedColour(const SceneDesc& scene, double t, Visit&& visit) {
+    for (const ColourTrack& c : scene.colourTracks) {
+        if (c.track.keys.empty()) continue;
+        const Vec3 v = evaluateTrack(c.track, t, Pose{}).position;
+        // An easing that overshoots stops at the ends of the scale.
+        const Vec3 rgb{std::clamp(v.x, 0.0f, 255.0f), std::clamp(v.y, 0.0f, 255.0f),
+                       std::clamp(v.z, 0.0f, 255.0f)};
+        const SceneObject& object = scene.objects[c.target.object];
+        if (!isModel(object.kind)) {
+            visit(std::size_t(c.target.object), std::size_t(0), rgb);
+            continue;
+        }
+        const ModelDef& model = modelOf(object.kind);
+        for (std::size_t k = 0; k < model.shapes.size(); ++k) {
+            const ModelShape& shape = model.shapes[k];
+            if (shape.ownColor || (c.target.part >= 0 && int(shape.part) != c.target.part)) continue;
+            visit(std::size_t(c.target.object), k, rgb);
+        }
+    }
+}
 
 }  // namespace f2

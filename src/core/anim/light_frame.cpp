@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <numbers>
 
+#include "core/anim/frame_builder.h"
+#include "core/anim/track.h"
+
 namespace f2 {
 
 void appendDiscPattern(int n, std::vector<DiscPoint>& out) {
@@ -21,14 +24,45 @@ namespace {
 float cosDegrees(float degrees) { return float(std::cos(double(degrees) * std::numbers::pi / 180.0)); }
 }  // namespace
 
-void evaluateLights(const SceneDesc& scene, EvaluatedFrame& frame) {
+Transform lightFrameAt(const SceneDesc& scene, const LightMotion& motion, double t) {
+    const Pose pose = evaluateTrack(motion.track, t, Pose{});
+    const Transform local = Transform::fromPose(pose.position, pose.rotation);
+    return motion.attachedTo ? worldFromRef(scene, *motion.attachedTo, t) * local : local;
+}
+
+float lightIntensityAt(const SceneDesc& scene, std::int32_t motion, float written, double t) {
+    if (motion == kStillLight) return written;
+    const Track& track = scene.lightMotions[std::size_t(motion)].intensity;
+    if (track.keys.empty()) return written;
+    return std::max(0.0f, evaluateTrack(track, t, Pose{}).position.x);
+}
+
+PlacedLight placeLight(const SceneDesc& scene, std::int32_t motion, Vec3 position, Vec3 direction, double t) {
+    if (motion == kStillLight) return {position, direction};
+    const LightMotion& m = scene.lightMotions[std::size_t(motion)];
+    // A named light that neither moves nor rides keeps its numbers bit for bit.
+    if (m.track.keys.empty() && !m.attachedTo) return {position, direction};
+    const Transform world = lightFrameAt(scene, m, t);
+    return {world.applyToPoint(position), world.applyToVector(direction)};
+}
+
+float ambientAt(const SceneDesc& scene, double t) {
+    float ambient = scene.ambient;
+    for (const AmbientLight& light : scene.namedAmbients)
+        ambient += lightIntensityAt(scene, std::int32_t(light.motion), light.intensity, t);
+    return ambient;
+}
+
+void evaluateLights(const SceneDesc& scene, double t, EvaluatedFrame& frame) {
+    frame.ambient = ambientAt(scene, t);
     frame.lights.clear();
     frame.sunDirections.clear();
     frame.localLights.clear();
     frame.discPoints.clear();
     std::vector<DiscPoint>& disc = frame.discPoints;
     for (const DirectionalLight& light : scene.lights) {
-        LightSample sample{-normalize(light.direction), light.intensity};
+        const Vec3 direction = placeLight(scene, light.motion, Vec3{}, light.direction, t).direction;
+        LightSample sample{-normalize(direction), lightIntensityAt(scene, light.motion, light.intensity, t)};
         if (light.sun.soft()) {
             // The sun's disc of angular radius r, seen from the scene: directions
             // toward L + (u a + v b) * 2 tan r, (u, v) on the unit-diameter disc.
@@ -46,12 +80,13 @@ void evaluateLights(const SceneDesc& scene, EvaluatedFrame& frame) {
         frame.lights.push_back(sample);
     }
     for (const LocalLight& light : scene.localLights) {
+        const PlacedLight placed = placeLight(scene, light.motion, light.position, light.direction, t);
         LocalLightSample sample;
-        sample.position = light.position;
-        sample.intensity = light.intensity;
+        sample.position = placed.position;
+        sample.intensity = lightIntensityAt(scene, light.motion, light.intensity, t);
         sample.spot = light.kind == LocalLightKind::Spot;
         if (sample.spot) {
-            sample.axis = normalize(light.direction);
+            sample.axis = normalize(placed.direction);
             sample.cosRadius = cosDegrees(light.radius);
             sample.cosFalloff = cosDegrees(light.falloff);
             sample.tightness = light.tightness;

@@ -8,9 +8,30 @@
 
 namespace f2 {
 
-/// Fills frame.lights, sunDirections, localLights and discPoints from `scene`
-/// (keeping the vectors' capacity).
-void evaluateLights(const SceneDesc& scene, EvaluatedFrame& frame);
+/// Fills frame.ambient, lights, sunDirections, localLights and discPoints
+/// from `scene` at time `t` (frames), keeping the vectors' capacity. Named
+/// lights (SPEC 10.2) are moved by their pose and attachment and take their
+/// keyed intensity.
+void evaluateLights(const SceneDesc& scene, double t, EvaluatedFrame& frame);
+
+/// The scene's ambient intensity at time t: the unnamed `/amb_light`s and the
+/// named ones at their keyed intensity.
+float ambientAt(const SceneDesc& scene, double t);
+
+/// The frame a named light's numbers are read in at time t (SPEC 10.2):
+/// worldFrom(its mount) · pose, or pose when it rides on nothing.
+Transform lightFrameAt(const SceneDesc& scene, const LightMotion& motion, double t);
+
+/// A light's intensity at time t: its `intensity` track (SPEC 10.3), never
+/// below 0 (an overshooting easing would go there), else `written`.
+float lightIntensityAt(const SceneDesc& scene, std::int32_t motion, float written, double t);
+
+/// A light's position and direction in world space at time t: as written for
+/// a light without a name, else through lightFrameAt.
+struct PlacedLight {
+    Vec3 position, direction;
+};
+PlacedLight placeLight(const SceneDesc& scene, std::int32_t motion, Vec3 position, Vec3 direction, double t);
 
 /// The fixed pattern of an n x n soft-shadow grid on a unit-diameter disc,
 /// appended to `out`: POV-Ray's `area_light ... n, n circular`, whose grid

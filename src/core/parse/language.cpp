@@ -33,24 +33,28 @@ constexpr std::array<CommandSpec, 25> kCommands = {{
      "the rotated +z axis. `d` is the distance to the screen in screen widths (`0.5` gives "
      "90°). At most one per scene; without one, `/camera 800 600 0.5`.",
      false},
-    {CommandId::AmbLight, "/amb_light", Edition::First, CommandGroup::Setting, kNumbers, "/amb_light <i>",
-     "/amb_light ${1:0.2}", "Ambient light of intensity `i ≥ 0`; several add up.", false},
+    {CommandId::AmbLight, "/amb_light", Edition::First, CommandGroup::Setting, kNumbers,
+     "/amb_light <i> [name <lname>]", "/amb_light ${1:0.2}",
+     "Ambient light of intensity `i ≥ 0`; several add up. `name lname`: its intensity can be keyed "
+     "(`/key t lname intensity i`).",
+     false},
     {CommandId::DirLight, "/dir_light", Edition::First, CommandGroup::Setting, kNumbers,
-     "/dir_light <i> <x> <y> <z> [angle <r> <n>]", "/dir_light ${1:0.8} ${2:0} ${3:-1} ${4:1}",
+     "/dir_light <i> <x> <y> <z> [angle <r> <n>] [name <lname>]", "/dir_light ${1:0.8} ${2:0} ${3:-1} ${4:1}",
      "A directional light of intensity `i ≥ 0` whose light travels along `(x, y, z)`; it casts "
      "shadows. `angle r n`: a sun of angular radius `r` degrees with soft shadows from `n × n` "
-     "shadow rays.",
+     "shadow rays. `name lname`: a light that keys and `/attach` move (its direction turns with it).",
      false},
     {CommandId::PointLight, "/point_light", Edition::Third, CommandGroup::Setting, kNumbers,
-     "/point_light <i> <x> <y> <z> [fade <d> <p>] [size <s> <n>]",
+     "/point_light <i> <x> <y> <z> [fade <d> <p>] [size <s> <n>] [name <lname>]",
      "/point_light ${1:0.8} ${2:0} ${3:300} ${4:0}",
      "A light of intensity `i ≥ 0` at `(x, y, z)`, casting shadows. `fade d p`: intensity "
      "`i · 2 / (1 + (D/d)^p)` at distance `D` (POV-Ray's fade_distance, fade_power). `size s n`: "
-     "soft shadows from a disc of diameter `s`, `n × n` shadow rays.",
+     "soft shadows from a disc of diameter `s`, `n × n` shadow rays. `name lname`: a light that keys "
+     "and `/attach` move (a bulb on a lamp's head), whose `intensity` can be keyed.",
      false},
     {CommandId::SpotLight, "/spot_light", Edition::Third, CommandGroup::Setting, kNumbers,
      "/spot_light <i> <x> <y> <z> <dx> <dy> <dz> <radius> <falloff> [tightness <k>] [fade <d> <p>] "
-     "[size <s> <n>]",
+     "[size <s> <n>] [name <lname>]",
      "/spot_light ${1:0.8} ${2:0} ${3:300} ${4:0} ${5:0} ${6:-1} ${7:0} ${8:20} ${9:30}",
      "A point light whose light travels along `(dx, dy, dz)` in a cone: full within `radius` "
      "degrees of the axis, none beyond `falloff`, a smooth edge between (POV-Ray's spotlight). "
@@ -104,11 +108,14 @@ constexpr std::array<CommandSpec, 25> kCommands = {{
      "/anim <target>  or  /anim <name> <part>", "/anim ${1:target}",
      "Marks a target as animated (checked, no other effect: a `/key` needs no `/anim`).", true},
     {CommandId::Key, "/key", Edition::First, CommandGroup::Motion, kKey,
-     "/key <t> <target> [<px> <py> <pz> <rx> <ry> <rz>] [<mode>]",
+     "/key <t> <target> [<px> <py> <pz> <rx> <ry> <rz>] [<mode>]  or  /key <t> <target> <property> <values…> "
+     "[<mode>]",
      "/key ${1:0} ${2:target} ${3:0} ${4:0} ${5:0} ${6:0} ${7:0} ${8:0}",
      "Time `t` is a key of `target`: an object's absolute position and rotation, or a part's "
      "offset from its pivot and rotation about it. Without the six numbers: the rest state. "
-     "`t` is in frames (fractions allowed) or, as `2.5s` or `(expr)s`, in seconds at the scene's `/fps`.",
+     "`t` is in frames (fractions allowed) or, as `2.5s` or `(expr)s`, in seconds at the scene's `/fps`. "
+     "A property instead of the pose: `colour r g b` (an object or part), `intensity i` (a named "
+     "light), `d` (the camera's zoom).",
      true},
     {CommandId::Interp, "/interp", Edition::First, CommandGroup::Motion, kInterp, "/interp <target> <mode>",
      "/interp ${1:target} ${2|linear,ease,spline|}",
@@ -156,11 +163,18 @@ constexpr bool inIdOrder() {
 }
 static_assert(inIdOrder(), "kCommands must list the commands in CommandId order");
 
-constexpr std::array<LightOptionSpec, 4> kLightOptions = {{
+constexpr std::array<LightOptionSpec, 5> kLightOptions = {{
     {LightOption::Fade, "fade", 2, "a distance and a power"},
     {LightOption::Size, "size", 2, "a diameter and the samples per side"},
     {LightOption::Angle, "angle", 2, "an angular radius and the samples per side"},
     {LightOption::Tightness, "tightness", 1, "a number"},
+    {LightOption::Name, "name", 1, "a new name"},
+}};
+
+constexpr std::array<KeyPropertySpec, 3> kKeyProperties = {{
+    {KeyProperty::Colour, "colour", 3, "r g b", "a primitive, a robot or human, or a part"},
+    {KeyProperty::Intensity, "intensity", 1, "i", "a named light"},
+    {KeyProperty::Zoom, "d", 1, "d", "the camera"},
 }};
 
 constexpr std::array<Interpolation, 10> kModes = {
@@ -196,6 +210,15 @@ const CommandSpec* findCommand(std::string_view name) {
 }
 
 std::span<const LightOptionSpec> lightOptions() { return kLightOptions; }
+
+std::span<const KeyPropertySpec> keyProperties() { return kKeyProperties; }
+
+const KeyPropertySpec* findKeyProperty(std::string_view word) {
+    for (const KeyPropertySpec& p : kKeyProperties) {
+        if (p.word == word) return &p;
+    }
+    return nullptr;
+}
 
 std::span<const Interpolation> interpolationModes() { return kModes; }
 

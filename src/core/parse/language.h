@@ -97,15 +97,30 @@ const CommandSpec& command(CommandId id);
 const CommandSpec* findCommand(std::string_view name);
 
 /// The options of the light commands (docs/scene-language.md, "Point and spot lights").
-enum class LightOption : std::uint8_t { Fade, Size, Angle, Tightness };
+/// `name` (SPEC 10.2) makes the light a named one, which keys and `/attach` reach.
+enum class LightOption : std::uint8_t { Fade, Size, Angle, Tightness, Name };
 struct LightOptionSpec {
     LightOption option;
     std::string_view word;  ///< "fade"
-    int numbers;            ///< how many numbers follow it
+    int numbers;            ///< how many numbers (for `name`: words) follow it
     std::string_view what;  ///< "a distance and a power", for messages
 };
 /// Every light option, in LightOption order.
 std::span<const LightOptionSpec> lightOptions();
+
+/// What a `/key <t> <target> <property> <values…>` keys besides the pose (SPEC 10.3).
+enum class KeyProperty : std::uint8_t { Colour, Intensity, Zoom };
+struct KeyPropertySpec {
+    KeyProperty property;
+    std::string_view word;     ///< "colour"
+    int numbers;               ///< how many values follow it
+    std::string_view values;   ///< "r g b", for messages and hover
+    std::string_view targets;  ///< what has it: "a primitive, a robot or human, or a part"
+};
+/// Every key property, in KeyProperty order.
+std::span<const KeyPropertySpec> keyProperties();
+/// The property named `word` ("colour"), or nullptr.
+const KeyPropertySpec* findKeyProperty(std::string_view word);
 
 /// The interpolation modes (SPEC 6, 9.3), in the order completion lists them.
 std::span<const Interpolation> interpolationModes();

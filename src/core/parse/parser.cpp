@@ -68,20 +68,27 @@ struct StringHash {
     std::size_t operator()(std::string_view s) const noexcept { return std::hash<std::string_view>{}(s); }
 };
 
-/// A command's target: an object, one part of a model, or the camera.
+/// A command's target: an object, one part of a model, the camera or a named light.
 struct Target {
     std::size_t object = 0;
     int part = -1;        ///< PartId index, or -1 for the object itself
     bool camera = false;  ///< the scene camera (SPEC 9.1); `object` and `part` unused
+    int light = -1;       ///< a named light (SPEC 10.2): SceneDesc::lightMotions index; `object` unused
 };
 
 /// Whether a command accepts `camera` as its target.
 enum class CameraTarget : bool { Refused, Accepted };
+/// Whether a command accepts a named light as its target (SPEC 10.2).
+enum class LightTarget : bool { Refused, Accepted };
+
+/// What a track holds: the pose (none) or a property (SPEC 10.3).
+using TrackProperty = std::optional<KeyProperty>;
 
 /// Parse-time bookkeeping of one track: where each key came from, for the
 /// duplicate-key warning. Parallel to Track::keys.
 struct TrackBook {
     Target target;
+    TrackProperty property;
     std::vector<Pos> origins;
     bool sorted = true;  ///< keys arrived in increasing frame order so far
     /// Keys whose time is still in seconds (SPEC 10.4), turned into frames at
@@ -104,6 +111,17 @@ struct ObjectBook {
     std::array<std::optional<Pos>, kPartCount + 1> interps{};
     std::optional<Pos> attached;  ///< where its `/attach` is
     std::uint32_t loopNote = 0;  ///< the loop pass it was defined in: Parser::loopNotes_ index + 1, 0 if none
+    /// Index into SceneDesc::colourTracks of the object's (0) and each part's (1 + PartId) colour keys; -1 if
+    /// none.
+    std::array<int, kPartCount + 1> colourTracks{-1, -1, -1, -1, -1};
+};
+
+/// Parse-time bookkeeping of one named light (SPEC 10.2).
+struct LightBook {
+    Pos defined;
+    std::uint32_t loopNote = 0;             ///< as ObjectBook::loopNote
+    int poseBook = -1, intensityBook = -1;  ///< Parser::trackBooks_ indices, -1 if none
+    std::optional<Pos> interp, attached;
 };
 
 /// Where a `/caption`'s times stand and whether they are in seconds: they
@@ -158,6 +176,8 @@ class Parser : private ExpansionSink {
         addCameraKeys();
         convertSecondsToFrames();
         sortUnsortedTracks();
+        applyInterpToPropertyTracks();
+        orderColourTracks();
         orderAttachments();
         if (errors_ == 0) warnAboutTheWholeScene();
         return finish();
@@ -523,14 +543,31 @@ class Parser : private ExpansionSink {
             error(argPos(i), "'camera' is the name of the scene camera; an object cannot take it");
             return false;
         }
-        if (auto it = names_.find(name); it != names_.end()) {
-            const ObjectBook& first = books_[it->second];
+        std::optional<std::pair<Pos, std::uint32_t>> first;  // where, and its loop note
+        if (auto it = names_.find(name); it != names_.end())
+            first = {books_[it->second].defined, books_[it->second].loopNote};
+        if (auto it = lightNames_.find(name); it != lightNames_.end())
+            first = {lightBooks_[it->second].defined, lightBooks_[it->second].loopNote};
+        if (first) {
             error(argPos(i), "duplicate name " + quoteToken(name) + " (first defined at " +
-                                 posText(first.defined) +
-                                 (first.loopNote == 0 ? "" : " " + loopNotes_[first.loopNote - 1]) + ")");
+                                 posText(first->first) +
+                                 (first->second == 0 ? "" : " " + loopNotes_[first->second - 1]) + ")");
             return false;
         }
         return true;
+    }
+
+    /// The named light `name`, if it is one (SPEC 10.2).
+    std::optional<int> lightNamed(std::string_view name) const {
+        auto it = lightNames_.find(name);
+        if (it == lightNames_.end()) return std::nullopt;
+        return static_cast<int>(it->second);
+    }
+
+    /// "the light 'lamp'" or "the ambient light 'sky'", for messages.
+    std::string lightText(int light) const {
+        const LightMotion& l = scene_.lightMotions[static_cast<std::size_t>(light)];
+        return std::string(l.ambient ? "the ambient light " : "the light ") + quoteToken(l.name);
     }
 
     /// Looks up an existing object by name; `token` is the whole argument, for the message;
@@ -564,6 +601,10 @@ class Parser : private ExpansionSink {
             if (nameSuggestWork_ >= kMaxNameSuggestWork) break;
             nameSuggestWork_ += closest.consider(o.name);
         }
+        for (const LightMotion& l : scene_.lightMotions) {
+            if (nameSuggestWork_ >= kMaxNameSuggestWork) break;
+            nameSuggestWork_ += closest.consider(l.name);
+        }
         if (cameraToo) closest.consider(kCameraName);
         return closest.best();
     }
@@ -590,12 +631,30 @@ class Parser : private ExpansionSink {
         return index;
     }
 
-    /// Resolves `name` or `name.part` in argument i, or `camera` when the command takes it.
-    std::optional<Target> target(int i, CameraTarget cameraUse = CameraTarget::Refused) {
+    /// Resolves `name` or `name.part` in argument i, or `camera` or a named
+    /// light when the command takes them.
+    std::optional<Target> target(int i, CameraTarget cameraUse = CameraTarget::Refused,
+                                 LightTarget lightUse = LightTarget::Refused) {
         if (failed(i)) return std::nullopt;
         const std::string_view text = arg(i);
         const Pos pos = argPos(i);
         const std::size_t dot = text.find('.');
+        if (const std::optional<int> light = lightNamed(text.substr(0, dot))) {
+            if (lightUse == LightTarget::Refused) {
+                error(pos, quoteToken(commandText()) + " does not apply to lights: " +
+                               quoteToken(text.substr(0, dot)) + " is a light");
+                return std::nullopt;
+            }
+            if (dot != std::string_view::npos) {
+                Pos partPos = pos;
+                partPos.column += static_cast<int>(dot) + 1;
+                error(partPos, "a light has no parts");
+                return std::nullopt;
+            }
+            Target t;
+            t.light = *light;
+            return t;
+        }
         if (text.substr(0, dot) == kCameraName) {
             if (cameraUse == CameraTarget::Refused) {
                 error(pos, quoteToken(commandText()) + " does not apply to the camera");
@@ -624,6 +683,7 @@ class Parser : private ExpansionSink {
 
     std::string targetName(Target t) const {
         if (t.camera) return std::string(kCameraName);
+        if (t.light >= 0) return scene_.lightMotions[static_cast<std::size_t>(t.light)].name;
         std::string s = scene_.objects[t.object].name;
         if (t.part >= 0) {
             s += '.';
@@ -632,10 +692,28 @@ class Parser : private ExpansionSink {
         return s;
     }
 
-    Track& trackOf(Target t) {
+    /// The track of `t`'s pose, or of one of its properties (SPEC 10.3).
+    Track& trackOf(Target t, TrackProperty property = std::nullopt) {
+        if (property == KeyProperty::Zoom) return scene_.camera.zoom;
+        if (property == KeyProperty::Intensity) return lightMotion(t).intensity;
+        if (property == KeyProperty::Colour) return scene_.colourTracks[colourTrackIndex(t)].track;
         if (t.camera) return scene_.camera.track;
+        if (t.light >= 0) return lightMotion(t).track;
         SceneObject& o = scene_.objects[t.object];
         return t.part < 0 ? o.track : o.partTracks[static_cast<std::size_t>(t.part)];
+    }
+    LightMotion& lightMotion(Target t) { return scene_.lightMotions[static_cast<std::size_t>(t.light)]; }
+    LightBook& lightBook(Target t) { return lightBooks_[static_cast<std::size_t>(t.light)]; }
+
+    /// The colour track of an object or part, made on its first key.
+    std::size_t colourTrackIndex(Target t) {
+        int& index = books_[t.object].colourTracks[static_cast<std::size_t>(t.part + 1)];
+        if (index < 0) {
+            index = static_cast<int>(scene_.colourTracks.size());
+            scene_.colourTracks.push_back({FrameRef{static_cast<std::uint32_t>(t.object), t.part}, {}});
+            colourTrackBooks_.push_back(-1);
+        }
+        return static_cast<std::size_t>(index);
     }
 
     // Commands
@@ -668,6 +746,7 @@ class Parser : private ExpansionSink {
         if (argCount() >= 6) camera.pose = pose(3, argCount() == 9, ok);
         // Keys, /look_at and /attach of the camera may come before /camera.
         camera.track = std::move(scene_.camera.track);
+        camera.zoom = std::move(scene_.camera.zoom);
         camera.attachedTo = scene_.camera.attachedTo;
         camera.lookAt = scene_.camera.lookAt;
         if (!ok) return;
@@ -691,10 +770,16 @@ class Parser : private ExpansionSink {
     }
 
     void parseAmbLight() {
-        if (!expectArgs({1}) || !lightAllowed()) return;
+        if (!expectArgs({1, 3}) || !lightAllowed()) return;
         bool ok = true;
         const float i = nonNegative(0, "ambient intensity", ok);
-        if (!ok) return;
+        LightOptions options;
+        if (!lightOptions(1, {LightOption::Name}, options) || !ok) return;
+        if (options.nameArg >= 0) {
+            scene_.namedAmbients.push_back(
+                {i, static_cast<std::uint32_t>(registerLight(options.nameArg, true))});
+            return;
+        }
         const float sum = scene_.ambient + i;
         if (!std::isfinite(sum)) {
             error(argPos(0), "total ambient intensity is out of range");
@@ -728,6 +813,7 @@ class Parser : private ExpansionSink {
         Fade fade;
         SoftShadow shadow;
         float tightness = 0;
+        int nameArg = -1;  ///< the argument holding `name`'s word, -1 if unnamed
     };
 
     /// Reads the options after argument `first` (docs/scene-language.md,
@@ -784,6 +870,12 @@ class Parser : private ExpansionSink {
                 case LightOption::Tightness:
                     out.tightness = nonNegative(i + 1, "tightness", ok);
                     break;
+                case LightOption::Name:
+                    if (newName(i + 1))
+                        out.nameArg = i + 1;
+                    else
+                        ok = false;
+                    break;
             }
             i += 1 + spec->numbers;
         }
@@ -806,9 +898,9 @@ class Parser : private ExpansionSink {
         return lightAllowed();
     }
 
-    /// The most arguments of a light command: /spot_light's 9 and its three
-    /// options (tightness k, fade d p, size s n). Every one is stored (kMaxStoredTokens).
-    static constexpr int kMostLightArgs = 9 + 2 + 3 + 3;
+    /// The most arguments of a light command: /spot_light's 9 and its four
+    /// options (tightness k, fade d p, size s n, name n). Every one is stored (kMaxStoredTokens).
+    static constexpr int kMostLightArgs = 9 + 2 + 3 + 3 + 2;
     static_assert(kMostLightArgs + 1 <= kMaxStoredTokens);
 
     /// The largest angular radius of a soft sun (degrees): wider is no longer a sun.
@@ -821,8 +913,9 @@ class Parser : private ExpansionSink {
         light.intensity = nonNegative(0, "light intensity", ok);
         light.direction = lightDirection(1, ok);
         LightOptions options;
-        if (!lightOptions(4, {LightOption::Angle}, options) || !ok) return;
+        if (!lightOptions(4, {LightOption::Angle, LightOption::Name}, options) || !ok) return;
         light.sun = options.shadow;
+        if (options.nameArg >= 0) light.motion = registerLight(options.nameArg, false);
         scene_.lights.push_back(light);
     }
 
@@ -855,14 +948,30 @@ class Parser : private ExpansionSink {
         }
         LightOptions options;
         const bool optionsOk =
-            spot
-                ? lightOptions(fixed, {LightOption::Tightness, LightOption::Fade, LightOption::Size}, options)
-                : lightOptions(fixed, {LightOption::Fade, LightOption::Size}, options);
+            spot ? lightOptions(
+                       fixed,
+                       {LightOption::Tightness, LightOption::Fade, LightOption::Size, LightOption::Name},
+                       options)
+                 : lightOptions(fixed, {LightOption::Fade, LightOption::Size, LightOption::Name}, options);
         if (!optionsOk || !ok) return;
         light.tightness = options.tightness;
         light.fade = options.fade;
         light.area = options.shadow;
+        if (options.nameArg >= 0) light.motion = registerLight(options.nameArg, false);
         scene_.localLights.push_back(light);
+    }
+
+    /// Makes the light named by argument `nameArg` (valid and new) a target of
+    /// `/key`, `/interp` and `/attach` (SPEC 10.2); returns its lightMotions index.
+    std::int32_t registerLight(int nameArg, bool ambient) {
+        const auto index = static_cast<std::int32_t>(scene_.lightMotions.size());
+        LightMotion motion;
+        motion.name = std::string(arg(nameArg));
+        motion.ambient = ambient;
+        lightNames_.emplace(motion.name, scene_.lightMotions.size());
+        scene_.lightMotions.push_back(std::move(motion));
+        lightBooks_.push_back({argPos(nameArg), definitionLoopNote(), -1, -1, std::nullopt, std::nullopt});
+        return index;
     }
 
     void parseBackground() {
@@ -945,7 +1054,15 @@ class Parser : private ExpansionSink {
             warning({1, 1}, "the scene has no objects: every frame shows only the background");
             return;
         }
+        const auto keyedOn = [](const Track& t) {
+            return std::any_of(t.keys.begin(), t.keys.end(),
+                               [](const Key& k) { return k.pose.position.x > 0; });
+        };
         const bool lit = scene_.ambient > 0 ||
+                         std::any_of(scene_.namedAmbients.begin(), scene_.namedAmbients.end(),
+                                     [](const AmbientLight& l) { return l.intensity > 0; }) ||
+                         std::any_of(scene_.lightMotions.begin(), scene_.lightMotions.end(),
+                                     [&](const LightMotion& l) { return keyedOn(l.intensity); }) ||
                          std::any_of(scene_.lights.begin(), scene_.lights.end(),
                                      [](const DirectionalLight& l) { return l.intensity > 0; }) ||
                          std::any_of(scene_.localLights.begin(), scene_.localLights.end(),
@@ -1011,11 +1128,15 @@ class Parser : private ExpansionSink {
         if (!expectArgs({1, 2}) || failed(0)) return;
         // Only validates: /key needs no /anim (SPEC 6).
         if (argCount() == 1) {
-            target(0, CameraTarget::Accepted);
+            target(0, CameraTarget::Accepted, LightTarget::Accepted);
             return;
         }
         if (arg(0) == kCameraName) {
             error(argPos(1), "the camera has no parts");
+            return;
+        }
+        if (lightNamed(arg(0))) {
+            error(argPos(1), "a light has no parts");
             return;
         }
         if (arg(0).find('.') != std::string_view::npos) {
@@ -1029,11 +1150,13 @@ class Parser : private ExpansionSink {
 
     void parseInterp() {
         if (!expectArgs({2, 6})) return;
-        const std::optional<Target> t = target(0, CameraTarget::Accepted);
+        const std::optional<Target> t = target(0, CameraTarget::Accepted, LightTarget::Accepted);
         const std::optional<Easing> mode = easing(1, argCount());
         if (!t || !mode) return;
-        std::optional<Pos>& before =
-            t->camera ? cameraInterp_ : books_[t->object].interps[static_cast<std::size_t>(t->part + 1)];
+        std::optional<Pos>& before = t->camera ? cameraInterp_
+                                     : t->light >= 0
+                                         ? lightBook(*t).interp
+                                         : books_[t->object].interps[static_cast<std::size_t>(t->part + 1)];
         if (before) {
             warning(argPos(0), "interpolation of " + quoteToken(targetName(*t)) +
                                    " is given again; it replaces the one at " + posText(*before));
@@ -1082,20 +1205,26 @@ class Parser : private ExpansionSink {
                                  commandLine(), commandPos()));
             return;
         }
+        // A word after the target that is not a mode names a property (SPEC 10.3),
+        // unless it stands alone there: then it is read as a (mistyped) mode.
+        const bool keysProperty = n > 2 && isWordArgument(2) && !modeFromWord(arg(2)) &&
+                                  (n > 3 || findKeyProperty(arg(2)) != nullptr);
+        const int firstNumber = keysProperty ? 3 : 2;
         // The key's mode (SPEC 9.3) is a last argument that is a word, or a
         // mode with numbers after it (`bezier x1 y1 x2 y2`, SPEC 10.4). Only a
         // line short enough to be a key has its tokens stored.
         constexpr int kMostKeyArgs = 13;  // time, target, six numbers, bezier and its four
         int modeAt = n;
         if (n <= kMostKeyArgs) {
-            for (int i = 2; i < n && modeAt == n; ++i) {
+            for (int i = firstNumber; i < n && modeAt == n; ++i) {
                 if (!isWordArgument(i)) continue;
                 const std::optional<Interpolation> mode = modeFromWord(arg(i));
                 if (mode && modeNumberCount(*mode) > 0) modeAt = i;
             }
-            if (modeAt == n && n > 2 && isWordArgument(n - 1)) modeAt = n - 1;
+            if (modeAt == n && n > firstNumber && isWordArgument(n - 1)) modeAt = n - 1;
         }
-        const int numbers = modeAt - 2;
+        const int numbers = modeAt - firstNumber;
+        if (keysProperty) return parsePropertyKey(numbers, modeAt);
         if (numbers != 0 && numbers != 6) {
             error(commandPos(), noteCharacters("'/key' takes 0 or 6 numbers after the target, got " +
                                                    std::to_string(numbers),
@@ -1104,7 +1233,7 @@ class Parser : private ExpansionSink {
         }
         bool ok = true;
         const KeyTime time = keyTime(0, ok);
-        const std::optional<Target> t = target(1, CameraTarget::Accepted);
+        const std::optional<Target> t = target(1, CameraTarget::Accepted, LightTarget::Accepted);
         Pose p;
         if (numbers == 6) p = pose(2, true, ok);
         std::optional<Easing> mode;
@@ -1113,15 +1242,108 @@ class Parser : private ExpansionSink {
             ok = ok && mode.has_value();
         }
         if (!t || !ok) return;
+        if (t->light >= 0 && lightMotion(*t).ambient) {
+            error(argPos(1), quoteToken(arg(1)) +
+                                 " is an ambient light: it has no pose (key its intensity: "
+                                 "'/key <t> " +
+                                 std::string(arg(1)) + " intensity <i>')");
+            return;
+        }
         if (t->camera) {
             // `/camera` may come later: its pose is filled in at the end.
             cameraKeys_.push_back(
                 {time, numbers == 6 ? std::optional<Pose>(p) : std::nullopt, mode, argPos(0)});
             return;
         }
-        // Without numbers: an object's pose as created, a part's zero offset and rotation.
-        if (numbers == 0 && t->part < 0) p = scene_.objects[t->object].rest;
-        addKey(*t, time, {time.value, p, mode}, argPos(0));
+        // Without numbers: an object's pose as created, a part's zero offset
+        // and rotation, a light's identity.
+        if (numbers == 0 && t->part < 0 && t->light < 0) p = scene_.objects[t->object].rest;
+        addKey(*t, std::nullopt, time, {time.value, p, mode}, argPos(0));
+    }
+
+    /// `/key <t> <target> <property> <values…> [<mode>]` (SPEC 10.3), the
+    /// property's word in argument 2, `numbers` values after it, then the mode at `modeAt`.
+    void parsePropertyKey(int numbers, int modeAt) {
+        const KeyPropertySpec* spec = findKeyProperty(arg(2));
+        if (!spec) {
+            std::string expected = "expected six numbers, a mode, or a property:";
+            for (const KeyPropertySpec& p : keyProperties()) expected += " " + std::string(p.word);
+            ClosestWord closest(arg(2));
+            for (const KeyPropertySpec& p : keyProperties()) closest.consider(p.word);
+            const std::string_view guess = closest.best();
+            error(argPos(2),
+                  noteCharacters("unknown key property " + quoteToken(arg(2)) +
+                                     (guess.empty() ? "" : " (did you mean '" + std::string(guess) + "'?)") +
+                                     "; " + expected,
+                                 arg(2), argPos(2)));
+            return;
+        }
+        if (numbers != spec->numbers) {
+            error(argPos(2), quoteToken(spec->word) + " takes " + std::to_string(spec->numbers) +
+                                 (spec->numbers == 1 ? " number (" : " numbers (") +
+                                 std::string(spec->values) + "), got " + std::to_string(numbers));
+            return;
+        }
+        bool ok = true;
+        const KeyTime time = keyTime(0, ok);
+        const std::optional<Target> t = target(1, CameraTarget::Accepted, LightTarget::Accepted);
+        Vec3 values;
+        switch (spec->property) {
+            case KeyProperty::Colour: {
+                static constexpr std::array<std::string_view, 3> kWhat = {"red", "green", "blue"};
+                for (int k = 0; k < 3; ++k) {
+                    bool good = true;
+                    values[k] = real(3 + k, good);
+                    if (good && !(values[k] >= 0 && values[k] <= 255)) {
+                        error(argPos(3 + k), std::string(kWhat[static_cast<std::size_t>(k)]) +
+                                                 " must be from 0 to 255, got " + printable(arg(3 + k)));
+                        good = false;
+                    }
+                    ok = ok && good;
+                }
+                break;
+            }
+            case KeyProperty::Intensity:
+                values.x = nonNegative(3, "light intensity", ok);
+                break;
+            case KeyProperty::Zoom:
+                values.x = positive(3, "screen distance", ok);
+                break;
+        }
+        std::optional<Easing> mode;
+        if (modeAt < argCount()) {
+            mode = easing(modeAt, argCount());
+            ok = ok && mode.has_value();
+        }
+        if (!t || !ok) return;
+        if (!hasProperty(*t, spec->property)) {
+            error(argPos(2), quoteToken(spec->word) + " is not a property of " + targetText(*t) + " (" +
+                                 quoteToken(spec->word) + " keys " + std::string(spec->targets) + ")");
+            return;
+        }
+        addKey(*t, spec->property, time, {time.value, Pose{values, {}}, mode}, argPos(0));
+    }
+
+    /// SPEC 10.3's table: colour on objects and parts, intensity on named lights, d on the camera.
+    static bool hasProperty(Target t, KeyProperty property) {
+        switch (property) {
+            case KeyProperty::Colour:
+                return !t.camera && t.light < 0;
+            case KeyProperty::Intensity:
+                return t.light >= 0;
+            case KeyProperty::Zoom:
+                return t.camera;
+        }
+        return false;
+    }
+
+    /// "the camera", "the light 'lamp'", "the robot 'f2'", "the part 'f2.head'", for messages.
+    std::string targetText(Target t) const {
+        if (t.camera) return "the camera";
+        if (t.light >= 0) return lightText(t.light);
+        if (t.part >= 0) return "the part " + quoteToken(targetName(t));
+        const SceneObject& o = scene_.objects[t.object];
+        return "the " + std::string(objectKindName(o.kind)) + " " + quoteToken(o.name);
     }
 
     /// Whether argument i is a word that may be a mode (not a number, not an expression).
@@ -1219,24 +1441,28 @@ class Parser : private ExpansionSink {
     /// The camera's keys, in file order, now that `/camera`'s pose is known.
     void addCameraKeys() {
         for (const CameraKey& k : cameraKeys_) {
-            addKey(Target{0, -1, true}, k.time, {k.time.value, k.pose.value_or(scene_.camera.pose), k.mode},
-                   k.origin);
+            addKey(Target{0, -1, true}, std::nullopt, k.time,
+                   {k.time.value, k.pose.value_or(scene_.camera.pose), k.mode}, k.origin);
         }
         cameraKeys_ = {};
     }
 
-    int& trackBookIndex(Target t) {
+    int& trackBookIndex(Target t, TrackProperty property) {
+        if (property == KeyProperty::Zoom) return cameraZoomBook_;
+        if (property == KeyProperty::Intensity) return lightBook(t).intensityBook;
+        if (property == KeyProperty::Colour) return colourTrackBooks_[colourTrackIndex(t)];
         if (t.camera) return cameraTrackBook_;
+        if (t.light >= 0) return lightBook(t).poseBook;
         return books_[t.object].tracks[static_cast<std::size_t>(t.part + 1)];
     }
 
     /// `key.time` is `time.value`: frames, or seconds until convertSecondsToFrames.
-    void addKey(Target t, KeyTime time, const Key& key, Pos origin) {
-        Track& track = trackOf(t);
-        int& bookIndex = trackBookIndex(t);
+    void addKey(Target t, TrackProperty property, KeyTime time, const Key& key, Pos origin) {
+        Track& track = trackOf(t, property);
+        int& bookIndex = trackBookIndex(t, property);
         if (bookIndex < 0) {
             bookIndex = static_cast<int>(trackBooks_.size());
-            trackBooks_.push_back({t, {}, true, {}});
+            trackBooks_.push_back({t, property, {}, true, {}});
         }
         TrackBook& book = trackBooks_[static_cast<std::size_t>(bookIndex)];
         if (time.seconds) {
@@ -1251,7 +1477,7 @@ class Parser : private ExpansionSink {
         if (book.sorted && !track.keys.empty()) {
             Key& last = track.keys.back();
             if (key.time == last.time) {
-                warnReplaced(t, key.time, origin, book.origins.back());
+                warnReplaced(t, property, key.time, origin, book.origins.back());
                 last = key;
                 book.origins.back() = origin;
                 return;
@@ -1289,7 +1515,7 @@ class Parser : private ExpansionSink {
         }
         captionBooks_ = {};
         for (TrackBook& book : trackBooks_) {
-            std::vector<Key>& keys = trackOf(book.target).keys;
+            std::vector<Key>& keys = trackOf(book.target, book.property).keys;
             for (std::uint32_t k : book.inSeconds)
                 keys[k].time = framesOfSeconds(keys[k].time, book.origins[k]);
             book.inSeconds = {};
@@ -1315,9 +1541,17 @@ class Parser : private ExpansionSink {
         if (!expectArgs({2})) return;
         const std::string_view name = arg(0);
         const bool camera = name == kCameraName;
+        const std::optional<int> light = failed(0) ? std::nullopt : lightNamed(name);
         std::optional<std::size_t> child;
         // A `{ … }` that failed is reported already; the parent is still checked.
-        if (!camera && !failed(0)) {
+        if (light) {
+            if (scene_.lightMotions[static_cast<std::size_t>(*light)].ambient) {
+                error(argPos(0), quoteToken(name) +
+                                     " is an ambient light: it has no position, so it cannot be attached");
+                target(1);
+                return;
+            }
+        } else if (!camera && !failed(0)) {
             if (name.find('.') != std::string_view::npos) {
                 error(argPos(0),
                       "only a whole object or the camera can be attached, got " + quoteToken(name));
@@ -1326,16 +1560,19 @@ class Parser : private ExpansionSink {
             }
         }
         const std::optional<Target> parent = target(1);
-        if ((!camera && !child) || !parent) return;
-        std::optional<Pos>& seen = camera ? cameraAttached_ : books_[*child].attached;
+        if ((!camera && !light && !child) || !parent) return;
+        std::optional<Pos>& seen = camera  ? cameraAttached_
+                                   : light ? lightBooks_[static_cast<std::size_t>(*light)].attached
+                                           : books_[*child].attached;
         if (seen) {
             error(argPos(0), quoteToken(name) + " is already attached (at " + posText(*seen) +
                                  "); one '/attach' per name");
             return;
         }
         const FrameRef ref{static_cast<std::uint32_t>(parent->object), parent->part};
-        if (camera) {  // nothing rides on the camera, so it closes no cycle
-            scene_.camera.attachedTo = ref;
+        if (camera || light) {  // nothing rides on the camera or a light, so they close no cycle
+            (camera ? scene_.camera.attachedTo
+                    : scene_.lightMotions[static_cast<std::size_t>(*light)].attachedTo) = ref;
             seen = commandPos();
             return;
         }
@@ -1403,16 +1640,35 @@ class Parser : private ExpansionSink {
         }
     }
 
-    void warnReplaced(Target t, double frame, Pos now, Pos before) {
-        warning(now, "key frame " + formatNumber(frame) + " of " + quoteToken(targetName(t)) +
+    void warnReplaced(Target t, TrackProperty property, double frame, Pos now, Pos before) {
+        const std::string what =
+            property ? "the " + std::string(keyProperties()[static_cast<std::size_t>(*property)].word) +
+                           " of " + quoteToken(targetName(t))
+                     : quoteToken(targetName(t));
+        warning(now, "key frame " + formatNumber(frame) + " of " + what +
                          " is given again; it replaces the key at " + posText(before));
+    }
+
+    /// A target's `/interp` sets its property tracks' default mode too (SPEC 10.3).
+    void applyInterpToPropertyTracks() {
+        for (const TrackBook& book : trackBooks_) {
+            if (book.property)
+                trackOf(book.target, book.property).interpolation = trackOf(book.target).interpolation;
+        }
+    }
+
+    /// Whole objects' colour tracks first, so a part's track, applied later, wins.
+    void orderColourTracks() {
+        std::stable_partition(scene_.colourTracks.begin(), scene_.colourTracks.end(),
+                              [](const ColourTrack& c) { return c.target.part < 0; });
+        colourTrackBooks_ = {};  // its indices no longer match
     }
 
     void sortUnsortedTracks() {
         for (TrackBook& book : trackBooks_) {
             if (book.sorted) continue;
             const Target t = book.target;
-            std::vector<Key>& keys = trackOf(t).keys;
+            std::vector<Key>& keys = trackOf(t, book.property).keys;
             std::vector<std::uint32_t> order(keys.size());
             std::iota(order.begin(), order.end(), 0u);
             // Stable: keys of one frame stay in file order, so the last one wins.
@@ -1423,7 +1679,7 @@ class Parser : private ExpansionSink {
             Pos lastOrigin;
             for (std::uint32_t k : order) {
                 if (!sorted.empty() && sorted.back().time == keys[k].time) {
-                    warnReplaced(t, keys[k].time, book.origins[k], lastOrigin);
+                    warnReplaced(t, book.property, keys[k].time, book.origins[k], lastOrigin);
                     sorted.back() = keys[k];
                 } else {
                     sorted.push_back(keys[k]);
@@ -1488,7 +1744,11 @@ class Parser : private ExpansionSink {
     std::size_t lightLines_ = 0;
     std::vector<CameraKey> cameraKeys_;
     std::vector<CaptionBook> captionBooks_;  ///< parallel to scene_.captions
-    int cameraTrackBook_ = -1;
+    int cameraTrackBook_ = -1, cameraZoomBook_ = -1;
+    /// Named lights (SPEC 10.2): name -> SceneDesc::lightMotions index, and their books.
+    std::unordered_map<std::string, std::size_t, StringHash, std::equal_to<>> lightNames_;
+    std::vector<LightBook> lightBooks_;
+    std::vector<int> colourTrackBooks_;  ///< parallel to scene_.colourTracks: trackBooks_ indices
     /// Attachment trees as disjoint sets (union by size, path halving), each
     /// set knowing the object at its top: an `/attach` closes a cycle exactly
     /// when the new parent's top is the object being attached. Near O(1) per

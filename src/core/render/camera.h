@@ -75,7 +75,7 @@ struct Camera {
 /// applied (SPEC 9.1). Every front end renders and exports through this.
 inline Camera cameraAt(const SceneDesc& scene, double t) {
     const Transform worldFromCamera = cameraFrameAt(scene, t);
-    return {scene.camera.width, scene.camera.height, float(scene.camera.distance),
+    return {scene.camera.width, scene.camera.height, float(cameraDistanceAt(scene, t)),
             worldFromCamera.translation, worldFromCamera.linear};
 }
 

@@ -33,6 +33,9 @@ struct Fade {
     friend bool operator==(const Fade&, const Fade&) = default;
 };
 
+/// A light without a name (SPEC 10.2): it stays where its numbers put it.
+inline constexpr std::int32_t kStillLight = -1;
+
 enum class LocalLightKind : std::uint8_t { Point, Spot };
 
 /// `/point_light` or `/spot_light`: a light at a position.
@@ -47,6 +50,7 @@ struct LocalLight {
     float radius = 0, falloff = 0, tightness = 0;
     Fade fade;
     SoftShadow area;
+    std::int32_t motion = kStillLight;  ///< SceneDesc::lightMotions index of a named light
 };
 
 }  // namespace f2

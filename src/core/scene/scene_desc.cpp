@@ -43,6 +43,12 @@ int SceneDesc::lastFrame() const {
         for (const Track& t : o.partTracks) scan(t);
     }
     scan(camera.track);
+    scan(camera.zoom);
+    for (const LightMotion& l : lightMotions) {
+        scan(l.track);
+        scan(l.intensity);
+    }
+    for (const ColourTrack& c : colourTracks) scan(c.track);
     for (const Caption& c : captions) last = std::max(last, c.to);
     return int(std::ceil(last));
 }

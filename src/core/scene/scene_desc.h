@@ -98,8 +98,11 @@ struct Key {
     std::optional<Easing> mode = std::nullopt;
 };
 
-/// Key frames of one target (an object, one part or the camera), sorted by
-/// time, unique times.
+/// Key frames of one target (an object, one part, a named light or the
+/// camera), sorted by time, unique times. A property's track (SPEC 10.3:
+/// colour, intensity, the camera's d) keeps its values in the keys'
+/// `pose.position` (r g b, or the one value in x) and zero rotations, so
+/// that it is interpolated exactly as a pose is.
 struct Track {
     std::vector<Key> keys;
     Easing interpolation = Interpolation::Linear;  ///< `/interp`, for keys without a mode
@@ -160,14 +163,40 @@ struct CameraDesc {
     double distance = 0.5;  ///< eye-to-screen distance in screen widths (SPEC 2)
     Pose pose;              ///< `/camera`'s eye and rotation: the rest pose of `track`
     Track track;            ///< `/key t camera ...` (SPEC 9.1)
+    Track zoom;             ///< `/key t camera d <d>` (SPEC 10.3): `distance` over time
     std::optional<FrameRef> attachedTo;
     std::optional<LookAt> lookAt;
 };
 
 struct DirectionalLight {
     float intensity = 0;
-    Vec3 direction;  ///< the direction the light travels, as written
+    Vec3 direction;  ///< the direction the light travels, as written (in its own frame when it moves)
     SoftShadow sun;  ///< `angle`: the sun's angular radius (degrees) and samples per side
+    std::int32_t motion = kStillLight;  ///< SceneDesc::lightMotions index of a named light
+};
+
+/// A named `/amb_light` (SPEC 10.2): it has no pose, only its intensity track.
+struct AmbientLight {
+    float intensity = 0;
+    std::uint32_t motion = 0;  ///< SceneDesc::lightMotions index
+};
+
+/// What a named light does over time (SPEC 10.2, 10.3). Its numbers (a
+/// position, a direction) are read in its own frame: `pose` at time t, on
+/// `attachedTo`'s frame when it rides on something.
+struct LightMotion {
+    std::string name;
+    bool ambient = false;  ///< an `/amb_light`: no pose, no attachment
+    Track track;           ///< pose keys; the identity at rest
+    std::optional<FrameRef> attachedTo;
+    Track intensity;  ///< `/key t <name> intensity <i>` (keys' position.x)
+};
+
+/// `/key t <target> colour r g b` (SPEC 10.3): an object's or a model part's
+/// colour over time (keys' position: r g b, 0..255).
+struct ColourTrack {
+    FrameRef target;
+    Track track;
 };
 
 /// `/caption` (SPEC 10.5): text drawn over the picture while `from <= t < to`.
@@ -204,9 +233,15 @@ class AnimationCache {
 
 struct SceneDesc {
     CameraDesc camera;
-    float ambient = 0;  ///< sum of all /amb_light
+    float ambient = 0;                        ///< sum of the unnamed /amb_light
+    std::vector<AmbientLight> namedAmbients;  ///< the named ones, whose intensity may be keyed
     std::vector<DirectionalLight> lights;
     std::vector<LocalLight> localLights;  ///< `/point_light` and `/spot_light`, in file order
+    /// Named lights' names, poses and intensity tracks (SPEC 10.2), in file order.
+    std::vector<LightMotion> lightMotions;
+    /// Colour keys (SPEC 10.3): every whole object's track before any part's,
+    /// so that applied in order the most specific target wins.
+    std::vector<ColourTrack> colourTracks;
     Color8 background{0, 0, 0};
     int fps = 24;
     std::vector<SceneObject> objects;
