@@ -192,11 +192,20 @@ SymbolAt symbolAt(const Analysis& a, Position p) {
         return at;
     }
 
+    // A light's name (SPEC 10.2): it has no parts.
+    auto onLight = [&](const TokenSpan& span, std::size_t light) {
+        if (!a.inDocument(span.loc) || !contains(span, lineIndex, byte, bom)) return false;
+        at = {SymbolAt::Kind::Light, light, -1, {}, a.rangeOf(span), {}};
+        return true;
+    };
     for (std::size_t i = 0; i < a.index.objects.size(); ++i) {
         if (onName(a.index.objects[i].name, i)) return at;
     }
+    for (std::size_t i = 0; i < a.index.lights.size(); ++i) {
+        if (onLight(a.index.lights[i].nameSpan, i)) return at;
+    }
     for (const NameUse& use : a.index.uses) {
-        if (onName(use.name, use.object)) return at;
+        if (use.light ? onLight(use.name, use.object) : onName(use.name, use.object)) return at;
     }
 
     // A command word, or `camera` as an argument (SPEC 9.1: no object has that name).
@@ -232,6 +241,13 @@ std::optional<std::size_t> findObject(const SymbolIndex& index, std::string_view
     return std::nullopt;
 }
 
+std::optional<std::size_t> findLight(const SymbolIndex& index, std::string_view name) {
+    for (std::size_t i = 0; i < index.lights.size(); ++i) {
+        if (index.lights[i].name == name) return i;
+    }
+    return std::nullopt;
+}
+
 std::array<std::size_t, 5> keyCounts(const Analysis& a, std::size_t object) {
     std::array<std::size_t, 5> counts{};
     if (a.result.ok() && object < a.result.scene->objects.size()) {
@@ -243,7 +259,7 @@ std::array<std::size_t, 5> keyCounts(const Analysis& a, std::size_t object) {
         return counts;
     }
     for (const NameUse& use : a.index.uses) {
-        if (use.object != object || use.command != "/key") continue;
+        if (use.light || use.object != object || use.command != "/key") continue;
         const auto suffix = partAfter(a, use.name);
         counts[suffix ? static_cast<std::size_t>(suffix->part + 1) : 0] += 1;
     }

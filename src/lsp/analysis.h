@@ -68,8 +68,8 @@ Analysis analyze(std::string uri, TextDocument document, const SourceOverlay& op
 
 /// What is under a position.
 struct SymbolAt {
-    enum class Kind { None, Command, Object, Part, Variable, Include, Camera } kind = Kind::None;
-    std::size_t object = 0;    ///< Object and Part: index into index.objects
+    enum class Kind { None, Command, Object, Part, Variable, Include, Camera, Light } kind = Kind::None;
+    std::size_t object = 0;    ///< Object and Part: index into index.objects; Light: into index.lights
     int part = -1;             ///< Part: PartId index
     std::string_view command;  ///< Command: its name
     Range range;               ///< the token (or the name or part within it)
@@ -80,6 +80,8 @@ SymbolAt symbolAt(const Analysis& a, Position p);
 
 /// The object named `name` in the index (the first one created), if any.
 std::optional<std::size_t> findObject(const SymbolIndex& index, std::string_view name);
+/// The named light `name` in the index (SPEC 10.2), if any.
+std::optional<std::size_t> findLight(const SymbolIndex& index, std::string_view name);
 
 /// Keys of an object: [0] its own, [1 + PartId] each part's. From the scene
 /// when it parsed; otherwise the `/key` lines that name it in this document.

@@ -216,6 +216,15 @@ Json completion(const Analysis& a, Position p) {
                 items.push_back(item(o->object.name, kCompletionVariable, objectKindName(o->object.kind),
                                      replace, o->object.name));
             }
+            // The commands that take the camera take named lights (SPEC 10.2) too.
+            if (doc->cameraArgument() == arg) {
+                for (const IndexedLight& l : a.index.lights) {
+                    if (a.inDocument(l.nameSpan.loc) && l.nameSpan.loc.line >= lineNumber) continue;
+                    if (!l.name.starts_with(typing->partial)) continue;
+                    items.push_back(
+                        item(l.name, kCompletionVariable, "light (" + l.command + ")", replace, l.name));
+                }
+            }
             if (doc->cameraArgument() == arg && kCameraName.starts_with(typing->partial)) {
                 items.push_back(item("camera", kCompletionKeyword, "the scene camera", replace, "camera"));
             }

@@ -1,13 +1,15 @@
 // textDocument/hover: a command's syntax and meaning; an object's kind, where
 // it is created, its parts and keys and its pose at frame 0; a part's shape and
 // pivot; the camera's line, keys, look-at, attachment and pose at frame 0; a
-// variable's definition; an include's file.
+// named light's line, mount, keys and place at frame 0; a variable's
+// definition; an include's file.
 #include <cstdio>
 #include <filesystem>
 #include <optional>
 #include <utility>
 
 #include "core/anim/camera_motion.h"
+#include "core/anim/light_frame.h"
 #include "core/anim/track.h"
 #include "core/parse/expression.h"
 #include "core/parse/language.h"
@@ -214,6 +216,49 @@ std::string cameraHover(const Analysis& a) {
     return text + ", looking along " + vec(forward) + "\n";
 }
 
+/// A named light (SPEC 10.2): its line, what it rides on, its keys, and where
+/// it is and how bright at frame 0.
+std::string lightHover(const Analysis& a, std::size_t index) {
+    const IndexedLight& entry = a.index.lights[index];
+    std::string text = "**light** `" + entry.name + "` (`" + entry.command + "`), created at " +
+                       placeText(a, entry.commandLoc);
+    if (a.inDocument(entry.commandLoc)) {
+        text += ":\n```f2\n" + std::string(a.document.line(entry.commandLoc.line - 1)) + "\n```\n";
+    } else {
+        text += "\n\n";
+    }
+    if (!a.result.ok() || index >= a.result.scene->lightMotions.size()) {
+        return text + "- the scene has errors, so its keys and pose are not evaluated\n";
+    }
+    const SceneDesc& scene = *a.result.scene;
+    const LightMotion& motion = scene.lightMotions[index];
+    if (!motion.ambient) {
+        text +=
+            "- rides on: " + (motion.attachedTo ? frameRefText(scene, *motion.attachedTo) : "nothing") + "\n";
+        text += "- pose keys: " + std::to_string(motion.track.keys.size()) + "\n";
+    }
+    text += "- intensity keys: " + std::to_string(motion.intensity.keys.size()) + "\n";
+    const auto motionIndex = static_cast<std::int32_t>(index);
+    for (const LocalLight& l : scene.localLights) {
+        if (l.motion != motionIndex) continue;
+        text += "- at frame 0: position " +
+                vec(placeLight(scene, l.motion, l.position, l.direction, 0.0).position) + ", intensity " +
+                number(lightIntensityAt(scene, l.motion, l.intensity, 0.0)) + "\n";
+    }
+    for (const DirectionalLight& l : scene.lights) {
+        if (l.motion != motionIndex) continue;
+        text += "- at frame 0: travels along " +
+                vec(placeLight(scene, l.motion, {}, l.direction, 0.0).direction) + ", intensity " +
+                number(lightIntensityAt(scene, l.motion, l.intensity, 0.0)) + "\n";
+    }
+    for (const AmbientLight& l : scene.namedAmbients) {
+        if (l.motion != index) continue;
+        text += "- at frame 0: intensity " + number(lightIntensityAt(scene, motionIndex, l.intensity, 0.0)) +
+                "\n";
+    }
+    return text;
+}
+
 std::string includeHover(const Analysis& a, const std::string& path) {
     const std::string file = resolveInclude(a.path, path);
     std::error_code ec;
@@ -244,6 +289,8 @@ Json hover(const Analysis& a, Position p) {
             return markdown(includeHover(a, at.text), at.range);
         case SymbolAt::Kind::Camera:
             return markdown(cameraHover(a), at.range);
+        case SymbolAt::Kind::Light:
+            return markdown(lightHover(a, at.object), at.range);
     }
     return nullptr;
 }

@@ -19,16 +19,30 @@ using Place = std::tuple<std::string, int, int>;
 
 Place placeOf(const TokenSpan& s) { return {s.loc.file, s.loc.line, s.loc.column}; }
 
-/// Every place of an object's name: its definition first, then its uses in file order.
-std::vector<TokenSpan> occurrences(const Analysis& a, std::size_t object, bool includeDefinition) {
+/// An object or a named light (SPEC 10.2): the names the parser resolves.
+struct Named {
+    bool light = false;
+    std::size_t index = 0;  ///< into index.objects, or index.lights when `light`
+};
+
+const TokenSpan& definitionOf(const Analysis& a, Named n) {
+    return n.light ? a.index.lights[n.index].nameSpan : a.index.objects[n.index].name;
+}
+
+const std::string& nameOf(const Analysis& a, Named n) {
+    return n.light ? a.index.lights[n.index].name : a.index.objects[n.index].object.name;
+}
+
+/// Every place of a name: its definition first, then its uses in file order.
+std::vector<TokenSpan> occurrences(const Analysis& a, Named n, bool includeDefinition) {
     std::vector<TokenSpan> out;
     std::set<Place> seen;
     auto add = [&](const TokenSpan& s) {
         if (seen.insert(placeOf(s)).second) out.push_back(s);
     };
-    if (includeDefinition) add(a.index.objects[object].name);
+    if (includeDefinition) add(definitionOf(a, n));
     for (const NameUse& use : a.index.uses) {
-        if (use.object == object) add(use.name);
+        if (use.light == n.light && use.object == n.index) add(use.name);
     }
     return out;
 }
@@ -37,11 +51,11 @@ Json locationOf(const Analysis& a, const TokenSpan& s) {
     return location(a.uriOf(s.loc.file), a.anyRangeOf(s));
 }
 
-/// The object under the cursor (its name, or the name before `.part`).
-std::optional<std::size_t> objectAt(const Analysis& a, Position p) {
+/// The object (its name, or the name before `.part`) or light under the cursor.
+std::optional<Named> namedAt(const Analysis& a, Position p) {
     const SymbolAt at = symbolAt(a, p);
-    if (at.kind != SymbolAt::Kind::Object) return std::nullopt;
-    return at.object;
+    if (at.kind != SymbolAt::Kind::Object && at.kind != SymbolAt::Kind::Light) return std::nullopt;
+    return Named{at.kind == SymbolAt::Kind::Light, at.object};
 }
 
 const SceneFile& fileOf(const Analysis& a, const VariableOccurrence& v) {
@@ -107,27 +121,28 @@ Json definition(const Analysis& a, Position p) {
     if (at.kind == SymbolAt::Kind::Include) {
         return location(uriFromPath(resolveInclude(a.path, at.text)), Range{});
     }
-    const auto object = objectAt(a, p);
-    if (!object) return nullptr;
-    return locationOf(a, a.index.objects[*object].name);
+    const auto named = namedAt(a, p);
+    if (!named) return nullptr;
+    return locationOf(a, definitionOf(a, *named));
 }
 
 Json references(const Analysis& a, Position p, bool includeDeclaration) {
     if (const SymbolAt at = symbolAt(a, p); at.kind == SymbolAt::Kind::Variable) {
         return variableReferences(a, at.text, includeDeclaration);
     }
-    const auto object = objectAt(a, p);
-    if (!object) return nullptr;
+    const auto named = namedAt(a, p);
+    if (!named) return nullptr;
     Json out = Json::array();
-    for (const TokenSpan& s : occurrences(a, *object, includeDeclaration)) out.push_back(locationOf(a, s));
+    for (const TokenSpan& s : occurrences(a, *named, includeDeclaration)) out.push_back(locationOf(a, s));
     return out;
 }
 
 Json prepareRename(const Analysis& a, Position p) {
     const SymbolAt at = symbolAt(a, p);
     if (at.kind == SymbolAt::Kind::Variable) return {{"range", toJson(at.range)}, {"placeholder", at.text}};
-    if (at.kind != SymbolAt::Kind::Object) return nullptr;
-    return {{"range", toJson(at.range)}, {"placeholder", a.index.objects[at.object].object.name}};
+    const auto named = namedAt(a, p);
+    if (!named) return nullptr;
+    return {{"range", toJson(at.range)}, {"placeholder", nameOf(a, *named)}};
 }
 
 Json rename(const Analysis& a, Position p, const std::string& newName) {
@@ -139,17 +154,22 @@ Json rename(const Analysis& a, Position p, const std::string& newName) {
     if (const SymbolAt at = symbolAt(a, p); at.kind == SymbolAt::Kind::Variable) {
         return renameVariable(a, at.text, newName);
     }
-    const auto object = objectAt(a, p);
-    if (!object) throw RequestError(kRequestFailed, "there is no object or variable name here to rename");
-    const std::string& oldName = a.index.objects[*object].object.name;
+    const auto named = namedAt(a, p);
+    if (!named)
+        throw RequestError(kRequestFailed, "there is no object, light or variable name here to rename");
+    const std::string& oldName = nameOf(a, *named);
     if (newName == "camera") {
         throw RequestError(kRequestFailed, "'camera' names the scene camera and cannot be an object's name");
     }
+    // Objects and named lights share one set of names (SPEC 10.2).
     if (newName != oldName && findObject(a.index, newName)) {
         throw RequestError(kRequestFailed, "an object named '" + newName + "' already exists");
     }
+    if (newName != oldName && findLight(a.index, newName)) {
+        throw RequestError(kRequestFailed, "a light named '" + newName + "' already exists");
+    }
     std::vector<Json> places;
-    for (const TokenSpan& s : occurrences(a, *object, true)) {
+    for (const TokenSpan& s : occurrences(a, *named, true)) {
         // A name built by an expression (`r{i}`) is not the old name in the text.
         if (const TextDocument* text = a.textOf(s.loc.file)) {
             const Range r = a.anyRangeOf(s);

@@ -779,6 +779,48 @@ TEST(Completion, ModesObjectsAndNothingInComments) {
     EXPECT_EQ(names[0]["detail"], "sphere");
 }
 
+TEST(NamedLights, CompletionHoverDefinitionReferencesAndRename) {
+    // SPEC 10.2: a lamp riding on a ball, keyed; a named ambient light.
+    const std::string scene =
+        "/sphere ball 1 0 0 0\n"            // 0
+        "/point_light 2 0 3 0 name lamp\n"  // 1
+        "/attach lamp ball\n"               // 2
+        "/key 10 lamp intensity 4\n"        // 3
+        "/amb_light 0.2 name sky\n";        // 4
+    // Completion after `/key 0`: objects, lights and the camera; `/paint` takes no light.
+    const Analysis typing = analysed(scene + "/key 0 \n/paint \n");
+    std::vector<std::string> labels;
+    for (const Json& i : completion(typing, {5, 7})) labels.push_back(i["label"]);
+    EXPECT_EQ(labels, (std::vector<std::string>{"ball", "lamp", "sky", "camera"}));
+    labels.clear();
+    for (const Json& i : completion(typing, {6, 7})) labels.push_back(i["label"]);
+    EXPECT_EQ(labels, (std::vector<std::string>{"ball"}));
+
+    const Analysis a = analysed(scene);
+    ASSERT_TRUE(a.result.ok());
+    // From the uses in `/key` and `/attach` to the word after `name`.
+    const Json lampName = location(a.uri, Range{{1, 26}, {1, 30}});
+    EXPECT_EQ(definition(a, {3, 9}), lampName);
+    EXPECT_EQ(definition(a, {2, 9}), lampName);
+    EXPECT_EQ(references(a, {1, 27}, true).size(), 3u);
+    EXPECT_EQ(references(a, {1, 27}, false).size(), 2u);
+    EXPECT_EQ(prepareRename(a, {3, 9})["placeholder"], "lamp");
+    const Json edit = rename(a, {3, 9}, "bulb");
+    ASSERT_EQ(edit["changes"][a.uri].size(), 3u);
+    EXPECT_EQ(edit["changes"][a.uri][2]["range"], toJson(Range{{3, 8}, {3, 12}}));
+    // One set of names for objects and lights.
+    EXPECT_THROW(rename(a, {3, 9}, "ball"), RequestError);
+    EXPECT_THROW(rename(a, {0, 9}, "sky"), RequestError);
+    // Hover: its line, mount, keys, and where it is at frame 0 (the key at 10 holds before it).
+    EXPECT_EQ(hover(a, {3, 9})["contents"]["value"],
+              "**light** `lamp` (`/point_light`), created at line 2:\n```f2\n/point_light 2 0 3 0 name "
+              "lamp\n```\n- rides on: `ball`\n- pose keys: 0\n- intensity keys: 1\n"
+              "- at frame 0: position (0, 3, 0), intensity 4\n");
+    EXPECT_EQ(hover(a, {4, 21})["contents"]["value"],
+              "**light** `sky` (`/amb_light`), created at line 5:\n```f2\n/amb_light 0.2 name sky\n```\n"
+              "- intensity keys: 0\n- at frame 0: intensity 0.2\n");
+}
+
 std::string body(const Json& j) { return j.dump(); }
 
 TEST(Server, AnswersGarbageWithErrorsAndNeverThrows) {

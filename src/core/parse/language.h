@@ -81,7 +81,8 @@ struct CommandSpec {
     std::string_view syntax;        ///< "/robot <name> <px> <py> <pz> [<rx> <ry> <rz>]"
     std::string_view snippet;       ///< LSP snippet of the whole command
     std::string_view meaning;       ///< a short explanation (Markdown)
-    /// Whether its first target (or object) argument may be `camera` (SPEC 9.1).
+    /// Whether its first target (or object) argument may be `camera` (SPEC 9.1)
+    /// or a named light (SPEC 10.2): /anim, /key, /interp and /attach's rider.
     bool takesCamera = false;
 
     /// The kind of argument `index` (0-based).

@@ -564,6 +564,13 @@ class Parser : private ExpansionSink {
         return static_cast<int>(it->second);
     }
 
+    /// Tells the symbol index that `name` at `pos` names the light `light`.
+    void noteLightUse(int light, Pos pos, std::string_view name) {
+        if (index_)
+            index_->uses.push_back(
+                {static_cast<std::size_t>(light), span(pos, name), std::string(commandText()), true});
+    }
+
     /// "the light 'lamp'" or "the ambient light 'sky'", for messages.
     std::string lightText(int light) const {
         const LightMotion& l = scene_.lightMotions[static_cast<std::size_t>(light)];
@@ -640,6 +647,7 @@ class Parser : private ExpansionSink {
         const Pos pos = argPos(i);
         const std::size_t dot = text.find('.');
         if (const std::optional<int> light = lightNamed(text.substr(0, dot))) {
+            noteLightUse(*light, pos, text.substr(0, dot));
             if (lightUse == LightTarget::Refused) {
                 error(pos, quoteToken(commandText()) + " does not apply to lights: " +
                                quoteToken(text.substr(0, dot)) + " is a light");
@@ -971,6 +979,10 @@ class Parser : private ExpansionSink {
         lightNames_.emplace(motion.name, scene_.lightMotions.size());
         scene_.lightMotions.push_back(std::move(motion));
         lightBooks_.push_back({argPos(nameArg), definitionLoopNote(), -1, -1, std::nullopt, std::nullopt});
+        if (index_) {
+            index_->lights.push_back({std::string(arg(nameArg)), std::string(commandText()),
+                                      span(argPos(nameArg), arg(nameArg)), sourceLoc(commandPos())});
+        }
         return index;
     }
 
@@ -1545,6 +1557,7 @@ class Parser : private ExpansionSink {
         std::optional<std::size_t> child;
         // A `{ … }` that failed is reported already; the parent is still checked.
         if (light) {
+            noteLightUse(*light, argPos(0), name);
             if (scene_.lightMotions[static_cast<std::size_t>(*light)].ambient) {
                 error(argPos(0), quoteToken(name) +
                                      " is an ambient light: it has no position, so it cannot be attached");

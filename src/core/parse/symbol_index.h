@@ -25,12 +25,21 @@ struct IndexedObject {
     SourceLoc command;  ///< the command's first character
 };
 
+/// A named light (SPEC 10.2) as its command made it, and where.
+struct IndexedLight {
+    std::string name;
+    std::string command;   ///< the light's command, such as "/point_light"
+    TokenSpan nameSpan;    ///< the word after `name`
+    SourceLoc commandLoc;  ///< the command's first character
+};
+
 /// A command argument that names an existing object (`r1`, or the `r1` of `r1.head`:
-/// a part after the name is read from the source).
+/// a part after the name is read from the source) or a named light.
 struct NameUse {
-    std::size_t object = 0;  ///< index into SymbolIndex::objects
+    std::size_t object = 0;  ///< index into SymbolIndex::objects, or into `lights` when `light`
     TokenSpan name;          ///< the name only, without `.part`
     std::string command;     ///< the command it appears in, such as "/key"
+    bool light = false;      ///< it names a light (SPEC 10.2)
 };
 
 /// A command line that tools list as a symbol of the scene: `/camera`, lights.
@@ -41,6 +50,7 @@ struct IndexedCommand {
 
 struct SymbolIndex {
     std::vector<IndexedObject> objects;  ///< in creation order
+    std::vector<IndexedLight> lights;    ///< named lights, in creation order (SceneDesc::lightMotions' order)
     std::vector<NameUse> uses;           ///< in file order
     std::vector<IndexedCommand> commands;
 
