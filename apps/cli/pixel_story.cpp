@@ -101,7 +101,11 @@ int printPixelStory(const LoadedScene& loaded, const Camera& camera, double t, i
             << (checker > 0 ? " (the /checker cell the point is in; cells of " + str(checker) + ")" : "")
             << ", ka " << r.material.ka << " kd " << r.material.kd << " ks " << r.material.ks << " n "
             << r.material.n << "\n";
-        out << "ambient  ka * " << frame.ambient << " = " << r.ambientTerm << "\n";
+        if (r.material.emission > 0)
+            out << "ambient  ka * " << frame.ambient << " + emit " << r.material.emission << " = "
+                << r.ambientTerm << "\n";
+        else
+            out << "ambient  ka * " << frame.ambient << " = " << r.ambientTerm << "\n";
         out << "shadow rays from " << str(r.surface.shadowOrigin)
             << (r.surface.skip == Bvh::kNoPrimitive ? "" : ", skipping the primitive itself") << "\n";
         for (const PixelReport::Light& l : r.lights) {

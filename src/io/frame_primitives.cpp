@@ -30,7 +30,7 @@ std::vector<PlacedPrimitive> framePrimitives(const SceneDesc& scene, double t) {
         if (!isModel(object.kind)) {
             const Appearance& look = object.appearance[0];
             out.push_back({object.name, shapeKindOf(object.kind), object.size, worldFromObject, look.color,
-                           look.material, look.checker});
+                           look.material, look.checker, look.castsShadow});
             continue;
         }
         auto worldFromPart = modelPartFrames(object, worldFromObject, t);
@@ -40,7 +40,7 @@ std::vector<PlacedPrimitive> framePrimitives(const SceneDesc& scene, double t) {
             out.push_back({shapeLabel(object, shape), shape.kind, shape.size,
                            worldFromPart[int(shape.part)] * partFromShape,
                            shape.ownColor ? shape.color : look.color, look.material,
-                           shape.ownColor ? Checker{} : look.checker});
+                           shape.ownColor ? Checker{} : look.checker, look.castsShadow});
         }
     }
     // Colour keys (SPEC 10.3), to the nearest of the formats' whole numbers.

@@ -18,7 +18,8 @@ struct PlacedPrimitive {
     Transform worldFromLocal;  ///< canonical frame: centred, cylinder axis local y
     Color8 color;
     Material material;
-    Checker checker;  ///< size 0: plain `color`
+    Checker checker;          ///< size 0: plain `color`
+    bool castsShadow = true;  ///< false under `/no_shadow` (SPEC 10.8)
 };
 
 /// Every primitive at time `t` (frames): objects as created, a robot as body,

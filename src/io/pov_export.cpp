@@ -176,7 +176,10 @@ std::string povScene(const SceneDesc& scene, double t, const Camera& camera, con
             << "  finish { ambient " << formatNumber(m.ka * ambient) << " diffuse " << formatNumber(m.kd)
             << " phong " << formatNumber(m.ks) << " phong_size " << formatNumber(m.n);
         if (m.reflection > 0) out << " reflection " << formatNumber(m.reflection);
-        out << " }\n}\n";
+        if (m.emission > 0) out << " emission " << formatNumber(m.emission);  // SPEC 10.8: e · C, as ours
+        out << " }\n";
+        if (!p.castsShadow) out << "  no_shadow\n";
+        out << "}\n";
     }
     return out.str();
 }

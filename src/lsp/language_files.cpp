@@ -26,7 +26,7 @@ struct NamedList {
     std::vector<std::string> (*words)();
 };
 
-const std::array<NamedList, 14> kLists = {{
+const std::array<NamedList, 15> kLists = {{
     {"commands", [] { return commandWords([](const CommandSpec&) { return true; }); }},
     // As written in a scene: "/camera", … (the fuzz dictionary's entries).
     {"slashed-commands",
@@ -61,6 +61,7 @@ const std::array<NamedList, 14> kLists = {{
          for (const LightOptionSpec& o : lightOptions()) words.emplace_back(o.word);
          return words;
      }},
+    {"material-options", [] { return std::vector<std::string>{std::string(kEmitWord)}; }},
     {"key-properties",
      [] {
          std::vector<std::string> words;

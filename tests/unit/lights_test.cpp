@@ -12,6 +12,7 @@
 #include "core/render/pixel_report.h"
 #include "core/render/renderer.h"
 #include "core/scene/bench_scenes.h"
+#include "render_paths.h"
 #include "test_scenes.h"
 
 namespace f2 {
@@ -207,22 +208,7 @@ TEST(LightShading, SoftShadowsAreTheSameForAnyThreadCount) {
     EXPECT_TRUE(one.pixels == two.pixels);
 }
 
-/// The packet path (Renderer::trace) and the reference path give the same
-/// bytes: materials without highlights (whose pow() differs), so every pixel
-/// must be equal.
-void expectIdenticalPaths(const std::string& text, const std::string& what) {
-    SceneDesc scene = test::sceneFromText(text);
-    Renderer renderer(2);
-    Image fast, reference;
-    Camera camera = Camera::fromDesc(scene.camera);
-    renderer.render(scene, 0, camera, fast);
-    traceReference(renderer.frame(), camera, reference);
-    ASSERT_EQ(fast.pixels.size(), reference.pixels.size());
-    std::size_t differing = 0;
-    for (std::size_t i = 0; i < fast.pixels.size(); ++i)
-        differing += !(fast.pixels[i] == reference.pixels[i]);
-    EXPECT_EQ(differing, 0u) << what;
-}
+using test::expectIdenticalPaths;
 
 constexpr const char* kStage =
     "/camera 203 149 0.6 30 180 -300 25 -5 0\n"

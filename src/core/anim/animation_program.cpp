@@ -176,6 +176,20 @@ std::shared_ptr<const AnimationProgram> AnimationProgram::compile(const SceneDes
         p.firstSurface[i] = compiler.surfaces(object);
     }
     p.firstPrimitive[count] = primitives;
+    const auto shadowless = [](const Appearance& a) { return !a.castsShadow; };
+    if (std::any_of(scene.objects.begin(), scene.objects.end(), [&](const SceneObject& o) {
+            return std::any_of(o.appearance.begin(), o.appearance.end(), shadowless);
+        })) {
+        p.castsNoShadow.reserve(primitives);
+        for (const SceneObject& object : scene.objects) {
+            if (!isModel(object.kind)) {
+                p.castsNoShadow.push_back(shadowless(object.appearance[0]));
+                continue;
+            }
+            for (const ModelShape& shape : modelOf(object.kind).shapes)
+                p.castsNoShadow.push_back(shadowless(object.appearance[std::size_t(shape.part)]));
+        }
+    }
     return program;
 }
 

@@ -5,6 +5,7 @@
 /// capacity so steady-state frames do not allocate.
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "core/anim/track.h"
@@ -62,6 +63,9 @@ struct EvaluatedFrame {
     std::vector<LightSample> lights;
     std::vector<Vec3> sunDirections;  ///< unit, toward the samples of soft suns
     std::vector<LocalLightSample> localLights;
+    /// Per primitive, 1 where it casts no shadow (SPEC 10.8 `/no_shadow`);
+    /// empty when none does. Points into the program in `filledBy`.
+    std::span<const std::uint8_t> castsNoShadow;
     std::vector<DiscPoint> discPoints;  ///< the sample patterns of soft point and spot lights
     float ambient = 0;
     Vec3 background;  ///< 0..1

@@ -133,6 +133,7 @@ void FrameEvaluation::evaluateObjectsIntoLeaves(EvaluatedFrame& frame, std::span
 
 void FrameEvaluation::finish(EvaluatedFrame& frame) && {
     applyColourTracks(*scene, t, frame);
+    frame.castsNoShadow = program->castsNoShadow;
     frame.filledBy = std::move(program);
 }
 

@@ -677,7 +677,7 @@ bool Bvh::occludedCounted(const Ray& ray, float tMin, float tMax, std::uint32_t 
             for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
                 float t;
                 Face face;
-                if (original_[i] == skip) continue;
+                if (original_[i] == skip || castsNoShadow(i)) continue;
                 count.primitive();
                 if (intersectPrimitive(ordered_[i], ray, tMin, tMax, t, face)) return true;
             }

@@ -136,6 +136,15 @@ class Bvh {
     std::size_t beamEntryNodes(const Bounds& origins, std::span<const Vec3> directions,
                                std::span<std::uint32_t> out) const;
 
+    /// Which primitives shadow rays pass through (SPEC 10.8 `/no_shadow`):
+    /// mask[i] != 0 for frame index i; empty (the default): none. The mask is
+    /// held by reference and must outlive the traversals.
+    void setCastsNoShadow(std::span<const std::uint8_t> mask) { castsNoShadow_ = mask; }
+    /// Whether shadow rays pass through the primitive at leaf position `leaf`.
+    bool castsNoShadow(std::uint32_t leaf) const {
+        return !castsNoShadow_.empty() && castsNoShadow_[original_[leaf]] != 0;
+    }
+
     /// The tree, for the packet traversal (bvh_packet.h) and tests.
     std::span<const Node> nodes() const { return nodes_; }
     /// Primitives in leaf order, and each one's index in the frame.
@@ -157,9 +166,10 @@ class Bvh {
                                 std::span<std::uint32_t> out) const;
 
     std::vector<Node> nodes_;
-    std::vector<Primitive> ordered_;       ///< primitives in leaf order
-    std::vector<std::uint32_t> original_;  ///< ordered index -> frame index
-    std::vector<std::uint32_t> position_;  ///< frame index -> ordered index
+    std::vector<Primitive> ordered_;               ///< primitives in leaf order
+    std::vector<std::uint32_t> original_;          ///< ordered index -> frame index
+    std::vector<std::uint32_t> position_;          ///< frame index -> ordered index
+    std::span<const std::uint8_t> castsNoShadow_;  ///< setCastsNoShadow()
     // Build scratch, kept to avoid per-frame allocation.
     std::vector<Bounds> primBounds_;
     std::vector<Vec3> centroids_;

@@ -179,6 +179,7 @@ Mask occludedFrom(const Bvh& bvh, const Rays<Origin, Direction>& rays, Mask acti
                 continue;
             }
             for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
+                if (bvh.castsNoShadow(i)) continue;
                 Mask test = simd::andNot(lanes, skip == Int(std::int32_t(i)));
                 if (simd::none(test)) continue;
                 Float t = tMax;

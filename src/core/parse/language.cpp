@@ -12,6 +12,7 @@ using enum ArgKind;
 constexpr std::array kNumbers = {Number};
 constexpr std::array kCreate = {NewName, Number};
 constexpr std::array kTargetThenNumbers = {Target, Number};
+constexpr std::array kTarget = {Target};
 constexpr std::array kAnim = {Target, Part};
 constexpr std::array kKey = {Number, Target, Number, Number, Number, Number, Number, Number, Mode};
 constexpr std::array kInterp = {Target, Mode};
@@ -25,7 +26,7 @@ constexpr std::array<ArgKind, 0> kNone = {};
 
 // Rows in CommandId order (checked below). The syntax and meaning are what
 // hover shows; docs/scene-language.md has each command's full story.
-constexpr std::array<CommandSpec, 25> kCommands = {{
+constexpr std::array<CommandSpec, 26> kCommands = {{
     {CommandId::Camera, "/camera", Edition::First, CommandGroup::Setting, kNumbers,
      "/camera <w> <h> <d> [<px> <py> <pz> [<rx> <ry> <rz>]]",
      "/camera ${1:800} ${2:600} ${3:0.5} ${4:0} ${5:0} ${6:0} ${7:0} ${8:0} ${9:0}",
@@ -64,11 +65,12 @@ constexpr std::array<CommandSpec, 25> kCommands = {{
      "/background <r> <g> <b>", "/background ${1:0} ${2:0} ${3:0}",
      "Colour of rays that hit nothing, integers 0..255 (default black). At most one per scene.", false},
     {CommandId::Material, "/material", Edition::First, CommandGroup::Look, kTargetThenNumbers,
-     "/material <target> <ka> <kd> <ks> <n> [<reflection>]",
+     "/material <target> <ka> <kd> <ks> <n> [<reflection>] [emit <e>]",
      "/material ${1:target} ${2:1} ${3:1} ${4:0.3} ${5:32}",
      "Phong coefficients of an object or part (default `1 1 0.3 32`): `ka, kd, ks ≥ 0`, `n > 0`; "
      "an optional mirror `reflection ≥ 0` (default 0) adds that share of what the surface "
-     "reflects, as POV-Ray's `reflection`. On a robot or human it applies to every part.",
+     "reflects, as POV-Ray's `reflection`; `emit e ≥ 0` adds `e` times the colour whatever the lights "
+     "(a glow, as POV-Ray's `emission`). On a robot or human it applies to every part.",
      false},
     {CommandId::Sphere, "/sphere", Edition::First, CommandGroup::Creating, kCreate,
      "/sphere <name> <r> <px> <py> <pz> [<rx> <ry> <rz>]", "/sphere ${1:name} ${2:r} ${3:0} ${4:0} ${5:0}",
@@ -152,6 +154,11 @@ constexpr std::array<CommandSpec, 25> kCommands = {{
      "baseline starts at `(x, y)` in fractions of the image (0 0 top left), its font is `size` "
      "of the image height; `colour r g b` (default white). `\\\"` and `\\\\` in the text stand for "
      "`\"` and `\\`, `{ … }` is expanded.",
+     false},
+    {CommandId::NoShadow, "/no_shadow", Edition::Third, CommandGroup::Look, kTarget, "/no_shadow <target>",
+     "/no_shadow ${1:target}",
+     "The target (an object or a part) casts no shadow; it is still seen and reflected, as POV-Ray's "
+     "`no_shadow`.",
      false},
 }};
 

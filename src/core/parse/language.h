@@ -70,6 +70,7 @@ enum class CommandId : std::uint8_t {
     LookAt,
     Attach,
     Caption,
+    NoShadow,
 };
 
 struct CommandSpec {
@@ -108,6 +109,9 @@ struct LightOptionSpec {
 };
 /// Every light option, in LightOption order.
 std::span<const LightOptionSpec> lightOptions();
+
+/// `/material`'s option word of a glow (SPEC 10.8): `… [<reflection>] emit <e>`.
+inline constexpr std::string_view kEmitWord = "emit";
 
 /// What a `/key <t> <target> <property> <values…>` keys besides the pose (SPEC 10.3).
 enum class KeyProperty : std::uint8_t { Colour, Intensity, Zoom };

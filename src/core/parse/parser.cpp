@@ -385,6 +385,8 @@ class Parser : private ExpansionSink {
                 return parseChecker();
             case Caption:
                 return parseCaption();
+            case NoShadow:
+                return parseNoShadow();
             case Let:
             case Repeat:
             case End:
@@ -393,9 +395,10 @@ class Parser : private ExpansionSink {
         }
     }
 
-    /// Checks the argument count against the allowed ones ("3, 6 or 9").
-    bool expectArgs(std::initializer_list<int> allowed) {
-        const int n = argCount();
+    /// Checks the argument count against the allowed ones ("3, 6 or 9"),
+    /// not counting `optionArgs` arguments of options the command found.
+    bool expectArgs(std::initializer_list<int> allowed, int optionArgs = 0) {
+        const int n = argCount() - optionArgs;
         if (std::find(allowed.begin(), allowed.end(), n) != allowed.end()) return true;
         std::string list;
         std::size_t i = 0;
@@ -1110,7 +1113,14 @@ class Parser : private ExpansionSink {
     }
 
     void parseMaterial() {
-        if (!expectArgs({5, 6})) return;
+        // `emit e` (SPEC 10.8) ends the line when it is there.
+        const int n = argCount();
+        const bool emits = n >= 7 && isWordArgument(n - 2) && arg(n - 2) == kEmitWord;
+        if (n == 6 && isWordArgument(5) && arg(5) == kEmitWord) {
+            error(argPos(5), "'emit' takes a number (the emission e >= 0)");
+            return;
+        }
+        if (!expectArgs({5, 6}, emits ? 2 : 0)) return;
         bool ok = true;
         const std::optional<Target> t = target(0);
         Material m;
@@ -1118,9 +1128,18 @@ class Parser : private ExpansionSink {
         m.kd = nonNegative(2, "kd", ok);
         m.ks = nonNegative(3, "ks", ok);
         m.n = positive(4, "n", ok);
-        if (argCount() == 6) m.reflection = nonNegative(5, "reflection", ok);
+        if (n - (emits ? 2 : 0) == 6) m.reflection = nonNegative(5, "reflection", ok);
+        if (emits) m.emission = nonNegative(n - 1, "emission", ok);
         if (!t || !ok) return;
         setAppearance(*t, [&](Appearance& a) { a.material = m; });
+    }
+
+    /// `/no_shadow <target>` (SPEC 10.8): the target casts no shadow.
+    void parseNoShadow() {
+        if (!expectArgs({1})) return;
+        const std::optional<Target> t = target(0);
+        if (!t) return;
+        setAppearance(*t, [](Appearance& a) { a.castsShadow = false; });
     }
 
     /// `/checker <target> <r> <g> <b> <size>`: the second colour and cell size

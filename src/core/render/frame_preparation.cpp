@@ -20,6 +20,7 @@ PreparationTimes prepareFrame(const SceneDesc& scene, double t, FrameScene& fram
         times.evaluateMs = millisecondsSince(start);
         start = Clock::now();
         frame.bvh.update(frame.primitives, pool);
+        frame.bvh.setCastsNoShadow(frame.castsNoShadow);
         times.buildMs = millisecondsSince(start);
         return times;
     }
@@ -32,6 +33,7 @@ PreparationTimes prepareFrame(const SceneDesc& scene, double t, FrameScene& fram
         },
         pool);
     std::move(evaluation).finish(frame);
+    frame.bvh.setCastsNoShadow(frame.castsNoShadow);
     times.buildMs = millisecondsSince(start);
     return times;
 }

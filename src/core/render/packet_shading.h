@@ -27,6 +27,7 @@ struct PacketSurface {
     Vec3P color;
     Float ka, kd, ks, shininess;
     Float reflection;  ///< Material::reflection
+    Float emission;    ///< Material::emission
     Int skip;          ///< primitive (leaf order) the lane's shadow rays skip; -1 when seen from inside
 };
 
@@ -64,6 +65,7 @@ inline PacketSurface surfacesAt(const FrameScene& frame, const Rays<Origin, Vec3
         s.ks = simd::select(same, Float(surface.material.ks), s.ks);
         s.shininess = simd::select(same, Float(surface.material.n), s.shininess);
         s.reflection = simd::select(same, Float(surface.material.reflection), s.reflection);
+        s.emission = simd::select(same, Float(surface.material.emission), s.emission);
     }
     Mask inside = dot(n, rays.direction) > Float(0.0f);  // seen from within the primitive
     s.normal = select(inside, -n, n);                    // face the viewer
@@ -125,7 +127,7 @@ inline ColorP shadeSurfaces(const FrameScene& frame, const PacketSurface& s,
     ColorP out{Float(frame.background.x), Float(frame.background.y), Float(frame.background.z)};
     if (simd::none(s.hitLanes)) return out;
     const std::uint32_t root = 0;
-    Float diffuse = s.ka * Float(frame.ambient);
+    Float diffuse = s.ka * Float(frame.ambient) + s.emission;  // shadeHit(): the glow joins the sum
     Float specular(0.0f);
     for (std::size_t i = 0; i < frame.lights.size(); ++i) {
         const LightSample& light = frame.lights[i];

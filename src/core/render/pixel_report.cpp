@@ -44,13 +44,17 @@ PixelReport tracePixel(const FrameScene& frame, const Camera& camera, int x, int
                                         r.surface.inside ? -r.surface.normal : r.surface.normal,
                                         shadowOffset(r.surface.position));
         r.material = surface.material;
-        r.ambientTerm = surface.material.ka * frame.ambient;
+        r.ambientTerm = surface.material.ka * frame.ambient + surface.material.emission;
         r.color = shadeHit(frame, r.ray, r.chosen, [&](const LightTerm& term) {
             PixelReport::Light light{term, term.toLight};
             if (term.shadowed) {
                 // The occluder on the ray toward the light's centre, nearer than a point light.
+                // (A primitive under `/no_shadow` is passed through, SPEC 10.8.)
                 auto blockers =
                     crossingsOf(frame, {r.surface.shadowOrigin, light.toLight}, 0.0f, r.surface.skip);
+                std::erase_if(blockers, [&](const PixelReport::Crossing& c) {
+                    return !frame.castsNoShadow.empty() && frame.castsNoShadow[c.primitive] != 0;
+                });
                 if (!blockers.empty() && blockers.front().t < term.distance) {
                     light.occluder = blockers.front().primitive;
                     light.occluderT = blockers.front().t;

@@ -31,7 +31,7 @@ struct PixelReport {
     ShadingPoint surface;
     Vec3 surfaceColor;  ///< the primitive's colour at the hit (its checker's cell), 0..1
     Material material;
-    float ambientTerm = 0;  ///< ka * ambient
+    float ambientTerm = 0;  ///< ka * ambient (+ the material's `emit`, SPEC 10.8)
 
     struct Light {
         LightTerm term;

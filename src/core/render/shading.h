@@ -95,7 +95,9 @@ inline Vec3 shadeHit(const FrameScene& frame, const Ray& ray, const HitRecord& h
     const Vec3 n = s.normal;
     Vec3 toEye = -ray.direction;
 
-    float diffuse = m.ka * frame.ambient;
+    // A glow (SPEC 10.8 `emit`) joins the sum that multiplies the colour;
+    // adding 0 leaves every other surface's sum as it was, bit for bit.
+    float diffuse = m.ka * frame.ambient + m.emission;
     float specular = 0;
     for (std::size_t i = 0; i < frame.lights.size(); ++i) {
         const LightSample& light = frame.lights[i];

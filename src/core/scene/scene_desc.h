@@ -35,6 +35,9 @@ struct Color8 {
 struct Material {
     float ka = 1.0f, kd = 1.0f, ks = 0.3f, n = 32.0f;
     float reflection = 0.0f;
+    /// `emit e` (SPEC 10.8): e · C joins the colour whatever the lights, as
+    /// POV-Ray's `finish { emission e }`.
+    float emission = 0.0f;
     friend bool operator==(const Material&, const Material&) = default;
 };
 
@@ -50,6 +53,7 @@ struct Appearance {
     Color8 color;
     Material material;
     Checker checker;
+    bool castsShadow = true;  ///< false after `/no_shadow` (SPEC 10.8): seen and reflected, no shadow
 };
 
 /// How a target moves from one key to the next (SPEC 6 and 9.3; back,
