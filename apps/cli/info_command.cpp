@@ -18,16 +18,24 @@ namespace {
 /// Keys with a mode word of their own shown by frame; the rest are counted.
 constexpr std::size_t kShownKeyModes = 4;
 
+/// A key time to ten significant digits: `3.8s` at 24 fps is frame 91.2, not
+/// the double's 91.19999999999999.
+std::string keyTimeText(double frames) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.10g", frames);
+    return text;
+}
+
 void printTrack(const std::string& target, const Track& track) {
     if (track.keys.empty()) return;
     std::cout << "    " << target << ": " << track.keys.size() << " keys, frames "
-              << formatNumber(track.keys.front().time) << ".." << formatNumber(track.keys.back().time) << ", "
+              << keyTimeText(track.keys.front().time) << ".." << keyTimeText(track.keys.back().time) << ", "
               << easingText(track.interpolation);
     std::size_t withMode = 0;
     for (const Key& k : track.keys) {
         if (!k.mode) continue;
         if (withMode < kShownKeyModes)
-            std::cout << (withMode == 0 ? "; from key " : ", ") << formatNumber(k.time) << ' '
+            std::cout << (withMode == 0 ? "; from key " : ", ") << keyTimeText(k.time) << ' '
                       << easingText(*k.mode);
         ++withMode;
     }
@@ -153,14 +161,17 @@ int runInfo(const std::string& path) {
     }
     printCamera(s);
     printLights(s);
-    for (const SceneObject& o : s.objects) {
+    for (std::size_t i = 0; i < s.objects.size(); ++i) {
+        const SceneObject& o = s.objects[i];
         std::cout << "  " << objectKindName(o.kind) << ' ' << o.name << '\n';
         if (o.attachedTo) std::cout << "    rides on " << refName(s, *o.attachedTo) << '\n';
         printTrack(o.name, o.track);
         if (isModel(o.kind))
             for (int p = 0; p < kPartCount; ++p) printTrack(o.name + "." + kPartNames[p], o.partTracks[p]);
+        // Its colour keys (SPEC 10.3), the whole object's before its parts'.
+        for (const ColourTrack& c : s.colourTracks)
+            if (c.target.object == i) printTrack(refName(s, c.target) + " colour", c.track);
     }
-    for (const ColourTrack& c : s.colourTracks) printTrack(refName(s, c.target) + " colour", c.track);
     return 0;
 }
 }  // namespace

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "core/anim/frame_builder.h"
 #include "core/anim/light_frame.h"
@@ -38,6 +39,28 @@ TEST(NamedLightErrors, EachAtItsPlace) {
     test::expectOnlyError("/point_light 1 0 0 0 name l name m\n", 1, 29, "second 'name' option");
     test::expectOnlyError("/point_light 1 0 0 0 name camera\n", 1, 27,
                           "'camera' is the name of the scene camera");
+    // Named or not, the ambient lights as written add up to one finite sum.
+    test::expectOnlyError("/amb_light 3e38\n/amb_light 3e38 name sky\n", 2, 12,
+                          "total ambient intensity is out of range");
+    test::expectOnlyError("/amb_light 3e38 name sky\n/amb_light 3e38\n", 2, 12,
+                          "total ambient intensity is out of range");
+}
+
+TEST(NamedLights, KeyedAmbientsThatOverflowSaturateInsteadOfMakingNaN) {
+    // Each key is in range; their sum is not. A surface with ka 0 stays unlit.
+    const std::string text =
+        "/camera 8 8 0.5 0 0 -10\n/sphere ball 3 0 0 0\n/material ball 0 1 0 1\n"
+        "/amb_light 1 name a\n/key 0 a intensity 3e38\n/amb_light 1 name b\n/key 0 b intensity 3e38\n";
+    const SceneDesc scene = test::sceneFromText(text);
+    EXPECT_EQ(ambientAt(scene, 0), std::numeric_limits<float>::max());
+    Renderer renderer(1);
+    Image image;
+    const Camera camera = cameraAt(scene, 0);
+    renderer.render(scene, 0, camera, image);
+    Image reference;
+    traceReference(renderer.frame(), camera, reference);
+    EXPECT_EQ(image.at(4, 4), (Rgb8{0, 0, 0}));
+    EXPECT_TRUE(image.pixels == reference.pixels);
 }
 
 TEST(PropertyKeyErrors, EachAtItsPlace) {

@@ -1,6 +1,7 @@
 #include "core/anim/light_frame.h"
 
 #include <algorithm>
+#include <limits>
 #include <numbers>
 
 #include "core/anim/frame_builder.h"
@@ -50,7 +51,9 @@ float ambientAt(const SceneDesc& scene, double t) {
     float ambient = scene.ambient;
     for (const AmbientLight& light : scene.namedAmbients)
         ambient += lightIntensityAt(scene, std::int32_t(light.motion), light.intensity, t);
-    return ambient;
+    // Keyed intensities may add up past the float range: saturate (as shading's
+    // kMaxLight does), so that ka 0 times it stays 0, never NaN.
+    return std::min(ambient, std::numeric_limits<float>::max());
 }
 
 void evaluateLights(const SceneDesc& scene, double t, EvaluatedFrame& frame) {

@@ -786,17 +786,19 @@ class Parser : private ExpansionSink {
         const float i = nonNegative(0, "ambient intensity", ok);
         LightOptions options;
         if (!lightOptions(1, {LightOption::Name}, options) || !ok) return;
+        // Named or not, every ambient light as written adds to one sum.
+        const float sum = writtenAmbient_ + i;
+        if (!std::isfinite(sum)) {
+            error(argPos(0), "total ambient intensity is out of range");
+            return;
+        }
+        writtenAmbient_ = sum;
         if (options.nameArg >= 0) {
             scene_.namedAmbients.push_back(
                 {i, static_cast<std::uint32_t>(registerLight(options.nameArg, true))});
             return;
         }
-        const float sum = scene_.ambient + i;
-        if (!std::isfinite(sum)) {
-            error(argPos(0), "total ambient intensity is out of range");
-            return;
-        }
-        scene_.ambient = sum;
+        scene_.ambient += i;
     }
 
     /// A light's direction (arguments first..first+2): not 0 0 0, and
@@ -1777,6 +1779,7 @@ class Parser : private ExpansionSink {
     std::vector<CameraKey> cameraKeys_;
     std::vector<CaptionBook> captionBooks_;  ///< parallel to scene_.captions
     int cameraTrackBook_ = -1, cameraZoomBook_ = -1;
+    float writtenAmbient_ = 0;  ///< every /amb_light's intensity as written, named or not
     /// Named lights (SPEC 10.2): name -> SceneDesc::lightMotions index, and their books.
     std::unordered_map<std::string, std::size_t, StringHash, std::equal_to<>> lightNames_;
     std::vector<LightBook> lightBooks_;
