@@ -128,8 +128,10 @@ Json expressionItems(const Analysis& a, Position p, std::string_view line, std::
     }
     items.push_back(item("pi", kCompletionVariable, "3.14159…", replace, "pi"));
     for (std::string_view f : expressionFunctionNames()) {
-        items.push_back(item(f, kCompletionFunction, f == "atan2" ? "atan2(y, x), degrees" : "function",
-                             replace, std::string(f) + "($1)", true));
+        const std::string_view detail = f == "atan2" ? "atan2(y, x), degrees"
+                                        : f == "if"  ? "if(condition, a, b): a if condition is not 0, else b"
+                                                     : "function";
+        items.push_back(item(f, kCompletionFunction, detail, replace, std::string(f) + "($1)", true));
     }
     return items;
 }

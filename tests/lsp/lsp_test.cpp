@@ -744,6 +744,21 @@ TEST(LanguageFiles, AnUnknownOrUnclosedListIsAnErrorWithItsPlace) {
     EXPECT_EQ(problem, "1:1: error: '@f2:' without its closing '@'");
 }
 
+TEST(Variables, ConditionsInExpressions) {
+    // SPEC 10.7: if(c, a, b) is a function, not a use of a variable called if.
+    const Analysis a = analysed("/let k 2\n/let m (if(k == 2 && !0, 10, 1/0))\n/sphere s (m) 0 0 0\n");
+    ASSERT_TRUE(a.result.ok());
+    EXPECT_EQ(hover(a, {1, 6})["contents"]["value"],
+              "**variable** `m` = 10, defined at line 2:\n```f2\n/let m (if(k == 2 && !0, 10, 1/0))\n```");
+    EXPECT_EQ(references(a, {0, 5}, true).size(), 2u);  // /let k and the k inside if( … )
+    const Json items = completion(a, {1, 8});
+    const auto it =
+        std::find_if(items.begin(), items.end(), [](const Json& i) { return i["label"] == "if"; });
+    ASSERT_NE(it, items.end());
+    EXPECT_EQ((*it)["detail"], "if(condition, a, b): a if condition is not 0, else b");
+    EXPECT_EQ((*it)["textEdit"]["newText"], "if($1)");
+}
+
 TEST(Completion, OffersTheParsersCommandsAsSnippets) {
     const Analysis a = analysed("/ro\n");
     const Json items = completion(a, {0, 3});

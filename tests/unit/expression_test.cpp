@@ -162,6 +162,200 @@ TEST(Expression, DeepNestingIsAnErrorNotACrash) {
     EXPECT_EQ(eval(fine), 1);
 }
 
+// Conditions (SPEC 10.7): comparisons, &&, ||, ! and if(c, a, b).
+
+/// Checks that `text` fails at byte `offset` with exactly `message`.
+void expectExactFailure(std::string_view text, std::size_t offset, std::string_view message,
+                        const Variables& vars = Variables()) {
+    SCOPED_TRACE(std::string(text));
+    const ExpressionResult r = evaluateExpression(text, vars);
+    EXPECT_FALSE(r.ok);
+    EXPECT_EQ(r.errorOffset, offset) << r.message;
+    EXPECT_EQ(r.message, message);
+}
+
+TEST(Condition, ComparisonsGiveOneOrZero) {
+    EXPECT_EQ(eval("1 == 1"), 1);
+    EXPECT_EQ(eval("1 == 2"), 0);
+    EXPECT_EQ(eval("1 != 2"), 1);
+    EXPECT_EQ(eval("2 != 2"), 0);
+    EXPECT_EQ(eval("1 < 2"), 1);
+    EXPECT_EQ(eval("2 < 2"), 0);
+    EXPECT_EQ(eval("2 <= 2"), 1);
+    EXPECT_EQ(eval("3 <= 2"), 0);
+    EXPECT_EQ(eval("3 > 2"), 1);
+    EXPECT_EQ(eval("2 > 2"), 0);
+    EXPECT_EQ(eval("2 >= 2"), 1);
+    EXPECT_EQ(eval("1 >= 2"), 0);
+    EXPECT_EQ(eval("-1<-2"), 0);  // '<' then unary minus
+    EXPECT_EQ(eval("1<=-1"), 0);
+    EXPECT_EQ(eval("-0 == 0"), 1);
+    // Exact on doubles, as in every language: compare with a tolerance.
+    EXPECT_EQ(eval("0.1 + 0.2 == 0.3"), 0);
+    EXPECT_EQ(eval("abs(0.1 + 0.2 - 0.3) < 1e-9"), 1);
+    EXPECT_FALSE(std::signbit(eval("-(1 < 0)")));  // -0 is 0, as for every result
+}
+
+TEST(Condition, LogicGivesOneOrZero) {
+    EXPECT_EQ(eval("2 && 3"), 1);  // 1, not the operand (C, not JavaScript)
+    EXPECT_EQ(eval("2 && 0"), 0);
+    EXPECT_EQ(eval("0 || 0"), 0);
+    EXPECT_EQ(eval("0 || -5"), 1);
+    EXPECT_EQ(eval("0.5 || 0"), 1);
+    EXPECT_EQ(eval("!0"), 1);
+    EXPECT_EQ(eval("!7"), 0);
+    EXPECT_EQ(eval("!-0.001"), 0);
+    EXPECT_EQ(eval("!!3"), 1);
+    EXPECT_EQ(eval("! 0"), 1);
+}
+
+TEST(Condition, Precedence) {
+    EXPECT_EQ(eval("1 + 2 < 4"), 1);  // (1 + 2) < 4
+    EXPECT_EQ(eval("1 + 2 < 3"), 0);
+    EXPECT_EQ(eval("2 * 3 == 6"), 1);
+    EXPECT_EQ(eval("1 < 2 == 1"), 1);      // (1 < 2) == 1: relations bind above equality
+    EXPECT_EQ(eval("3 > 2 == 2 > 1"), 1);  // (3 > 2) == (2 > 1)
+    EXPECT_EQ(eval("1 == 1 && 2 == 2"), 1);
+    EXPECT_EQ(eval("2 > 1 && 3 > 2 || 0"), 1);
+    EXPECT_EQ(eval("1 || 0 && 0"), 1);  // 1 || (0 && 0): && binds above ||
+    EXPECT_EQ(eval("(1 || 0) && 0"), 0);
+    EXPECT_EQ(eval("0 && 0 || 1"), 1);
+    EXPECT_EQ(eval("1 || 1 || 0"), 1);  // left to right
+    EXPECT_EQ(eval("1 && 1 && 0"), 0);
+    // '!' is a unary prefix like '-': above * and +, below ^.
+    EXPECT_EQ(eval("!0 + 1"), 2);
+    EXPECT_EQ(eval("!1 + 1"), 1);
+    EXPECT_EQ(eval("2 * !0"), 2);
+    EXPECT_EQ(eval("!2^2"), 0);  // !(2^2), as -2^2 is -(2^2)
+    EXPECT_EQ(eval("-!0"), -1);
+    EXPECT_EQ(eval("!-1"), 0);
+    EXPECT_EQ(eval("2^!0"), 2);
+    EXPECT_EQ(eval("!1 == 0"), 1);  // (!1) == 0, as in C
+    EXPECT_EQ(eval("!(1 == 0)"), 1);
+    EXPECT_EQ(eval("-1 < 0 == !0"), 1);
+}
+
+TEST(Condition, AndOrShortCircuit) {
+    EXPECT_EQ(eval("0 && 1/0"), 0);
+    EXPECT_EQ(eval("1 || 1/0"), 1);
+    EXPECT_EQ(eval("0 && sqrt(-1) || 1"), 1);
+    EXPECT_EQ(eval("0 && log(0) && 1 % 0"), 0);
+    EXPECT_EQ(eval("1 || 10^400"), 1);
+    EXPECT_EQ(eval("1 || (-8)^0.5 + exp(1000) * 0^-1 + tan(90)"), 1);
+    expectExactFailure("1 && 1/0", 6, "division by zero");
+    expectExactFailure("0 || 1/0", 6, "division by zero");
+    // What is not evaluated is still read: syntax, names and argument counts.
+    expectExactFailure("0 && q", 5, "unknown variable 'q'");
+    expectExactFailure("1 || foo(1)", 5, "unknown function 'foo'");
+    expectExactFailure("0 && sqrt(1, 2)", 5, "'sqrt' takes 1 argument, got 2");
+    expectExactFailure("0 && (1 +", 9, "the expression ends too early");
+    expectExactFailure("1 || 1e400", 5, "number '1e400' is out of range");
+    expectExactFailure("0 && 1 < 2 < 3", 11,
+                       "comparisons do not chain: to test both, write 'a < b && b < c'; otherwise put the "
+                       "first in parentheses");
+}
+
+TEST(Condition, IfEvaluatesOnlyTheBranchItReturns) {
+    EXPECT_EQ(eval("if(1, 2, 3)"), 2);
+    EXPECT_EQ(eval("if(0, 2, 3)"), 3);
+    EXPECT_EQ(eval("if(-0.5, 2, 3)"), 2);  // any value but 0 is true
+    EXPECT_EQ(eval("if(1, 2, 1/0)"), 2);
+    EXPECT_EQ(eval("if(0, 1/0, 3)"), 3);
+    EXPECT_EQ(eval("if(0, sqrt(-1), if(1, 4, log(0)))"), 4);
+    EXPECT_EQ(eval("if(1 < 2 && 2 < 3, 10, 20) + 1"), 11);
+    EXPECT_EQ(eval("if(0, 1, 2) * if(1, 3, 4)"), 6);
+    EXPECT_EQ(eval("0 && if(1, 1/0, 1/0)"), 0);  // nothing evaluated inside either
+    EXPECT_EQ(eval("if( 1 , -2 , 3 )"), -2);
+    EXPECT_EQ(eval("max(1 < 2, 0.5)"), 1);  // any argument may be a condition
+    Variables v;
+    v.set("k", 2);
+    EXPECT_EQ(eval("if(k == 2, 10, 20)", v), 10);
+    EXPECT_EQ(eval("if(k != 2, 10, 20)", v), 20);
+    // The condition is evaluated; the branch returned is too.
+    expectExactFailure("if(1/0, 1, 2)", 4, "division by zero");
+    expectExactFailure("if(1, 1/0, 2)", 7, "division by zero");
+    expectExactFailure("if(0, 1, 2/0)", 10, "division by zero");
+    // The other branch is read: a typo there is an error, a division by zero is not.
+    expectExactFailure("if(1, 2, q)", 9, "unknown variable 'q'");
+    expectExactFailure("if(0, q, 2)", 6, "unknown variable 'q'");
+    expectExactFailure("if(1, 2, 3 +)", 12, "unexpected ')' in the expression");
+    // A variable whose /let failed is known: needed, it fails silently (reported at its /let).
+    v.markBroken("b");
+    EXPECT_EQ(eval("if(1, 2, b)", v), 2);
+    EXPECT_EQ(eval("0 && b", v), 0);
+    const ExpressionResult taken = evaluateExpression("if(0, 2, b)", v);
+    EXPECT_FALSE(taken.ok);
+    EXPECT_TRUE(taken.followOn);
+}
+
+TEST(Condition, IfTakesThreeArguments) {
+    const std::string_view hint = " (write if(condition, value if true, value if false))";
+    expectExactFailure("if(1, 2)", 0, "'if' takes 3 arguments, got 2" + std::string(hint));
+    expectExactFailure("2 * if(0, 1, 2, 3)", 4, "'if' takes 3 arguments, got 4" + std::string(hint));
+    expectExactFailure("1 + if()", 4, "'if' takes 3 arguments, got 0" + std::string(hint));
+    expectExactFailure("if(1)", 0, "'if' takes 3 arguments, got 1" + std::string(hint));
+    // Not evaluated, still counted.
+    expectExactFailure("0 && if(1, 2)", 5, "'if' takes 3 arguments, got 2" + std::string(hint));
+    expectExactFailure("1 + if", 4, "'if' is a function: write if(...)");
+    // A variable may still be called if: no scene valid before changes meaning.
+    Variables v;
+    v.set("if", 4);
+    EXPECT_EQ(eval("if + if(1, 2, 3)", v), 6);
+}
+
+TEST(Condition, MistakesThatTeach) {
+    Variables v;
+    v.set("i", 3);
+    expectExactFailure("i = 3", 2,
+                       "'=' is not an operator: to compare, write '=='; to set a variable, use /let", v);
+    expectExactFailure("if(i=3, 1, 2)", 4,
+                       "'=' is not an operator: to compare, write '=='; to set a variable, use /let", v);
+    expectExactFailure("1 & 2", 2, "'&' is not an operator: for 'and', write '&&'");
+    expectExactFailure("1 | 2", 2, "'|' is not an operator: for 'or', write '||'");
+    expectExactFailure("1 < 2 < 3", 6,
+                       "comparisons do not chain: to test both, write 'a < b && b < c'; otherwise put the "
+                       "first in parentheses");
+    expectExactFailure("3 >= 2 > 1", 7,
+                       "comparisons do not chain: to test both, write 'a >= b && b > c'; otherwise put the "
+                       "first in parentheses");
+    expectExactFailure("1 == 1 != 0", 7,
+                       "comparisons do not chain: to test both, write 'a == b && b != c'; otherwise put the "
+                       "first in parentheses");
+    EXPECT_EQ(eval("(1 < 2) < 3"), 1);  // parentheses say what is meant
+    expectExactFailure("1 === 1", 2, "'===' is not an operator: write '=='");
+    expectExactFailure("1 !== 1", 2, "'!==' is not an operator: write '!='");
+    expectExactFailure("1 <> 2", 2, "'<>' is not an operator: to test that two values differ, write '!='");
+    expectExactFailure("1 => 2", 2, "'=>' is not an operator: write '>='");
+    expectExactFailure("1 =< 2", 2, "'=<' is not an operator: write '<='");
+    expectExactFailure("1 ? 2 : 3", 2,
+                       "unexpected '?' in the expression: for a choice, write if(condition, a, b)");
+    expectExactFailure("1 and 0", 2, "unexpected 'and' in the expression: for 'and', write '&&'");
+    expectExactFailure("1 or 0", 2, "unexpected 'or' in the expression: for 'or', write '||'");
+    expectExactFailure("not 1", 0, "unknown variable 'not' (to negate, write '!')");
+    expectExactFailure("not(1)", 0, "unknown function 'not' (to negate, write '!')");
+    // Two-character operators are quoted whole where an operand should be.
+    expectExactFailure("== 1", 0, "unexpected '==' in the expression");
+    expectExactFailure("1 + != 2", 4, "unexpected '!=' in the expression");
+    expectExactFailure("1 &&", 4, "the expression ends too early");
+    expectExactFailure("!", 1, "the expression ends too early");
+    expectExactFailure("1 !", 2, "unexpected '!' in the expression");
+}
+
+TEST(Condition, NestingIsStillBounded) {
+    std::string nots(100000, '!');
+    const ExpressionResult r = evaluateExpression(nots + "0", Variables());
+    EXPECT_FALSE(r.ok);
+    EXPECT_EQ(r.errorOffset, static_cast<std::size_t>(kMaxExpressionDepth));
+    std::string ifs;
+    for (int i = 0; i < 1000; ++i) ifs += "if(1, ";
+    EXPECT_FALSE(evaluateExpression(ifs + "1", Variables()).ok);
+    std::string fine;
+    for (int i = 0; i < 200; ++i) fine += "if(0, 1/0, ";
+    fine += "7";
+    for (int i = 0; i < 200; ++i) fine += ")";
+    EXPECT_EQ(eval(fine), 7);
+}
+
 TEST(Expression, WholeNumbersWithinOneMillionth) {
     EXPECT_EQ(nearWhole(3.0000004), 3.0);
     EXPECT_EQ(nearWhole(-2.9999996), -3.0);

@@ -149,6 +149,54 @@ TEST(NameInterpolation, Errors) {
     expectError("/robot a 0 0 0\n/let i 1\n/key 0 a.leg{i}\n", 3, 10, "unknown part 'leg1'");
 }
 
+// Conditions in expressions (SPEC 10.7)
+
+TEST(Conditions, ChooseAValueInAScene) {
+    const SceneDesc s = parseOk(
+        "/let k 2\n"
+        "/sphere s 1 (if(k == 2, 10, 20)) 0 0\n"
+        "/sphere t 1 (if(k != 2, 10, 20)) (k > 1 && k < 3) (!k)\n");
+    EXPECT_EQ(s.objects[0].rest.position, (Vec3{10, 0, 0}));
+    EXPECT_EQ(s.objects[1].rest.position, (Vec3{20, 1, 0}));
+    // Only the branch returned is evaluated: no division by zero here.
+    EXPECT_EQ(radius(parseOk("/sphere s (if(0, 1/0, 5)) 0 0 0\n"), "s"), 5);
+    EXPECT_EQ(radius(parseOk("/let n 0\n/sphere s (n == 0 || 1/n > 2) 0 0 0\n"), "s"), 1);
+}
+
+TEST(Conditions, OnePassOfALoopGetsAnotherColour) {
+    // What the trial wrote as 60 * (1 - min(k, 1)).
+    const SceneDesc s = parseOk(
+        "/repeat i 0 3\n"
+        "  /sphere b{i} 5 (i * 20) 0 0\n"
+        "  /paint b{i} (if(i == 0, 255, 80)) 80 80\n"
+        "/end\n");
+    ASSERT_EQ(s.objects.size(), 4u);
+    EXPECT_EQ(s.objects[0].appearance[0].color, (Color8{255, 80, 80}));
+    for (std::size_t k = 1; k < 4; ++k)
+        EXPECT_EQ(s.objects[k].appearance[0].color, (Color8{80, 80, 80})) << k;
+}
+
+TEST(Conditions, InNames) {
+    const SceneDesc s = parseOk(
+        "/repeat i 1 3\n"
+        "  /sphere s{i}_{i == 2} 1 0 0 0\n"
+        "/end\n");
+    EXPECT_EQ(names(s), (std::vector<std::string>{"s1_0", "s2_1", "s3_0"}));
+}
+
+TEST(Conditions, ErrorsPointIntoTheExpression) {
+    expectError("/let k 2\n/sphere s 1 (k = 2) 0 0\n", 2, 16,
+                "'=' is not an operator: to compare, write '=='; to set a variable, use /let");
+    expectError("/sphere s 1 (if(1, 2)) 0 0\n", 1, 14,
+                "'if' takes 3 arguments, got 2 (write if(condition, value if true, value if false))");
+    expectError("/sphere s 1 (1 && 1/0) 0 0\n", 1, 20, "division by zero");
+    expectError("/sphere s 1 (if(0, q, 1)) 0 0\n", 1, 20, "unknown variable 'q'");
+    expectError("/sphere s{1 & 1} 1 0 0 0\n", 1, 13, "'&' is not an operator: for 'and', write '&&'");
+    expectError("/repeat i 0 1\n/sphere s{i} 1 (0 < i < 1) 0 0\n/end\n", 2, 23,
+                "comparisons do not chain: to test both, write 'a < b && b < c'; otherwise put the first in "
+                "parentheses (in /repeat i = 0) (and in 1 more pass)");
+}
+
 // /repeat … /end (SPEC 9.5)
 
 TEST(Repeat, RunsTheBodyForEachValue) {

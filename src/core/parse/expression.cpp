@@ -4,6 +4,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <initializer_list>
 #include <numbers>
 #include <vector>
 
@@ -67,7 +68,8 @@ enum class Function {
     Log,
     Round,
     Min,
-    Max
+    Max,
+    If
 };
 
 struct FunctionInfo {
@@ -77,7 +79,7 @@ struct FunctionInfo {
     int maxArgs;  ///< -1: any number
 };
 
-constexpr std::array<FunctionInfo, 16> kFunctions = {{
+constexpr std::array<FunctionInfo, 17> kFunctions = {{
     {"sin", Function::Sin, 1, 1},
     {"cos", Function::Cos, 1, 1},
     {"tan", Function::Tan, 1, 1},
@@ -94,6 +96,7 @@ constexpr std::array<FunctionInfo, 16> kFunctions = {{
     {"round", Function::Round, 1, 1},
     {"min", Function::Min, 1, -1},
     {"max", Function::Max, 1, -1},
+    {"if", Function::If, 3, 3},  // SPEC 10.7: evaluates only the branch it returns
 }};
 
 const FunctionInfo* findFunction(std::string_view name) {
@@ -104,19 +107,30 @@ const FunctionInfo* findFunction(std::string_view name) {
 }
 
 /// Recursive descent over
-///   sum     := product (('+' | '-') product)*
-///   product := unary (('*' | '/' | '%') unary)*
-///   unary   := ('-' | '+') unary | power
-///   power   := primary ('^' unary)?          (right-associative, above unary minus)
-///   primary := number | variable | function '(' sum (',' sum)* ')' | '(' sum ')'
+///   expression := and ('||' and)*
+///   and        := equality ('&&' equality)*
+///   equality   := relation (('==' | '!=') relation)?   (no chains: a == b == c is an error)
+///   relation   := sum (('<' | '<=' | '>' | '>=') sum)?  (no chains: a < b < c is an error)
+///   sum        := product (('+' | '-') product)*
+///   product    := unary (('*' | '/' | '%') unary)*
+///   unary      := ('-' | '+' | '!') unary | power
+///   power      := primary ('^' unary)?          (right-associative, above unary minus)
+///   primary    := number | variable | function '(' expression (',' expression)* ')'
+///               | '(' expression ')'
 /// The first error wins; after it every function returns 0 and unwinds.
+///
+/// What is not evaluated (the right side of `&&` and `||` once the left one
+/// decides, the branch of `if` that is not returned) is still read: its
+/// syntax, its names and its functions' argument counts are checked, but
+/// nothing is computed, so a division by zero or a domain error there is no
+/// error (SPEC 10.7).
 class ExpressionParser {
    public:
     ExpressionParser(std::string_view text, const Variables& variables)
         : text_(text), variables_(variables) {}
 
     ExpressionResult whole() {
-        const double v = sum();
+        const double v = expression();
         if (!failed_) {
             skipSpaces();
             if (pos_ < text_.size()) unexpected();
@@ -165,20 +179,64 @@ class ExpressionParser {
         return pos_ < text_.size() ? text_[pos_] : '\0';
     }
 
+    /// Whether `op` stands next (after spaces).
+    bool peekIs(std::string_view op) {
+        skipSpaces();
+        return text_.substr(pos_).starts_with(op);
+    }
+
     /// Reports what stands at pos_ where an operand or operator was expected.
     void unexpected() {
         if (pos_ >= text_.size()) {
             fail(pos_, "the expression ends too early");
-        } else {
-            const std::string_view rest = text_.substr(pos_);
-            if (const auto c = unusualCharacterAt(rest)) {
-                // Not '\xc2': a no-break space copied from a web page is named as such.
-                fail(pos_, "unexpected " + c->name + " in the expression" +
-                               (c->hint.empty() ? "" : " (" + c->hint + ")"));
+            return;
+        }
+        const std::string_view rest = text_.substr(pos_);
+        if (const auto c = unusualCharacterAt(rest)) {
+            // Not '\xc2': a no-break space copied from a web page is named as such.
+            fail(pos_, "unexpected " + c->name + " in the expression" +
+                           (c->hint.empty() ? "" : " (" + c->hint + ")"));
+            return;
+        }
+        // The operators of other languages, and these written by halves, teach the right one.
+        if (rest.starts_with("=<") || rest.starts_with("=>")) {
+            fail(pos_, quoteToken(rest.substr(0, 2)) + " is not an operator: write '" + rest[1] + "='");
+            return;
+        }
+        if (rest.starts_with('=') && !rest.starts_with("==")) {
+            fail(pos_, "'=' is not an operator: to compare, write '=='; to set a variable, use /let");
+            return;
+        }
+        if (rest.starts_with('&') && !rest.starts_with("&&")) {
+            fail(pos_, "'&' is not an operator: for 'and', write '&&'");
+            return;
+        }
+        if (rest.starts_with('|') && !rest.starts_with("||")) {
+            fail(pos_, "'|' is not an operator: for 'or', write '||'");
+            return;
+        }
+        if (rest.starts_with('?')) {
+            fail(pos_, "unexpected '?' in the expression: for a choice, write if(condition, a, b)");
+            return;
+        }
+        if (isNameStart(rest[0])) {
+            std::size_t end = 1;
+            while (end < rest.size() && isNameChar(rest[end])) ++end;
+            const std::string_view word = rest.substr(0, end);
+            if (word == "and" || word == "or") {
+                fail(pos_, "unexpected " + quoteToken(word) + " in the expression: for '" +
+                               std::string(word) + "', write '" + (word == "and" ? "&&" : "||") + "'");
                 return;
             }
-            fail(pos_, "unexpected " + quoteToken(text_.substr(pos_, 1)) + " in the expression");
         }
+        // A two-character operator is quoted whole: "unexpected '=='".
+        for (std::string_view op : {"==", "!=", "<=", ">=", "&&", "||"}) {
+            if (rest.starts_with(op)) {
+                fail(pos_, "unexpected " + quoteToken(op) + " in the expression");
+                return;
+            }
+        }
+        fail(pos_, "unexpected " + quoteToken(text_.substr(pos_, 1)) + " in the expression");
     }
 
     /// Guards every recursive step so that "((((…" cannot overflow the stack.
@@ -193,6 +251,7 @@ class ExpressionParser {
 
     /// A finite result, or an error at the operator or function at `at`.
     double checked(double v, std::size_t at, std::string_view what) {
+        if (skipping_ > 0) return 0;  // not evaluated: its value is never used
         if (!failed_ && !std::isfinite(v)) {
             fail(at, "the result of " + std::string(what) + " is not finite");
             return 0;
@@ -212,6 +271,90 @@ class ExpressionParser {
             unexpected();
         }
         return false;
+    }
+
+    /// `a || b`: 1 if either is not 0, else 0; `b` is not evaluated when `a` is not 0.
+    double expression() {
+        double v = logicalAnd();
+        while (!failed_ && peekIs("||")) {
+            pos_ += 2;
+            const bool decided = v != 0;
+            if (decided) ++skipping_;
+            const double rhs = logicalAnd();
+            if (decided) --skipping_;
+            v = decided || rhs != 0 ? 1 : 0;
+        }
+        return v;
+    }
+
+    /// `a && b`: 1 if both are not 0, else 0; `b` is not evaluated when `a` is 0.
+    double logicalAnd() {
+        double v = equality();
+        while (!failed_ && peekIs("&&")) {
+            pos_ += 2;
+            const bool decided = v == 0;
+            if (decided) ++skipping_;
+            const double rhs = equality();
+            if (decided) --skipping_;
+            v = !decided && rhs != 0 ? 1 : 0;
+        }
+        return v;
+    }
+
+    /// The comparison operator of `ops` that stands next, or an empty view.
+    std::string_view comparison(std::initializer_list<std::string_view> ops) {
+        for (std::string_view op : ops) {
+            if (peekIs(op)) return op;
+        }
+        return {};
+    }
+
+    /// `a OP b` for `first` OP; a second comparison of the same level is an
+    /// error that shows how to write both (`0 < x < 10` is no range test).
+    void refuseChain(std::string_view first, std::initializer_list<std::string_view> ops) {
+        if (failed_) return;
+        const std::string_view second = comparison(ops);
+        if (second.empty()) return;
+        fail(pos_, "comparisons do not chain: to test both, write 'a " + std::string(first) + " b && b " +
+                       std::string(second) + " c'; otherwise put the first in parentheses");
+    }
+
+    /// `a == b`, `a != b`: 1 or 0, exactly (every value is finite: no NaN).
+    double equality() {
+        const double v = relation();
+        if (failed_) return v;
+        const std::string_view op = comparison({"==", "!="});
+        if (op.empty()) return v;
+        const std::size_t at = pos_;
+        pos_ += 2;
+        if (pos_ < text_.size() && text_[pos_] == '=') {  // JavaScript's '===' and '!=='
+            fail(at, quoteToken(std::string(op) + "=") + " is not an operator: write " + quoteToken(op));
+            return 0;
+        }
+        const double rhs = relation();
+        if (failed_) return 0;
+        refuseChain(op, {"==", "!="});
+        return (v == rhs) == (op == "==") ? 1 : 0;
+    }
+
+    /// `a < b`, `a <= b`, `a > b`, `a >= b`: 1 or 0.
+    double relation() {
+        const double v = sum();
+        if (failed_) return v;
+        if (peekIs("<>")) {
+            fail(pos_, "'<>' is not an operator: to test that two values differ, write '!='");
+            return 0;
+        }
+        const std::string_view op = comparison({"<=", ">=", "<", ">"});
+        if (op.empty()) return v;
+        pos_ += op.size();
+        const double rhs = sum();
+        if (failed_) return 0;
+        refuseChain(op, {"<=", ">=", "<", ">"});
+        if (op == "<") return v < rhs ? 1 : 0;
+        if (op == "<=") return v <= rhs ? 1 : 0;
+        if (op == ">") return v > rhs ? 1 : 0;
+        return v >= rhs ? 1 : 0;
     }
 
     double sum() {
@@ -236,6 +379,8 @@ class ExpressionParser {
             if (failed_) break;
             if (op == '*') {
                 v = checked(v * rhs, at, "'*'");
+            } else if (skipping_ > 0) {
+                v = 0;  // not evaluated
             } else if (rhs == 0) {
                 fail(at, op == '/' ? "division by zero" : "remainder of a division by zero");
             } else if (op == '/') {
@@ -252,11 +397,13 @@ class ExpressionParser {
 
     double unary() {
         const char c = peek();
-        if (c != '-' && c != '+') return power();
+        // '!=' where an operand should be is not a '!': unexpected() names it.
+        if (c != '-' && c != '+' && (c != '!' || peekIs("!="))) return power();
         const std::size_t at = pos_++;
         if (!enter(at)) return 0;
         const double v = unary();
         --depth_;
+        if (c == '!') return v == 0 ? 1 : 0;
         return c == '-' ? -v : v;
     }
 
@@ -267,7 +414,7 @@ class ExpressionParser {
         if (!enter(at)) return 0;
         const double exponent = unary();  // 2^-1 and 2^3^2 = 2^9
         --depth_;
-        if (failed_) return 0;
+        if (failed_ || skipping_ > 0) return 0;
         if (base == 0 && exponent < 0) {
             fail(at, "division by zero (0 to a negative power)");
             return 0;
@@ -285,7 +432,7 @@ class ExpressionParser {
         if (c == '(') {
             ++pos_;
             if (!enter(at)) return 0;
-            const double v = sum();
+            const double v = expression();
             --depth_;
             if (failed_ || !close(at)) return 0;
             return v;
@@ -325,12 +472,15 @@ class ExpressionParser {
         const FunctionInfo* function = findFunction(word);
         if (peek() == '(') {
             if (!function) {
-                fail(start, "unknown function " + quoteToken(word));
+                fail(start, "unknown function " + quoteToken(word) +
+                                (word == "not" ? " (to negate, write '!')" : ""));
                 return 0;
             }
             return call(*function, start);
         }
         if (const std::optional<double> v = variables_.find(word)) return *v;
+        // A variable whose '/let' failed is known; where nothing is evaluated its value is not needed.
+        if (variables_.isBroken(word) && skipping_ > 0) return 0;
         if (variables_.isBroken(word)) {
             if (!failed_) followOn_ = true;
             fail(start, "variable " + quoteToken(word) + " has no value: its '/let' failed", word.size());
@@ -340,7 +490,9 @@ class ExpressionParser {
             fail(start, quoteToken(word) + " is a function: write " + std::string(word) + "(...)",
                  word.size());
         } else {
-            fail(start, "unknown variable " + quoteToken(word), word.size());
+            fail(start,
+                 "unknown variable " + quoteToken(word) + (word == "not" ? " (to negate, write '!')" : ""),
+                 word.size());
         }
         return 0;
     }
@@ -351,7 +503,13 @@ class ExpressionParser {
         std::vector<double> args;
         if (peek() != ')') {
             for (;;) {
-                args.push_back(sum());
+                // if(c, a, b) evaluates c, then only the branch it returns; the
+                // other, and any argument past the third, is read but not evaluated.
+                const bool skip = f.function == Function::If && !args.empty() &&
+                                  (args.size() > 2 || (args[0] != 0) != (args.size() == 1));
+                if (skip) ++skipping_;
+                args.push_back(expression());
+                if (skip) --skipping_;
                 if (failed_) return 0;
                 if (peek() != ',') break;
                 ++pos_;
@@ -365,9 +523,12 @@ class ExpressionParser {
                 f.maxArgs < 0 ? "at least " + std::to_string(f.minArgs) : std::to_string(f.minArgs);
             const bool plural = f.minArgs != 1;
             fail(at, quoteToken(f.name) + " takes " + count + (plural ? " arguments" : " argument") +
-                         ", got " + std::to_string(n));
+                         ", got " + std::to_string(n) +
+                         (f.function == Function::If ? " (write if(condition, value if true, value if false))"
+                                                     : ""));
             return 0;
         }
+        if (skipping_ > 0) return 0;  // not evaluated: no domain errors
         return apply(f, args, at);
     }
 
@@ -417,6 +578,8 @@ class ExpressionParser {
                 return std::log(x);
             case Function::Round:
                 return std::round(x);  // halves away from zero
+            case Function::If:
+                return x != 0 ? args[1] : args[2];
             case Function::Min:
             case Function::Max: {
                 double best = x;
@@ -432,6 +595,8 @@ class ExpressionParser {
     const Variables& variables_;
     std::size_t pos_ = 0;
     int depth_ = 0;
+    /// > 0 while reading what is not evaluated (SPEC 10.7).
+    int skipping_ = 0;
     bool failed_ = false;
     bool followOn_ = false;
     std::size_t errorOffset_ = 0;

@@ -1,7 +1,8 @@
 #pragma once
 /// Arithmetic expressions of the scene language (SPEC 9.4): `( … )` wherever a
 /// number is expected and `{ … }` inside names, over numbers, variables, the
-/// operators + - * / % ^ and a few functions of degrees.
+/// operators + - * / % ^ and a few functions of degrees; and conditions
+/// (SPEC 10.7): comparisons, && || ! and if(c, a, b), each giving 1 or 0.
 #include <array>
 #include <cstddef>
 #include <functional>
@@ -60,7 +61,10 @@ struct ExpressionResult {
 
 /// Evaluates a whole expression (`i + 1`, the inside of `{ … }`). Every
 /// failure of SPEC 9.4 is an error: unknown variable or function, division by
-/// zero, a result that is not finite, a domain error.
+/// zero, a result that is not finite, a domain error. What is not evaluated
+/// (the right side of a decided `&&` or `||`, the branch `if` does not
+/// return) is still checked for syntax, names and argument counts, but a
+/// value's failure there (division by zero, domain) is none (SPEC 10.7).
 ExpressionResult evaluateExpression(std::string_view text, const Variables& variables);
 
 /// Evaluates a `( … )` argument: `text` starts with '(' and must end at its
