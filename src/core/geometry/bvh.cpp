@@ -666,6 +666,8 @@ template <class Count>
 bool Bvh::occludedCounted(const Ray& ray, float tMin, float tMax, std::uint32_t skip, Count& count) const {
     if (nodes_.empty()) return false;
     Vec3 invDir = inverseDirection(ray.direction);
+    // Checked once here: most scenes have no `/no_shadow` (SPEC 10.8).
+    const std::uint8_t* passThrough = castsNoShadow_.empty() ? nullptr : castsNoShadow_.data();
     std::uint32_t stack[kStackSize];
     int top = 0;
     stack[top++] = 0;
@@ -677,7 +679,7 @@ bool Bvh::occludedCounted(const Ray& ray, float tMin, float tMax, std::uint32_t 
             for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
                 float t;
                 Face face;
-                if (original_[i] == skip || castsNoShadow(i)) continue;
+                if (original_[i] == skip || (passThrough && passThrough[original_[i]])) continue;
                 count.primitive();
                 if (intersectPrimitive(ordered_[i], ray, tMin, tMax, t, face)) return true;
             }

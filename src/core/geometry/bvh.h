@@ -140,10 +140,8 @@ class Bvh {
     /// mask[i] != 0 for frame index i; empty (the default): none. The mask is
     /// held by reference and must outlive the traversals.
     void setCastsNoShadow(std::span<const std::uint8_t> mask) { castsNoShadow_ = mask; }
-    /// Whether shadow rays pass through the primitive at leaf position `leaf`.
-    bool castsNoShadow(std::uint32_t leaf) const {
-        return !castsNoShadow_.empty() && castsNoShadow_[original_[leaf]] != 0;
-    }
+    /// The mask of setCastsNoShadow(), by frame index (empty: none).
+    std::span<const std::uint8_t> castsNoShadow() const { return castsNoShadow_; }
 
     /// The tree, for the packet traversal (bvh_packet.h) and tests.
     std::span<const Node> nodes() const { return nodes_; }

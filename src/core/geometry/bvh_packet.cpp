@@ -160,6 +160,10 @@ Mask occludedFrom(const Bvh& bvh, const Rays<Origin, Direction>& rays, Mask acti
                   Int skip, std::span<const std::uint32_t> roots) {
     const std::span<const Bvh::Node> nodes = bvh.nodes();
     const std::span<const Primitive> ordered = bvh.orderedPrimitives();
+    // Primitives shadow rays pass through (SPEC 10.8 `/no_shadow`), by frame
+    // index; null in most scenes, which then pay nothing more.
+    const std::uint8_t* passThrough = bvh.castsNoShadow().empty() ? nullptr : bvh.castsNoShadow().data();
+    const std::span<const std::uint32_t> frameIndex = bvh.originalIndices();
     Mask blocked = simd::noLanes();
     if (nodes.empty() || roots.empty() || simd::none(active)) return blocked;
     VisitOrder order(rays, active);  // the nearer occluder first ends a lane sooner
@@ -179,7 +183,7 @@ Mask occludedFrom(const Bvh& bvh, const Rays<Origin, Direction>& rays, Mask acti
                 continue;
             }
             for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
-                if (bvh.castsNoShadow(i)) continue;
+                if (passThrough && passThrough[frameIndex[i]]) continue;
                 Mask test = simd::andNot(lanes, skip == Int(std::int32_t(i)));
                 if (simd::none(test)) continue;
                 Float t = tMax;

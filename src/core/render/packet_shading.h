@@ -25,9 +25,9 @@ struct PacketSurface {
     Vec3P toEye;         ///< -ray direction
     Vec3P shadowOrigin;  ///< the hit point lifted off the surface (kShadowBias)
     Vec3P color;
-    Float ka, kd, ks, shininess;
+    Float unlit;  ///< unlitSum(): ka · ambient + emission, worked out once per primitive
+    Float kd, ks, shininess;
     Float reflection;  ///< Material::reflection
-    Float emission;    ///< Material::emission
     Int skip;          ///< primitive (leaf order) the lane's shadow rays skip; -1 when seen from inside
 };
 
@@ -60,12 +60,11 @@ inline PacketSurface surfacesAt(const FrameScene& frame, const Rays<Origin, Vec3
         const Primitive& prim = leafPrimitives[std::size_t(id)];
         n = select(same, primitiveNormalP(prim, p, hit.face), n);
         s.color = select(same, surfaceColorAtP(surface, prim, p, n, offset), s.color);
-        s.ka = simd::select(same, Float(surface.material.ka), s.ka);
+        s.unlit = simd::select(same, Float(unlitSum(surface.material, frame.ambient)), s.unlit);
         s.kd = simd::select(same, Float(surface.material.kd), s.kd);
         s.ks = simd::select(same, Float(surface.material.ks), s.ks);
         s.shininess = simd::select(same, Float(surface.material.n), s.shininess);
         s.reflection = simd::select(same, Float(surface.material.reflection), s.reflection);
-        s.emission = simd::select(same, Float(surface.material.emission), s.emission);
     }
     Mask inside = dot(n, rays.direction) > Float(0.0f);  // seen from within the primitive
     s.normal = select(inside, -n, n);                    // face the viewer
@@ -127,7 +126,7 @@ inline ColorP shadeSurfaces(const FrameScene& frame, const PacketSurface& s,
     ColorP out{Float(frame.background.x), Float(frame.background.y), Float(frame.background.z)};
     if (simd::none(s.hitLanes)) return out;
     const std::uint32_t root = 0;
-    Float diffuse = s.ka * Float(frame.ambient) + s.emission;  // shadeHit(): the glow joins the sum
+    Float diffuse = s.unlit;
     Float specular(0.0f);
     for (std::size_t i = 0; i < frame.lights.size(); ++i) {
         const LightSample& light = frame.lights[i];

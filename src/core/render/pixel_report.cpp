@@ -44,7 +44,7 @@ PixelReport tracePixel(const FrameScene& frame, const Camera& camera, int x, int
                                         r.surface.inside ? -r.surface.normal : r.surface.normal,
                                         shadowOffset(r.surface.position));
         r.material = surface.material;
-        r.ambientTerm = surface.material.ka * frame.ambient + surface.material.emission;
+        r.ambientTerm = unlitSum(surface.material, frame.ambient);
         r.color = shadeHit(frame, r.ray, r.chosen, [&](const LightTerm& term) {
             PixelReport::Light light{term, term.toLight};
             if (term.shadowed) {

@@ -55,6 +55,10 @@ inline ShadingPoint shadingPoint(const FrameScene& frame, const Ray& ray, const 
     return s;
 }
 
+/// The sum shading starts from before any light: ka · ambient, plus a glow
+/// (SPEC 10.8 `emit`), which adding 0 leaves bit for bit as it was.
+inline float unlitSum(const Material& m, float ambient) { return m.ka * ambient + m.emission; }
+
 /// One light's part in shading a point, as shadeHit() computed it.
 struct LightTerm {
     std::size_t light = 0;       ///< FrameScene::lights, then localLights (index - lights.size())
@@ -95,9 +99,7 @@ inline Vec3 shadeHit(const FrameScene& frame, const Ray& ray, const HitRecord& h
     const Vec3 n = s.normal;
     Vec3 toEye = -ray.direction;
 
-    // A glow (SPEC 10.8 `emit`) joins the sum that multiplies the colour;
-    // adding 0 leaves every other surface's sum as it was, bit for bit.
-    float diffuse = m.ka * frame.ambient + m.emission;
+    float diffuse = unlitSum(m, frame.ambient);
     float specular = 0;
     for (std::size_t i = 0; i < frame.lights.size(); ++i) {
         const LightSample& light = frame.lights[i];
