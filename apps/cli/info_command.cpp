@@ -168,9 +168,11 @@ int runInfo(const std::string& path) {
         printTrack(o.name, o.track);
         if (isModel(o.kind))
             for (int p = 0; p < kPartCount; ++p) printTrack(o.name + "." + kPartNames[p], o.partTracks[p]);
-        // Its colour keys (SPEC 10.3), the whole object's before its parts'.
-        for (const ColourTrack& c : s.colourTracks)
+        // Its colour keys (SPEC 10.3), the whole object's before its parts', and visibility keys (10.7).
+        for (const TargetTrack& c : s.colourTracks)
             if (c.target.object == i) printTrack(refName(s, c.target) + " colour", c.track);
+        for (const TargetTrack& v : s.visibilityTracks)
+            if (v.target.object == i) printTrack(refName(s, v.target) + " visible", v.track);
     }
     return 0;
 }

@@ -49,6 +49,16 @@ std::vector<PlacedPrimitive> framePrimitives(const SceneDesc& scene, double t) {
                                               std::uint8_t(std::lround(rgb.y)),
                                               std::uint8_t(std::lround(rgb.z))};
     });
+    // Hidden shapes (SPEC 10.7) are left out: no format shows them.
+    if (!scene.visibilityTracks.empty()) {
+        std::vector<std::uint8_t> hidden(out.size(), 0);
+        forEachHiddenShape(
+            scene, t, [&](std::size_t object, std::size_t shape) { hidden[firstOf[object] + shape] = 1; });
+        std::size_t kept = 0;
+        for (std::size_t i = 0; i < out.size(); ++i)
+            if (!hidden[i]) out[kept++] = std::move(out[i]);
+        out.resize(kept);
+    }
     return out;
 }
 

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <unordered_map>
 
+#include "core/geometry/ray_mask.h"
 #include "core/scene/models.h"
 #include "core/util/streaming_store.h"
 
@@ -183,11 +184,12 @@ std::shared_ptr<const AnimationProgram> AnimationProgram::compile(const SceneDes
         p.castsNoShadow.reserve(primitives);
         for (const SceneObject& object : scene.objects) {
             if (!isModel(object.kind)) {
-                p.castsNoShadow.push_back(shadowless(object.appearance[0]));
+                p.castsNoShadow.push_back(shadowless(object.appearance[0]) ? ray_mask::kCastsNoShadow : 0);
                 continue;
             }
             for (const ModelShape& shape : modelOf(object.kind).shapes)
-                p.castsNoShadow.push_back(shadowless(object.appearance[std::size_t(shape.part)]));
+                p.castsNoShadow.push_back(
+                    shadowless(object.appearance[std::size_t(shape.part)]) ? ray_mask::kCastsNoShadow : 0);
         }
     }
     return program;

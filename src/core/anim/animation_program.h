@@ -91,8 +91,8 @@ struct AnimationProgram {
     std::vector<float> angles;  ///< keys' angles of the turn tracks, track after track
     std::vector<ConstantMotion> constantMotions;
     std::vector<Surface> surfaces;
-    /// Per primitive (frame order), 1 where `/no_shadow` (SPEC 10.8) reached
-    /// it; empty when nothing in the scene uses it.
+    /// Per primitive (frame order), ray_mask::kCastsNoShadow where `/no_shadow`
+    /// (SPEC 10.8) reached it; empty when nothing in the scene uses it.
     std::vector<std::uint8_t> castsNoShadow;
 
     /// Compiles `scene` (its objects; the camera and lights are read per frame).

@@ -63,9 +63,12 @@ struct EvaluatedFrame {
     std::vector<LightSample> lights;
     std::vector<Vec3> sunDirections;  ///< unit, toward the samples of soft suns
     std::vector<LocalLightSample> localLights;
-    /// Per primitive, 1 where it casts no shadow (SPEC 10.8 `/no_shadow`);
-    /// empty when none does. Points into the program in `filledBy`.
-    std::span<const std::uint8_t> castsNoShadow;
+    /// Per primitive, its ray_mask flags (`/no_shadow`, hidden); empty when
+    /// no primitive has one. Points into the program in `filledBy` (shadows
+    /// alone never change), or into `rayMaskStorage` when visibility keys
+    /// change it from frame to frame.
+    std::span<const std::uint8_t> rayMask;
+    std::vector<std::uint8_t> rayMaskStorage;
     std::vector<DiscPoint> discPoints;  ///< the sample patterns of soft point and spot lights
     float ambient = 0;
     Vec3 background;  ///< 0..1

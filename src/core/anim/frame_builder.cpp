@@ -133,8 +133,21 @@ void FrameEvaluation::evaluateObjectsIntoLeaves(EvaluatedFrame& frame, std::span
 
 void FrameEvaluation::finish(EvaluatedFrame& frame) && {
     applyColourTracks(*scene, t, frame);
-    frame.castsNoShadow = program->castsNoShadow;
+    frame.rayMask = program->castsNoShadow;
+    if (!scene->visibilityTracks.empty()) markHiddenShapes(*scene, t, frame);
     frame.filledBy = std::move(program);
+}
+
+void markHiddenShapes(const SceneDesc& scene, double t, EvaluatedFrame& frame) {
+    std::vector<std::uint8_t>& mask = frame.rayMaskStorage;
+    if (frame.rayMask.empty())
+        mask.assign(frame.primitives.size(), 0);
+    else
+        mask.assign(frame.rayMask.begin(), frame.rayMask.end());
+    forEachHiddenShape(scene, t, [&](std::size_t object, std::size_t shape) {
+        mask[frame.firstPrimitive[object] + shape] |= ray_mask::kHidden;
+    });
+    frame.rayMask = mask;
 }
 
 void applyColourTracks(const SceneDesc& scene, double t, EvaluatedFrame& frame) {

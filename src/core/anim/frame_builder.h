@@ -7,6 +7,7 @@
 
 #include "core/anim/evaluated_frame.h"
 #include "core/anim/track.h"
+#include "core/geometry/ray_mask.h"
 #include "core/math/transform.h"
 #include "core/scene/models.h"
 #include "core/util/thread_pool.h"
@@ -69,7 +70,8 @@ struct FrameEvaluation {
     /// leaves[leafOf[i]] (AnimationProgram::evaluateObjectsIntoLeaves).
     void evaluateObjectsIntoLeaves(EvaluatedFrame& frame, std::span<const std::uint32_t> leafOf,
                                    std::span<Primitive> leaves, ThreadPool* pool) const;
-    /// The colour keys (applyColourTracks), and the frame is whole.
+    /// The colour keys (applyColourTracks), the ray mask (`/no_shadow`,
+    /// markHiddenShapes), and the frame is whole.
     void finish(EvaluatedFrame& frame) &&;
 
     const SceneDesc* scene = nullptr;
@@ -80,13 +82,43 @@ struct FrameEvaluation {
 /// time t, over the surfaces evaluated from `/paint`.
 void applyColourTracks(const SceneDesc& scene, double t, EvaluatedFrame& frame);
 
+/// Marks ray_mask::kHidden in frame.rayMask (made the frame's own, over the
+/// program's `/no_shadow` flags) for the shapes hidden at time t (SPEC 10.7).
+void markHiddenShapes(const SceneDesc& scene, double t, EvaluatedFrame& frame);
+
+/// Whether a `visible` track shows its target at time t (SPEC 10.7): its
+/// keys are steps of 0 and 1; before the first key the first holds.
+inline bool visibleAt(const Track& track, double t) {
+    return track.keys.empty() || evaluateTrack(track, t, Pose{}).position.x >= 0.5f;
+}
+
+/// Calls visit(object, shape) for every shape hidden at time t: a shape is
+/// seen while its object's and its part's `visible` tracks (where they have
+/// one) both show it (SPEC 10.7). A shape may be visited twice.
+template <class Visit>
+void forEachHiddenShape(const SceneDesc& scene, double t, Visit&& visit) {
+    for (const TargetTrack& v : scene.visibilityTracks) {
+        if (visibleAt(v.track, t)) continue;
+        const SceneObject& object = scene.objects[v.target.object];
+        if (!isModel(object.kind)) {
+            visit(std::size_t(v.target.object), std::size_t(0));
+            continue;
+        }
+        const ModelDef& model = modelOf(object.kind);
+        for (std::size_t k = 0; k < model.shapes.size(); ++k) {
+            if (v.target.part >= 0 && int(model.shapes[k].part) != v.target.part) continue;
+            visit(std::size_t(v.target.object), k);
+        }
+    }
+}
+
 /// Calls visit(object, shape, rgb) for every shape a `colour` track reaches at
 /// time t (shape: its index among the object's primitives; rgb: 0..255,
 /// unrounded), least specific target first, so the last call for a shape
 /// is its colour. A shape painted in its model is not reached (SPEC 10.3).
 template <class Visit>
 void forEachKeyedColour(const SceneDesc& scene, double t, Visit&& visit) {
-    for (const ColourTrack& c : scene.colourTracks) {
+    for (const TargetTrack& c : scene.colourTracks) {
         if (c.track.keys.empty()) continue;
         const Vec3 v = evaluateTrack(c.track, t, Pose{}).position;
         // An easing that overshoots stops at the ends of the scale.

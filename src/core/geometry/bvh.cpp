@@ -611,6 +611,8 @@ bool Bvh::intersectCounted(const Ray& ray, float tMin, float tMax, HitRecord& hi
                            Count& count) const {
     if (nodes_.empty()) return false;
     Vec3 invDir = inverseDirection(ray.direction);
+    // Hidden primitives (SPEC 10.7); null in most scenes, checked once here.
+    const std::uint8_t* mask = rayMask_.empty() ? nullptr : rayMask_.data();
     std::uint32_t stack[kStackSize];
     int top = 0;
     std::uint32_t current = 0;
@@ -627,6 +629,7 @@ bool Bvh::intersectCounted(const Ray& ray, float tMin, float tMax, HitRecord& hi
             for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
                 float t;
                 Face face;
+                if (mask && (mask[original_[i]] & ray_mask::kHidden)) continue;
                 count.primitive();
                 if (original_[i] != skip && intersectPrimitive(ordered_[i], ray, tMin, bound, t, face) &&
                     (!found || t < tMax || original_[i] < hit.primitive)) {
@@ -666,8 +669,9 @@ template <class Count>
 bool Bvh::occludedCounted(const Ray& ray, float tMin, float tMax, std::uint32_t skip, Count& count) const {
     if (nodes_.empty()) return false;
     Vec3 invDir = inverseDirection(ray.direction);
-    // Checked once here: most scenes have no `/no_shadow` (SPEC 10.8).
-    const std::uint8_t* passThrough = castsNoShadow_.empty() ? nullptr : castsNoShadow_.data();
+    // Checked once here: most scenes have no `/no_shadow` (SPEC 10.8) and
+    // nothing hidden (10.7); shadow rays pass through both.
+    const std::uint8_t* passThrough = rayMask_.empty() ? nullptr : rayMask_.data();
     std::uint32_t stack[kStackSize];
     int top = 0;
     stack[top++] = 0;

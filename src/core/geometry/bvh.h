@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/geometry/intersect.h"
+#include "core/geometry/ray_mask.h"
 #include "core/geometry/traversal_count.h"
 #include "core/util/thread_pool.h"
 
@@ -136,12 +137,12 @@ class Bvh {
     std::size_t beamEntryNodes(const Bounds& origins, std::span<const Vec3> directions,
                                std::span<std::uint32_t> out) const;
 
-    /// Which primitives shadow rays pass through (SPEC 10.8 `/no_shadow`):
-    /// mask[i] != 0 for frame index i; empty (the default): none. The mask is
-    /// held by reference and must outlive the traversals.
-    void setCastsNoShadow(std::span<const std::uint8_t> mask) { castsNoShadow_ = mask; }
-    /// The mask of setCastsNoShadow(), by frame index (empty: none).
-    std::span<const std::uint8_t> castsNoShadow() const { return castsNoShadow_; }
+    /// The ray_mask flags of the primitives, by frame index: shadow rays pass
+    /// through those with any flag (`/no_shadow`, hidden), every ray through
+    /// the hidden ones. Empty (the default): none. The mask is held by
+    /// reference and must outlive the traversals.
+    void setRayMask(std::span<const std::uint8_t> mask) { rayMask_ = mask; }
+    std::span<const std::uint8_t> rayMask() const { return rayMask_; }
 
     /// The tree, for the packet traversal (bvh_packet.h) and tests.
     std::span<const Node> nodes() const { return nodes_; }
@@ -164,10 +165,10 @@ class Bvh {
                                 std::span<std::uint32_t> out) const;
 
     std::vector<Node> nodes_;
-    std::vector<Primitive> ordered_;               ///< primitives in leaf order
-    std::vector<std::uint32_t> original_;          ///< ordered index -> frame index
-    std::vector<std::uint32_t> position_;          ///< frame index -> ordered index
-    std::span<const std::uint8_t> castsNoShadow_;  ///< setCastsNoShadow()
+    std::vector<Primitive> ordered_;         ///< primitives in leaf order
+    std::vector<std::uint32_t> original_;    ///< ordered index -> frame index
+    std::vector<std::uint32_t> position_;    ///< frame index -> ordered index
+    std::span<const std::uint8_t> rayMask_;  ///< setRayMask()
     // Build scratch, kept to avoid per-frame allocation.
     std::vector<Bounds> primBounds_;
     std::vector<Vec3> centroids_;

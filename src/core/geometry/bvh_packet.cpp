@@ -80,6 +80,8 @@ void nearestHits(const Bvh& bvh, const Rays<Origin, Direction>& rays, Mask activ
     const std::span<const Bvh::Node> nodes = bvh.nodes();
     const std::span<const Primitive> ordered = bvh.orderedPrimitives();
     const std::span<const std::uint32_t> original = bvh.originalIndices();
+    // Hidden primitives (SPEC 10.7); null in most scenes.
+    const std::uint8_t* mask = bvh.rayMask().empty() ? nullptr : bvh.rayMask().data();
     if (nodes.empty() || (roots.empty() && moreRoots.empty()) || simd::none(active)) return;
     VisitOrder order(rays, active);
     Float bound = nextUp(hit.t);  // primitives are tested up to and including the lanes' nearest hit
@@ -100,6 +102,7 @@ void nearestHits(const Bvh& bvh, const Rays<Origin, Direction>& rays, Mask activ
                 continue;
             }
             for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
+                if (mask && (mask[original[i]] & ray_mask::kHidden)) continue;
                 Mask test = lanes;
                 if constexpr (kSkips) {
                     test = simd::andNot(lanes, skip == Int(std::int32_t(i)));
@@ -160,9 +163,9 @@ Mask occludedFrom(const Bvh& bvh, const Rays<Origin, Direction>& rays, Mask acti
                   Int skip, std::span<const std::uint32_t> roots) {
     const std::span<const Bvh::Node> nodes = bvh.nodes();
     const std::span<const Primitive> ordered = bvh.orderedPrimitives();
-    // Primitives shadow rays pass through (SPEC 10.8 `/no_shadow`), by frame
-    // index; null in most scenes, which then pay nothing more.
-    const std::uint8_t* passThrough = bvh.castsNoShadow().empty() ? nullptr : bvh.castsNoShadow().data();
+    // Primitives shadow rays pass through (SPEC 10.8 `/no_shadow`, 10.7
+    // hidden), by frame index; null in most scenes, which then pay nothing more.
+    const std::uint8_t* passThrough = bvh.rayMask().empty() ? nullptr : bvh.rayMask().data();
     const std::span<const std::uint32_t> frameIndex = bvh.originalIndices();
     Mask blocked = simd::noLanes();
     if (nodes.empty() || roots.empty() || simd::none(active)) return blocked;

@@ -178,10 +178,11 @@ constexpr std::array<LightOptionSpec, 5> kLightOptions = {{
     {LightOption::Name, "name", 1, "a new name"},
 }};
 
-constexpr std::array<KeyPropertySpec, 3> kKeyProperties = {{
+constexpr std::array<KeyPropertySpec, 4> kKeyProperties = {{
     {KeyProperty::Colour, "colour", 3, "r g b", "a primitive, a robot or human, or a part"},
     {KeyProperty::Intensity, "intensity", 1, "i", "a named light"},
     {KeyProperty::Zoom, "d", 1, "d", "the camera"},
+    {KeyProperty::Visible, "visible", 1, "0 or 1", "a primitive, a robot or human, or a part"},
 }};
 
 constexpr std::array<Interpolation, 10> kModes = {

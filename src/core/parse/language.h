@@ -114,7 +114,7 @@ std::span<const LightOptionSpec> lightOptions();
 inline constexpr std::string_view kEmitWord = "emit";
 
 /// What a `/key <t> <target> <property> <values…>` keys besides the pose (SPEC 10.3).
-enum class KeyProperty : std::uint8_t { Colour, Intensity, Zoom };
+enum class KeyProperty : std::uint8_t { Colour, Intensity, Zoom, Visible };
 struct KeyPropertySpec {
     KeyProperty property;
     std::string_view word;     ///< "colour"

@@ -111,6 +111,9 @@ struct ObjectBook {
     std::array<std::optional<Pos>, kPartCount + 1> interps{};
     std::optional<Pos> attached;  ///< where its `/attach` is
     std::uint32_t loopNote = 0;  ///< the loop pass it was defined in: Parser::loopNotes_ index + 1, 0 if none
+    /// Index into SceneDesc::visibilityTracks of its (0) and each part's (1 + PartId) visible keys; -1 if
+    /// none.
+    std::array<int, kPartCount + 1> visibilityTracks{-1, -1, -1, -1, -1};
     /// Index into SceneDesc::colourTracks of the object's (0) and each part's (1 + PartId) colour keys; -1 if
     /// none.
     std::array<int, kPartCount + 1> colourTracks{-1, -1, -1, -1, -1};
@@ -708,6 +711,7 @@ class Parser : private ExpansionSink {
         if (property == KeyProperty::Zoom) return scene_.camera.zoom;
         if (property == KeyProperty::Intensity) return lightMotion(t).intensity;
         if (property == KeyProperty::Colour) return scene_.colourTracks[colourTrackIndex(t)].track;
+        if (property == KeyProperty::Visible) return scene_.visibilityTracks[visibilityTrackIndex(t)].track;
         if (t.camera) return scene_.camera.track;
         if (t.light >= 0) return lightMotion(t).track;
         SceneObject& o = scene_.objects[t.object];
@@ -723,6 +727,20 @@ class Parser : private ExpansionSink {
             index = static_cast<int>(scene_.colourTracks.size());
             scene_.colourTracks.push_back({FrameRef{static_cast<std::uint32_t>(t.object), t.part}, {}});
             colourTrackBooks_.push_back(-1);
+        }
+        return static_cast<std::size_t>(index);
+    }
+
+    /// The visibility track of an object or part (SPEC 10.7), made on its first key.
+    std::size_t visibilityTrackIndex(Target t) {
+        int& index = books_[t.object].visibilityTracks[static_cast<std::size_t>(t.part + 1)];
+        if (index < 0) {
+            index = static_cast<int>(scene_.visibilityTracks.size());
+            Track steps;
+            steps.interpolation = Interpolation::Step;
+            scene_.visibilityTracks.push_back(
+                {FrameRef{static_cast<std::uint32_t>(t.object), t.part}, steps});
+            visibilityTrackBooks_.push_back(-1);
         }
         return static_cast<std::size_t>(index);
     }
@@ -1342,9 +1360,23 @@ class Parser : private ExpansionSink {
             case KeyProperty::Zoom:
                 values.x = positive(3, "screen distance", ok);
                 break;
+            case KeyProperty::Visible: {
+                bool good = true;
+                values.x = float(real(3, good));
+                if (good && values.x != 0 && values.x != 1) {
+                    error(argPos(3), "visible must be 0 or 1, got " + printable(arg(3)));
+                    good = false;
+                }
+                ok = ok && good;
+                break;
+            }
         }
         std::optional<Easing> mode;
-        if (modeAt < argCount()) {
+        if (modeAt < argCount() && spec->property == KeyProperty::Visible) {
+            // SPEC 10.7: a target shows or hides at its keys, never in between.
+            error(argPos(modeAt), "'visible' keys are always a step: a mode word is not allowed here");
+            ok = false;
+        } else if (modeAt < argCount()) {
             mode = easing(modeAt, argCount());
             ok = ok && mode.has_value();
         }
@@ -1357,10 +1389,12 @@ class Parser : private ExpansionSink {
         addKey(*t, spec->property, time, {time.value, Pose{values, {}}, mode}, argPos(0));
     }
 
-    /// SPEC 10.3's table: colour on objects and parts, intensity on named lights, d on the camera.
+    /// SPEC 10.3's table (and 10.7's `visible`): colour and visible on objects
+    /// and parts, intensity on named lights, d on the camera.
     static bool hasProperty(Target t, KeyProperty property) {
         switch (property) {
             case KeyProperty::Colour:
+            case KeyProperty::Visible:
                 return !t.camera && t.light < 0;
             case KeyProperty::Intensity:
                 return t.light >= 0;
@@ -1484,6 +1518,7 @@ class Parser : private ExpansionSink {
         if (property == KeyProperty::Zoom) return cameraZoomBook_;
         if (property == KeyProperty::Intensity) return lightBook(t).intensityBook;
         if (property == KeyProperty::Colour) return colourTrackBooks_[colourTrackIndex(t)];
+        if (property == KeyProperty::Visible) return visibilityTrackBooks_[visibilityTrackIndex(t)];
         if (t.camera) return cameraTrackBook_;
         if (t.light >= 0) return lightBook(t).poseBook;
         return books_[t.object].tracks[static_cast<std::size_t>(t.part + 1)];
@@ -1686,7 +1721,8 @@ class Parser : private ExpansionSink {
     /// A target's `/interp` sets its property tracks' default mode too (SPEC 10.3).
     void applyInterpToPropertyTracks() {
         for (const TrackBook& book : trackBooks_) {
-            if (book.property)
+            // `visible` keys stay a step whatever the target's mode (SPEC 10.7).
+            if (book.property && book.property != KeyProperty::Visible)
                 trackOf(book.target, book.property).interpolation = trackOf(book.target).interpolation;
         }
     }
@@ -1694,7 +1730,7 @@ class Parser : private ExpansionSink {
     /// Whole objects' colour tracks first, so a part's track, applied later, wins.
     void orderColourTracks() {
         std::stable_partition(scene_.colourTracks.begin(), scene_.colourTracks.end(),
-                              [](const ColourTrack& c) { return c.target.part < 0; });
+                              [](const TargetTrack& c) { return c.target.part < 0; });
         colourTrackBooks_ = {};  // its indices no longer match
     }
 
@@ -1783,7 +1819,8 @@ class Parser : private ExpansionSink {
     /// Named lights (SPEC 10.2): name -> SceneDesc::lightMotions index, and their books.
     std::unordered_map<std::string, std::size_t, StringHash, std::equal_to<>> lightNames_;
     std::vector<LightBook> lightBooks_;
-    std::vector<int> colourTrackBooks_;  ///< parallel to scene_.colourTracks: trackBooks_ indices
+    std::vector<int> colourTrackBooks_;      ///< parallel to scene_.colourTracks: trackBooks_ indices
+    std::vector<int> visibilityTrackBooks_;  ///< parallel to scene_.visibilityTracks: trackBooks_ indices
     /// Attachment trees as disjoint sets (union by size, path halving), each
     /// set knowing the object at its top: an `/attach` closes a cycle exactly
     /// when the new parent's top is the object being attached. Near O(1) per

@@ -20,7 +20,7 @@ PreparationTimes prepareFrame(const SceneDesc& scene, double t, FrameScene& fram
         times.evaluateMs = millisecondsSince(start);
         start = Clock::now();
         frame.bvh.update(frame.primitives, pool);
-        frame.bvh.setCastsNoShadow(frame.castsNoShadow);
+        frame.bvh.setRayMask(frame.rayMask);
         times.buildMs = millisecondsSince(start);
         return times;
     }
@@ -33,7 +33,7 @@ PreparationTimes prepareFrame(const SceneDesc& scene, double t, FrameScene& fram
         },
         pool);
     std::move(evaluation).finish(frame);
-    frame.bvh.setCastsNoShadow(frame.castsNoShadow);
+    frame.bvh.setRayMask(frame.rayMask);
     times.buildMs = millisecondsSince(start);
     return times;
 }

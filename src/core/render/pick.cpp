@@ -37,6 +37,7 @@ std::optional<PickHit> pickPixel(const SceneDesc& scene, double t, const Camera&
     FrameScene frame;
     evaluateFrame(scene, t, frame);
     frame.bvh.build(frame.primitives);
+    frame.bvh.setRayMask(frame.rayMask);  // hidden things cannot be picked (SPEC 10.7)
     return pickPoint(scene, frame, camera, float(x) + 0.5f, float(y) + 0.5f);
 }
 

@@ -17,6 +17,7 @@ std::vector<PixelReport::Crossing> crossingsOf(const EvaluatedFrame& frame, cons
     std::vector<PixelReport::Crossing> out;
     for (std::uint32_t i = 0; i < frame.primitives.size(); ++i) {
         PixelReport::Crossing c{i, 0, Face::Curved};
+        if (!frame.rayMask.empty() && (frame.rayMask[i] & ray_mask::kHidden)) continue;  // SPEC 10.7
         if (i != skip && intersectPrimitive(frame.primitives[i], ray, tMin, kInfinity, c.t, c.face))
             out.push_back(c);
     }
@@ -53,7 +54,7 @@ PixelReport tracePixel(const FrameScene& frame, const Camera& camera, int x, int
                 auto blockers =
                     crossingsOf(frame, {r.surface.shadowOrigin, light.toLight}, 0.0f, r.surface.skip);
                 std::erase_if(blockers, [&](const PixelReport::Crossing& c) {
-                    return !frame.castsNoShadow.empty() && frame.castsNoShadow[c.primitive] != 0;
+                    return !frame.rayMask.empty() && frame.rayMask[c.primitive] != 0;
                 });
                 if (!blockers.empty() && blockers.front().t < term.distance) {
                     light.occluder = blockers.front().primitive;

@@ -48,7 +48,8 @@ int SceneDesc::lastFrame() const {
         scan(l.track);
         scan(l.intensity);
     }
-    for (const ColourTrack& c : colourTracks) scan(c.track);
+    for (const TargetTrack& c : colourTracks) scan(c.track);
+    for (const TargetTrack& v : visibilityTracks) scan(v.track);
     for (const Caption& c : captions) last = std::max(last, c.to);
     return int(std::ceil(last));
 }

@@ -196,9 +196,10 @@ struct LightMotion {
     Track intensity;  ///< `/key t <name> intensity <i>` (keys' position.x)
 };
 
-/// `/key t <target> colour r g b` (SPEC 10.3): an object's or a model part's
-/// colour over time (keys' position: r g b, 0..255).
-struct ColourTrack {
+/// A property track of an object or a model part: `/key t <target> colour r
+/// g b` (SPEC 10.3; keys' position: r g b, 0..255) or `/key t <target>
+/// visible 0|1` (SPEC 10.7; keys' position.x, always a step).
+struct TargetTrack {
     FrameRef target;
     Track track;
 };
@@ -245,7 +246,9 @@ struct SceneDesc {
     std::vector<LightMotion> lightMotions;
     /// Colour keys (SPEC 10.3): every whole object's track before any part's,
     /// so that applied in order the most specific target wins.
-    std::vector<ColourTrack> colourTracks;
+    std::vector<TargetTrack> colourTracks;
+    /// Visibility keys (SPEC 10.7), in file order of their targets' first key.
+    std::vector<TargetTrack> visibilityTracks;
     Color8 background{0, 0, 0};
     int fps = 24;
     std::vector<SceneObject> objects;
