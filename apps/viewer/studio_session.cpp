@@ -79,7 +79,9 @@ void StudioSession::requestFrame() {
     const Camera sceneCamera = cameraAt(*scene, time);
     RenderOptions options;
     options.view = viewMode_;
-    lastRequest_ = {std::move(scene), time, viewCamera_ ? viewCamera_(sceneCamera) : sceneCamera, options};
+    const std::optional<BoundsOf> outlined = selectionIn(*scene);
+    lastRequest_ = {std::move(scene), time, viewCamera_ ? viewCamera_(sceneCamera) : sceneCamera, options,
+                    outlined};
     RenderRequest request = lastRequest_;
     if (playback_->isPlaying() && options.view == ViewMode::Shaded)
         request.options.antialias = playbackAntialias_.level();
@@ -112,6 +114,7 @@ void StudioSession::refine() {
         return;
     RenderRequest next = lastRequest_;
     next.options.antialias = shownFrame_.antialias * 2;
+    next.boundsOf = selectionIn(*next.scene);  // it may have changed since
     controller_->request(next);
 }
 
@@ -166,9 +169,16 @@ void StudioSession::updateSelectionView() {
     for (const Key& key :
          (selection_->part ? target.partTracks[std::size_t(*selection_->part)] : target.track).keys)
         view.keyFrames << int(std::lround(key.time));
-    EvaluatedFrame frame;
-    evaluateFrame(*scene, shownFrame_.time, frame);
-    view.bounds = selectionBounds(*scene, frame, *object, selection_->part);
+    // The frame shown brings the bounds when it was rendered from this scene
+    // with this selection; otherwise (a click, an edit since) evaluate it here.
+    if (shownFrame_.bounds && shownFrame_.scene == scene &&
+        shownFrame_.boundsOf == BoundsOf{*object, selection_->part}) {
+        view.bounds = *shownFrame_.bounds;
+    } else {
+        EvaluatedFrame frame;
+        evaluateFrame(*scene, shownFrame_.time, frame);
+        view.bounds = selectionBounds(*scene, frame, *object, selection_->part);
+    }
     const Vec3 centre = (view.bounds.lo + view.bounds.hi) * 0.5f;
     view.label = tr("%1 at (%2, %3, %4)")
                      .arg(selection_->target())
@@ -176,6 +186,11 @@ void StudioSession::updateSelectionView() {
                      .arg(double(centre.y), 0, 'f', 1)
                      .arg(double(centre.z), 0, 'f', 1);
     selectionView_ = std::move(view);
+}
+
+std::optional<BoundsOf> StudioSession::selectionIn(const SceneDesc& scene) const {
+    const auto object = selection_ ? findObject(scene, *selection_) : std::nullopt;
+    return object ? std::optional(BoundsOf{*object, selection_->part}) : std::nullopt;
 }
 
 int StudioSession::lineOf(const QString& text, const CreatedAt& created, ObjectKind kind) const {

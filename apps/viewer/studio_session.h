@@ -130,6 +130,8 @@ class StudioSession : public QObject {
     void onFrameReady(const QImage& image, const FrameInfo& info);
     /// selectionView_ for the frame shown; forgets a selection the scene lost.
     void updateSelectionView();
+    /// What a request for `scene` asks the bounds of: the selection, if `scene` has it.
+    std::optional<BoundsOf> selectionIn(const SceneDesc& scene) const;
     /// The line of `text` holding `created` (an object of `kind`), or 0 when
     /// it is in another file or the text has changed there since the scene parsed.
     int lineOf(const QString& text, const CreatedAt& created, ObjectKind kind) const;

@@ -5,7 +5,9 @@
 #include <QSignalSpy>
 #include <QTest>
 
+#include "core/anim/frame_builder.h"
 #include "core/render/camera.h"
+#include "core/render/pick.h"
 #include "image_convert.h"
 #include "playback.h"
 #include "scene_document.h"
@@ -130,6 +132,20 @@ void SessionTest::pickNamesTheLineAndKeysTheSelection() {
     session.playback()->seek(5);
     const QStringList lines = applied(text, session.keySelectionHere(text)).split('\n');
     QCOMPARE(lines.value(8), QStringLiteral("/key 5 ball 0 0 8 0 0 0"));
+
+    // The frames rendered since bring the selection's bounds (no second evaluation on
+    // this thread): the ones evaluating frame 5 gives, and the label follows the ball.
+    QVERIFY(
+        QTest::qWaitFor([&] { return session.isFrameSettled() && session.shownFrame().time == 5; }, kWaitMs));
+    QVERIFY(session.shownFrame().bounds);
+    EvaluatedFrame frame5;
+    evaluateFrame(*session.document()->scene(), 5, frame5);
+    const Bounds expected =
+        selectionBounds(*session.document()->scene(), frame5,
+                        *findObject(*session.document()->scene(), *session.selection()), std::nullopt);
+    QCOMPARE(session.selectionView()->bounds.lo, expected.lo);
+    QCOMPARE(session.selectionView()->bounds.hi, expected.hi);
+    QVERIFY(session.selectionView()->label.startsWith("ball at (0.0, 0.0, 8.0)"));
 
     // The background clears the selection.
     QVERIFY(!session.pick({1, 1}, camera));
