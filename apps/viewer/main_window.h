@@ -1,26 +1,23 @@
 #pragma once
 /// The viewer's window: menus, actions, docks and the wiring between the
-/// document, the clock, the render controller and the widgets. The work is
-/// done by those classes; this one stays small.
+/// studio session (document, clock, frames, selection, capture edits) and the
+/// widgets. The work is done by those classes; this one stays small.
 #include <QMainWindow>
-#include <QMessageBox>
-#include <QTimer>
-#include <functional>
 #include <memory>
 
 #include "animation_exporter.h"
 #include "core/render/image.h"
+#include "export_actions.h"
 #include "playback_antialias.h"
 #include "problems_dock.h"
 #include "render_controller.h"
-#include "scene_locations.h"
+#include "scene_files.h"
 #include "selection.h"
+#include "status_readouts.h"
+#include "studio_session.h"
 
 class QActionGroup;
-class QLabel;
 class QListWidget;
-class QMenu;
-class QDockWidget;
 
 namespace f2 {
 struct SceneDesc;
@@ -45,44 +42,28 @@ class MainWindow : public QMainWindow {
     explicit MainWindow(QWidget* parent = nullptr);
     ~MainWindow() override;
 
-    /// Opens a scene file (command line, dialog, recent files, drops), after
-    /// asking about unsaved edits; offers back an autosaved copy of it.
-    /// Returns false if the user cancelled.
-    bool openFile(const QString& path);
-    /// Starts an empty untitled scene (after asking about unsaved edits).
-    bool newFile();
-    /// Opens the built-in default scene as untitled text.
-    bool openDefaultScene();
-    /// Writes the editor's text to the scene file (Save As for an untitled
-    /// one), atomically. Returns whether it was written.
-    bool saveScene();
-    /// Asks for a file name and writes the editor's text there.
-    bool saveSceneAs();
-    /// Writes the editor's text to `path` atomically and makes it the document's file.
-    bool writeScene(const QString& path);
-
-    /// Offers back the autosaved copy of the open document, if there is one
-    /// (opening a file does this; main() does it for the untitled start).
-    void offerAutosave();
-
-    /// The questions the window asks; tests answer them through setAsker().
-    enum class Question {
-        SaveChanges,        ///< Save / Discard / Cancel
-        RestoreAutosave,    ///< Yes (restore the copy) / No (discard it)
-        ReloadChangedFile,  ///< Yes (take the file on disk) / No (keep the editor's text)
-    };
-    using Asker = std::function<QMessageBox::StandardButton(Question, const QString& text)>;
-    /// Replaces the message boxes (tests).
-    void setAsker(Asker asker) { asker_ = std::move(asker); }
+    /// The scene file's commands and questions (SceneFiles).
+    SceneFiles* files() const { return files_; }
+    bool openFile(const QString& path) { return files_->openFile(path); }
+    bool newFile() { return files_->newFile(); }
+    bool openDefaultScene() { return files_->openDefaultScene(); }
+    bool saveScene() { return files_->saveScene(); }
+    bool saveSceneAs() { return files_->saveSceneAs(); }
+    bool writeScene(const QString& path) { return files_->writeScene(path); }
+    void offerAutosave() { files_->offerAutosave(); }
+    using Question = SceneFiles::Question;
+    using Asker = SceneFiles::Asker;
+    void setAsker(Asker asker) { files_->setAsker(std::move(asker)); }
     /// Resizes the window so the picture area gets `viewportSize` (screen permitting).
     void resizeForViewport(QSize viewportSize);
 
     // For tests and main(): the parts of the window.
+    StudioSession* session() const { return session_; }
     SceneDocument* document() const { return document_; }
     Playback* playback() const { return playback_; }
     TimelineWidget* timeline() const { return timeline_; }
     ViewportWidget* viewport() const { return viewport_; }
-    RenderController* renderController() const { return controller_.get(); }
+    RenderController* renderController() const { return session_->renderController(); }
     /// View › Mode: what the picture shows (shaded or a diagnostic view).
     ViewModeMenu* viewModes() const { return viewModes_; }
     QListWidget* problemsList() const;
@@ -93,20 +74,21 @@ class MainWindow : public QMainWindow {
     bool isOpening() const;
     OpeningIndicator* openingIndicator() const { return opening_; }
     SceneEditor* editor() const;
-    /// The folder the save and export dialogs start in: the scene's (the
-    /// working folder for an untitled scene).
-    QString outputFolder() const;
-    /// The frame *Save Frame* writes: the current time and view, rendered at
-    /// the render size (the scene's /camera size at *Scene Size*, whatever
-    /// the docks take from the window).
-    Image frameToSave() const;
+    /// File › Save Frame and the exports (ExportActions).
+    ExportActions* exports() const { return exports_; }
+    QString outputFolder() const { return exports_->outputFolder(); }
+    Image frameToSave() const { return exports_->frameToSave(); }
+    ExportJob exportJob(std::shared_ptr<const SceneDesc> scene, std::unique_ptr<FrameSink> sink,
+                        const QString& destination) const {
+        return exports_->exportJob(std::move(scene), std::move(sink), destination);
+    }
     /// Selects what image point `imagePoint` (pixels of the picture on
     /// screen) shows in the frame on screen, or clears the selection on the
     /// background: outlined in the picture, named in the status bar, its
     /// creating line selected in the editor.
     void selectAt(QPointF imagePoint);
-    void setSelection(std::optional<Selection> selection);
-    const std::optional<Selection>& selection() const { return selection_; }
+    void setSelection(std::optional<Selection> selection) { session_->setSelection(std::move(selection)); }
+    const std::optional<Selection>& selection() const { return session_->selection(); }
     /// Writes the view (the look-around, else the scene camera) into the
     /// scene's `/camera` line, keeping its size and `d`. One undo step.
     void setCameraFromView();
@@ -120,39 +102,31 @@ class MainWindow : public QMainWindow {
     /// frame 0 comes with `/key 0 camera` at the `/camera` pose, so the shot's
     /// start stays (camera_key_writer.h). One undo step.
     void keyCameraHere();
-    /// While paused, the picture refines: the same frame again with 2x2, then
-    /// kRefinedAntialias x kRefinedAntialias samples (View › Refine When Paused).
-    /// Only the shaded view refines: the diagnostic views trace pixel centres.
-    void setRefinement(bool on);
+    /// View › Refine When Paused (StudioSession::setRefinement).
+    void setRefinement(bool on) { session_->setRefinement(on); }
     /// The picture on screen is still to be refined.
-    bool isRefining() const;
-    /// The last step of refinement: what `f2 render --aa 4` computes.
-    static constexpr int kRefinedAntialias = 4;
+    bool isRefining() const { return session_->isRefining(); }
+    static constexpr int kRefinedAntialias = StudioSession::kRefinedAntialias;
     /// View › Playback Anti-aliasing: the samples of frames rendered while playing (saved in the settings).
     void setPlaybackAntialias(PlaybackAntialiasMode mode);
     /// Its policy: the mode, the frame budget, the estimates (tests inject a cost model).
-    PlaybackAntialias& playbackAntialias() { return playbackAntialias_; }
+    PlaybackAntialias& playbackAntialias() { return session_->playbackAntialias(); }
     /// The status bar's text about the samples of playing frames (empty while paused).
-    QString playbackAntialiasStatus() const;
-    /// The export of `scene` into `sink` from the current view: the loop's
-    /// frames when loop points are set, else frames 0..last, at the scene's
-    /// /camera size. `destination` names the output in messages.
-    ExportJob exportJob(std::shared_ptr<const SceneDesc> scene, std::unique_ptr<FrameSink> sink,
-                        const QString& destination) const;
+    QString playbackAntialiasStatus() const { return readouts_->playbackAntialias(); }
     /// The status bar's text about the selection.
-    QString selectionStatus() const;
+    QString selectionStatus() const { return readouts_->selection(); }
     /// The window is on screen and so is a finished picture: the latest
     /// request, at the picture area's render size, refined when paused.
     bool isPictureComplete() const;
     /// The frame on screen (time, timings, size); serial 0 before the first.
-    const FrameInfo& shownFrame() const { return shownFrame_; }
+    const FrameInfo& shownFrame() const { return session_->shownFrame(); }
 
-    static constexpr int kMaxRecentFiles = 8;
+    static constexpr int kMaxRecentFiles = SceneFiles::kMaxRecentFiles;
 
    public slots:
     /// Renders the current time and view soon (requests made in one event
     /// loop pass are coalesced into one).
-    void scheduleFrame();
+    void scheduleFrame() { session_->scheduleFrame(); }
     void setRenderScale(RenderScale scale);
 
    protected:
@@ -165,43 +139,19 @@ class MainWindow : public QMainWindow {
     void onSceneChanged(bool newDocument);
     void onDiagnosticsChanged();
     void onProblemClicked(const QString& file, int line, int column);
-    void onTextLoaded(const QString& text);
-    void onTextSettled();
-    void onFileChangedOnDisk();
-    /// True when there are no unsaved edits or the user saved or discarded them.
-    bool maybeSave();
-    /// False, with a status message, while the file's text is not in the editor yet.
-    bool textIsReady();
-    QMessageBox::StandardButton ask(Question question, const QString& text);
-    void updateTitle();
-    void onFrameReady(const QImage& image, const FrameInfo& info);
-    void requestFrame();
-    /// Asks for the frame on screen again with more samples, if it should refine.
-    void refine();
-    void updateStatus();
-    /// Outline and status of the selection for the frame on screen.
-    void updateSelectionView();
-    /// Selects the selection's creating line in the editor; says in the status
-    /// bar when a loop made it or it is in another file.
-    void showCreatingLine();
-    /// The editor's line of `created` (an object of `kind`), or 0 when it is
-    /// in another file or the text has changed there since the scene parsed.
-    int editorLineOf(const CreatedAt& created, ObjectKind kind) const;
-    void openDialog();
-    void saveFrame();
-    void exportPngSequence();
-    void exportVideo();
-    /// The scene's name as the start of an exported file's name.
-    QString exportStem() const;
-    /// True (after saying so) if `path` is the scene file, which the viewer never writes.
-    bool refuseSceneFile(const QString& path, const QString& title);
-    /// The export flow shared by both: runs exportJob() with progress; errors
-    /// go to a message box.
-    void runExport(std::shared_ptr<const SceneDesc> scene, std::unique_ptr<FrameSink> sink,
-                   const QString& destination);
-    void addRecentFile(const QString& path);
-    void rebuildRecentMenu();
+    void onFrameShown(const QImage& image);
+    /// Outline, status and key markers of the session's selection.
+    void showSelection();
+    /// The look-around's eye and rotation, if the user is looking around.
+    std::optional<Pose> lookAround() const;
+    /// Applies a capture's edits to the editor (one undo step) and shows its
+    /// note. Returns whether it wrote anything.
+    bool applyCapture(const StudioSession::Capture& capture);
 
+    StudioSession* session_ = nullptr;
+    ExportActions* exports_ = nullptr;
+    SceneFiles* files_ = nullptr;
+    StatusReadouts* readouts_ = nullptr;
     SceneDocument* document_ = nullptr;
     Playback* playback_ = nullptr;
     ViewportWidget* viewport_ = nullptr;
@@ -209,29 +159,8 @@ class MainWindow : public QMainWindow {
     ProblemsDock* diagnosticsDock_ = nullptr;
     EditorDock* editorDock_ = nullptr;
     OpeningIndicator* opening_ = nullptr;
-    QMetaObject::Connection deferredAutosaveOffer_;  // waits for a large file's text
-    Asker asker_;
-    QMenu* recentMenu_ = nullptr;
-    QLabel* frameStatus_ = nullptr;
-    QLabel* timeStatus_ = nullptr;
-    QLabel* fpsStatus_ = nullptr;
-    QLabel* sizeStatus_ = nullptr;
-    QLabel* selectionStatus_ = nullptr;
-    std::optional<Selection> selection_;
-    QLabel* refineStatus_ = nullptr;
-    QLabel* viewStatus_ = nullptr;  ///< the view mode of the picture on screen
     ViewModeMenu* viewModes_ = nullptr;
-    bool refinement_ = true;
-    QLabel* playbackAntialiasStatus_ = nullptr;
     QActionGroup* playbackAntialiasActions_ = nullptr;
-    PlaybackAntialias playbackAntialias_;
-    RenderRequest lastRequest_;  // the view the latest request showed, at 1 sample (paused)
-    QTimer frameTimer_;          // coalesces scheduleFrame() calls
-    QTimer statusTimer_;         // lets the FPS readout fall to 0 when nothing renders
-    FrameInfo shownFrame_;
-    // Declared last so it is destroyed first: its worker joins while every
-    // widget it could talk to still exists.
-    std::unique_ptr<RenderController> controller_;
 };
 
 }  // namespace f2::viewer

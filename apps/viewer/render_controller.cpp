@@ -78,6 +78,11 @@ void RenderController::workerLoop(int threads) {
             renderer.render(*request.scene, request.time, request.camera, image, request.options, &cancel_);
         info.size = QSize(image.width, image.height);
         if (cancel_.load()) return;  // only the destructor cancels
+        info.scene = request.scene;
+        info.boundsOf = request.boundsOf;
+        if (request.boundsOf)
+            info.bounds = selectionBounds(*request.scene, renderer.frame(), request.boundsOf->object,
+                                          request.boundsOf->part);
         QImage frame = toQImage(image);
         // Hand the frame to the GUI thread; the worker never waits for it.
         QMetaObject::invokeMethod(

@@ -16,10 +16,20 @@
 #include <thread>
 
 #include "core/render/camera.h"
+#include "core/render/pick.h"
 #include "core/render/renderer.h"
 #include "core/scene/scene_desc.h"
 
 namespace f2::viewer {
+
+/// An object of the request's scene, or one part of it, whose world bounds
+/// come back with the frame (the selection's outline: the worker has the
+/// evaluated frame at hand, so the GUI thread need not evaluate it again).
+struct BoundsOf {
+    std::size_t object = 0;
+    std::optional<PartId> part;
+    friend bool operator==(const BoundsOf&, const BoundsOf&) = default;
+};
 
 /// Everything one frame depends on. The scene is an immutable snapshot, so the
 /// worker can read it while the GUI loads the next version of the file.
@@ -28,6 +38,7 @@ struct RenderRequest {
     double time = 0;        ///< in frames, may be fractional
     Camera camera;          ///< already at the render size
     RenderOptions options;  ///< anti-aliasing and view mode, as `f2 render --aa --view`
+    std::optional<BoundsOf> boundsOf = std::nullopt;  ///< bounds to bring back with the frame
 };
 
 /// What came back with a frame.
@@ -35,9 +46,12 @@ struct FrameInfo {
     double time = 0;
     FrameTimings timings;
     QSize size;
-    int antialias = 1;                 ///< N of the N x N samples per pixel it was rendered with
-    ViewMode view = ViewMode::Shaded;  ///< what its pixels show
-    quint64 serial = 0;                ///< request number, increasing
+    int antialias = 1;                       ///< N of the N x N samples per pixel it was rendered with
+    ViewMode view = ViewMode::Shaded;        ///< what its pixels show
+    quint64 serial = 0;                      ///< request number, increasing
+    std::shared_ptr<const SceneDesc> scene;  ///< the scene it shows
+    std::optional<BoundsOf> boundsOf;        ///< the request's
+    std::optional<Bounds> bounds;            ///< of boundsOf, at this frame's time
 };
 
 class RenderController : public QObject {

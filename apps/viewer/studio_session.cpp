@@ -1,0 +1,269 @@
+#include "studio_session.h"
+
+#include <cmath>
+
+#include "camera_key_writer.h"
+#include "capture_pose.h"
+#include "core/anim/frame_builder.h"
+#include "core/anim/frame_time.h"
+#include "core/render/pick.h"
+#include "core/render/renderer.h"
+#include "include_origin.h"
+#include "playback.h"
+#include "scene_document.h"
+
+namespace f2::viewer {
+
+namespace {
+
+/// Line `line` (1-based) of `text`, as the editor's block of that number holds it.
+std::optional<QStringView> lineOfText(const QString& text, int line) {
+    if (line < 1) return std::nullopt;
+    qsizetype start = 0;
+    for (int i = 1; i < line; ++i) {
+        start = text.indexOf(u'\n', start);
+        if (start < 0) return std::nullopt;
+        ++start;
+    }
+    const qsizetype end = text.indexOf(u'\n', start);
+    return QStringView(text).mid(start, end < 0 ? -1 : end - start);
+}
+
+}  // namespace
+
+StudioSession::StudioSession(QObject* parent)
+    : QObject(parent), controller_(std::make_unique<RenderController>()) {
+    document_ = new SceneDocument(this);
+    playback_ = new Playback(this);
+    frameTimer_.setSingleShot(true);
+    frameTimer_.setInterval(0);
+    connect(&frameTimer_, &QTimer::timeout, this, &StudioSession::requestFrame);
+    connect(document_, &SceneDocument::sceneChanged, this, &StudioSession::onSceneChanged);
+    connect(controller_.get(), &RenderController::frameReady, this, &StudioSession::onFrameReady);
+    connect(playback_, &Playback::timeChanged, this, &StudioSession::scheduleFrame);
+    // Pausing shows the frame again, then refines it.
+    connect(playback_, &Playback::playingChanged, this, [this](bool playing) {
+        if (!playing) scheduleFrame();
+    });
+}
+
+StudioSession::~StudioSession() = default;
+
+void StudioSession::onSceneChanged(bool newDocument) {
+    const auto scene = document_->scene();
+    playback_->setRange(scene->lastFrame(), scene->fps);
+    // A playing frame may take one tick of the clock; another scene's cost is not known yet.
+    playbackAntialias_.setBudgetMs(playback_->tickIntervalMs());
+    if (newDocument) playbackAntialias_.reset();
+    if (newDocument) {
+        playback_->clearLoop();
+        playback_->seek(0);
+    }
+    emit sceneChanged(newDocument);
+    scheduleFrame();
+}
+
+void StudioSession::setViewMode(ViewMode mode) {
+    viewMode_ = mode;
+    scheduleFrame();
+}
+
+void StudioSession::scheduleFrame() {
+    if (!frameTimer_.isActive()) frameTimer_.start();
+}
+
+void StudioSession::requestFrame() {
+    auto scene = document_->scene();
+    if (!scene) return;
+    const double time = playback_->time();
+    const Camera sceneCamera = cameraAt(*scene, time);
+    RenderOptions options;
+    options.view = viewMode_;
+    const std::optional<BoundsOf> outlined = selectionIn(*scene);
+    lastRequest_ = {std::move(scene), time, viewCamera_ ? viewCamera_(sceneCamera) : sceneCamera, options,
+                    outlined};
+    RenderRequest request = lastRequest_;
+    if (playback_->isPlaying() && options.view == ViewMode::Shaded)
+        request.options.antialias = playbackAntialias_.level();
+    controller_->request(request);
+}
+
+void StudioSession::setRefinement(bool on) {
+    refinement_ = on;
+    if (on)
+        refine();
+    else
+        scheduleFrame();  // back to one sample
+}
+
+bool StudioSession::isRefining() const {
+    return refinement_ && !playback_->isPlaying() && shownFrame_.serial != 0 &&
+           shownFrame_.view == ViewMode::Shaded && shownFrame_.antialias < kRefinedAntialias;
+}
+
+bool StudioSession::isFrameSettled() const {
+    return shownFrame_.serial != 0 && !controller_->hasPendingFrames() && !frameTimer_.isActive() &&
+           !isRefining();
+}
+
+void StudioSession::refine() {
+    // Only the latest view, only when nothing newer is on its way: any change
+    // (time, camera, size, scene) makes a new one-sample request, which
+    // restarts refinement from its frame.
+    if (!isRefining() || controller_->hasPendingFrames() || frameTimer_.isActive() || !lastRequest_.scene)
+        return;
+    RenderRequest next = lastRequest_;
+    next.options.antialias = shownFrame_.antialias * 2;
+    next.boundsOf = selectionIn(*next.scene);  // it may have changed since
+    controller_->request(next);
+}
+
+void StudioSession::onFrameReady(const QImage& image, const FrameInfo& info) {
+    playbackAntialias_.observe(info.antialias, info.timings);
+    shownFrame_ = info;
+    updateSelectionView();
+    emit frameShown(image, info);
+    refine();
+}
+
+Image StudioSession::renderStill(const Camera& camera) const {
+    // Rendered again rather than taken from the screen: the picture on screen
+    // may be a stretched older frame while the window resizes, and its size
+    // follows the docks at 25-100 %. One frame is milliseconds, so the GUI
+    // thread can afford it for a menu command.
+    Renderer renderer;
+    Image image;
+    RenderOptions options;
+    options.view = viewMode_;  // what the picture shows
+    renderer.render(*document_->scene(), playback_->time(), camera, image, options);
+    return image;
+}
+
+bool StudioSession::pick(QPointF imagePoint, const Camera& camera) {
+    const auto scene = document_->scene();
+    if (!scene) return false;
+    // The frame shown: its time and the view at its size, so the pick names what the user sees.
+    const auto hit = pickPixel(*scene, shownFrame_.time, camera, int(imagePoint.x()), int(imagePoint.y()));
+    setSelection(hit ? std::optional(selectionOf(*scene, *hit)) : std::nullopt);
+    return selection_.has_value();
+}
+
+void StudioSession::setSelection(std::optional<Selection> selection) {
+    selection_ = std::move(selection);
+    updateSelectionView();
+    emit selectionChanged();
+}
+
+void StudioSession::updateSelectionView() {
+    const auto scene = document_->scene();
+    const auto object = selection_ && scene ? findObject(*scene, *selection_) : std::nullopt;
+    if (!object) {
+        selection_.reset();  // deleted or renamed in the text
+        selectionView_.reset();
+        return;
+    }
+    const SceneObject& target = scene->objects[*object];
+    SelectionView view;
+    // The timeline's steps are whole frames: a key at a fractional time
+    // (SPEC 10.4) shows at the nearest one.
+    for (const Key& key :
+         (selection_->part ? target.partTracks[std::size_t(*selection_->part)] : target.track).keys)
+        view.keyFrames << int(std::lround(key.time));
+    // The frame shown brings the bounds when it was rendered from this scene
+    // with this selection; otherwise (a click, an edit since) evaluate it here.
+    if (shownFrame_.bounds && shownFrame_.scene == scene &&
+        shownFrame_.boundsOf == BoundsOf{*object, selection_->part}) {
+        view.bounds = *shownFrame_.bounds;
+    } else {
+        EvaluatedFrame frame;
+        evaluateFrame(*scene, shownFrame_.time, frame);
+        view.bounds = selectionBounds(*scene, frame, *object, selection_->part);
+    }
+    const Vec3 centre = (view.bounds.lo + view.bounds.hi) * 0.5f;
+    view.label = tr("%1 at (%2, %3, %4)")
+                     .arg(selection_->target())
+                     .arg(double(centre.x), 0, 'f', 1)
+                     .arg(double(centre.y), 0, 'f', 1)
+                     .arg(double(centre.z), 0, 'f', 1);
+    selectionView_ = std::move(view);
+}
+
+std::optional<BoundsOf> StudioSession::selectionIn(const SceneDesc& scene) const {
+    const auto object = selection_ ? findObject(scene, *selection_) : std::nullopt;
+    return object ? std::optional(BoundsOf{*object, selection_->part}) : std::nullopt;
+}
+
+int StudioSession::lineOf(const QString& text, const CreatedAt& created, ObjectKind kind) const {
+    if (created.loc.file != document_->sourceName()) return 0;
+    const auto line = lineOfText(text, created.loc.line);
+    if (!line) return 0;
+    // The text may have changed since the scene parsed: the line must still hold the command.
+    const std::string_view name = objectKindName(kind);
+    const QString command = u'/' + QString::fromLatin1(name.data(), qsizetype(name.size()));
+    return line->mid(created.loc.column - 1).startsWith(command) ? created.loc.line : 0;
+}
+
+StudioSession::CreatingLine StudioSession::creatingLine(const QString& text) const {
+    const auto scene = document_->scene();
+    const auto object = selection_ && scene ? findObject(*scene, *selection_) : std::nullopt;
+    const CreatedAt* created = selection_ ? document_->locations()->object(selection_->object) : nullptr;
+    if (!object || !created) return {};
+    const QString target = selection_->target();
+    // Several objects from one line: a loop made them (or an include read more than once).
+    const QString loop =
+        created->sameLine > 1 ? tr(", one of %1 objects that line makes").arg(created->sameLine) : QString();
+    if (const int line = lineOf(text, *created, scene->objects[*object].kind))
+        return {line,
+                loop.isEmpty() ? QString() : tr("%1 is made by line %2%3").arg(target).arg(line).arg(loop)};
+    const QString place = QStringLiteral("%1:%2")
+                              .arg(includedFileName(created->loc.file, document_->path()))
+                              .arg(created->loc.line);
+    // Another file: the /include line of this file that made this one.
+    if (const int line = created->loc.file == document_->sourceName()
+                             ? 0
+                             : includingLine(text, document_->sourceName(), created->loc, created->instance))
+        return {line, tr("%1 made in %2 (included at line %3)").arg(target, place).arg(line)};
+    // Text that changed since (or an include no longer there): name the place, select nothing.
+    return {0, created->loc.file == document_->sourceName()
+                   ? tr("%1 was made by line %2 before the latest edits%3")
+                         .arg(target)
+                         .arg(created->loc.line)
+                         .arg(loop)
+                   : tr("%1 is made in an included file, %2%3").arg(target, place, loop)};
+}
+
+StudioSession::Capture StudioSession::cameraFromView(const QString& text,
+                                                     const std::optional<Pose>& lookAround) const {
+    const auto scene = document_->scene();
+    return {{cameraEdit(text, scene->camera, lookAround.value_or(scene->camera.pose))}, {}, 0};
+}
+
+StudioSession::Capture StudioSession::keySelectionHere(const QString& text) const {
+    const auto scene = document_->scene();
+    const auto object = selection_ ? findObject(*scene, *selection_) : std::nullopt;
+    if (!object) return {{}, tr("Select an object or part first (click it in the picture)."), 5000};
+    const int frame = playback_->frame();
+    const Pose pose = selectionKeyPose(*scene, *object, selection_->part, frame);
+    // A new target's first key goes after its creating line, unless a loop
+    // made it (inside the loop it would be read on every pass) or it is in
+    // another file: then at the end.
+    const CreatedAt* created = document_->locations()->object(selection_->object);
+    const int createdAt =
+        created && created->sameLine == 1 ? lineOf(text, *created, scene->objects[*object].kind) : 0;
+    return {{keyEdit(text, selection_->target(), frame, pose, createdAt)}, {}, 0};
+}
+
+StudioSession::Capture StudioSession::keyCameraHere(const QString& text,
+                                                    const std::optional<Pose>& lookAround) const {
+    const auto scene = document_->scene();
+    const int frame = playback_->frame();
+    const Pose pose = cameraKeyPose(*scene, frame, lookAround);
+    CameraKeyWrite write = cameraKeyWrite(text, *scene, frame, pose);
+    QStringList notes;
+    if (!write.note.isEmpty()) notes << write.note;
+    if (lookAround && scene->camera.lookAt)
+        notes << tr("The camera's /look_at turns it: the key moves the eye, not where it looks.");
+    return {std::move(write.edits), notes.join(u' '), 8000};
+}
+
+}  // namespace f2::viewer

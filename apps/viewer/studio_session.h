@@ -1,0 +1,155 @@
+#pragma once
+/// The studio under the widgets: the open document, the playback clock, the
+/// frames asked of the render controller (coalesced, refined when paused, with
+/// the playback anti-aliasing policy), the selection and the capture edits.
+/// No widgets: the window shows what it says and applies the edits it returns,
+/// and tests drive the editor-to-picture path through it without a window.
+#include <QImage>
+#include <QList>
+#include <QObject>
+#include <QPointF>
+#include <QString>
+#include <QTimer>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "core/render/camera.h"
+#include "core/render/image.h"
+#include "playback_antialias.h"
+#include "render_controller.h"
+#include "scene_locations.h"
+#include "selection.h"
+#include "text_capture.h"
+
+namespace f2::viewer {
+
+class Playback;
+class SceneDocument;
+
+class StudioSession : public QObject {
+    Q_OBJECT
+   public:
+    explicit StudioSession(QObject* parent = nullptr);
+    ~StudioSession() override;
+
+    SceneDocument* document() const { return document_; }
+    Playback* playback() const { return playback_; }
+    RenderController* renderController() const { return controller_.get(); }
+
+    /// The camera a frame is rendered with, given the scene's camera at its
+    /// time: the window's picture size and look-around. Without one, the
+    /// scene's camera at its /camera size.
+    using ViewCamera = std::function<Camera(const Camera& sceneCamera)>;
+    void setViewCamera(ViewCamera view) { viewCamera_ = std::move(view); }
+    /// What the frames show (View › Mode); asks for a frame.
+    void setViewMode(ViewMode mode);
+    ViewMode viewMode() const { return viewMode_; }
+
+    /// While paused, the picture refines: the same frame again with 2x2, then
+    /// kRefinedAntialias x kRefinedAntialias samples. Only the shaded view
+    /// refines: the diagnostic views trace pixel centres.
+    void setRefinement(bool on);
+    bool refinement() const { return refinement_; }
+    /// The frame shown is still to be refined.
+    bool isRefining() const;
+    /// The last step of refinement: what `f2 render --aa 4` computes.
+    static constexpr int kRefinedAntialias = 4;
+    /// The samples of frames rendered while playing: mode, budget, estimates.
+    PlaybackAntialias& playbackAntialias() { return playbackAntialias_; }
+    const PlaybackAntialias& playbackAntialias() const { return playbackAntialias_; }
+    /// The latest frame delivered (time, timings, size); serial 0 before the first.
+    const FrameInfo& shownFrame() const { return shownFrame_; }
+    /// A frame is shown and it is the last one coming: nothing asked, waiting
+    /// or left to refine.
+    bool isFrameSettled() const;
+    /// The current time and `camera`'s view, rendered here and now (Save Frame).
+    Image renderStill(const Camera& camera) const;
+
+    /// Selects what image point `imagePoint` shows in the frame shown when it
+    /// is seen through `camera` (the view at that frame's size), or clears the
+    /// selection on the background. Returns whether something is selected.
+    bool pick(QPointF imagePoint, const Camera& camera);
+    void setSelection(std::optional<Selection> selection);
+    const std::optional<Selection>& selection() const { return selection_; }
+    /// What shows the selection at the frame shown.
+    struct SelectionView {
+        QString label;         ///< the status bar's text: its target and centre
+        Bounds bounds;         ///< to outline in the picture
+        QList<int> keyFrames;  ///< its keys on the timeline (nearest whole frames)
+    };
+    /// Nothing without a selection (also after an edit deleted or renamed it).
+    const std::optional<SelectionView>& selectionView() const { return selectionView_; }
+
+    /// The editor line to select for the selection's creating command, and
+    /// what the status bar says about it (empty: leave it).
+    struct CreatingLine {
+        int line = 0;  ///< 1-based line of `text`; 0 selects nothing
+        QString message;
+    };
+    CreatingLine creatingLine(const QString& text) const;
+
+    /// The edits of one capture command (one undo step) and the status
+    /// bar's note about them (shown for noteMs; empty: none).
+    struct Capture {
+        std::vector<TextEdit> edits;
+        QString note;
+        int noteMs = 0;
+    };
+    /// Set Camera from View: `lookAround` (the view's eye and rotation), else
+    /// the scene camera's own pose, into the `/camera` line of `text`.
+    Capture cameraFromView(const QString& text, const std::optional<Pose>& lookAround) const;
+    /// Key Selection Here: the selection's pose at the current frame as its
+    /// `/key` line in `text`. No edits (and a note) without a selection.
+    Capture keySelectionHere(const QString& text) const;
+    /// Key Camera Here: the camera's `/key` line at the current frame with
+    /// the pose that shows `lookAround`, else the scene camera's own pose
+    /// there (capture_pose.h, camera_key_writer.h).
+    Capture keyCameraHere(const QString& text, const std::optional<Pose>& lookAround) const;
+
+   public slots:
+    /// Renders the current time and view soon (requests made in one event
+    /// loop pass are coalesced into one).
+    void scheduleFrame();
+
+   signals:
+    /// The document has a new good scene; the clock already runs over it
+    /// (`newDocument`: another file, back at frame 0 without a loop).
+    void sceneChanged(bool newDocument);
+    /// A frame came back and is now shownFrame() (selectionView() follows it).
+    void frameShown(const QImage& image, const f2::viewer::FrameInfo& info);
+    /// selection() or selectionView() changed.
+    void selectionChanged();
+
+   private:
+    void onSceneChanged(bool newDocument);
+    void requestFrame();
+    /// Asks for the frame shown again with more samples, if it should refine.
+    void refine();
+    void onFrameReady(const QImage& image, const FrameInfo& info);
+    /// selectionView_ for the frame shown; forgets a selection the scene lost.
+    void updateSelectionView();
+    /// What a request for `scene` asks the bounds of: the selection, if `scene` has it.
+    std::optional<BoundsOf> selectionIn(const SceneDesc& scene) const;
+    /// The line of `text` holding `created` (an object of `kind`), or 0 when
+    /// it is in another file or the text has changed there since the scene parsed.
+    int lineOf(const QString& text, const CreatedAt& created, ObjectKind kind) const;
+
+    SceneDocument* document_ = nullptr;
+    Playback* playback_ = nullptr;
+    ViewCamera viewCamera_;
+    ViewMode viewMode_ = ViewMode::Shaded;
+    bool refinement_ = true;
+    PlaybackAntialias playbackAntialias_;
+    RenderRequest lastRequest_;  // the view the latest request showed, at 1 sample (paused)
+    QTimer frameTimer_;          // coalesces scheduleFrame() calls
+    FrameInfo shownFrame_;
+    std::optional<Selection> selection_;
+    std::optional<SelectionView> selectionView_;
+    // Declared last so it is destroyed first: its worker joins while every
+    // object it could talk to still exists.
+    std::unique_ptr<RenderController> controller_;
+};
+
+}  // namespace f2::viewer

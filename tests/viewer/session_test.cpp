@@ -1,0 +1,157 @@
+// QtTest suite of the studio session without a window (issue 23): the
+// editor's text goes to a picture (text set, scene parsed, frame rendered and
+// refined as the core renders it) and the capture commands write their lines,
+// all driven through StudioSession alone.
+#include <QSignalSpy>
+#include <QTest>
+
+#include "core/anim/frame_builder.h"
+#include "core/render/camera.h"
+#include "core/render/pick.h"
+#include "image_convert.h"
+#include "playback.h"
+#include "scene_document.h"
+#include "studio_session.h"
+#include "test_support.h"
+
+using namespace f2;
+using namespace f2::viewer;
+using namespace f2::viewer::test;
+
+namespace {
+
+/// The text `capture` leaves of `text` (as the window's editor would hold it).
+QString applied(QString text, const StudioSession::Capture& capture) {
+    for (const TextEdit& edit : capture.edits) text = withEdit(text, edit);
+    return text;
+}
+
+/// Sets `text` as the editor would and waits until its refined frame is shown.
+bool showText(StudioSession& session, const QString& text) {
+    session.document()->setText(text);
+    return QTest::qWaitFor(
+        [&] {
+            return !session.document()->isParsing() && session.document()->text() == text &&
+                   session.isFrameSettled();
+        },
+        kWaitMs);
+}
+
+}  // namespace
+
+class SessionTest : public QObject {
+    Q_OBJECT
+   private slots:
+    void initTestCase();
+    void editedTextBecomesThePicture();
+    void keyCameraHereWritesTheCameraKey();
+    void pickNamesTheLineAndKeysTheSelection();
+};
+
+void SessionTest::initTestCase() {
+    QCoreApplication::setOrganizationName("F2StageTest");
+    QCoreApplication::setApplicationName("f2-viewer-session-test");
+}
+
+void SessionTest::editedTextBecomesThePicture() {
+    StudioSession session;
+    QSignalSpy scenes(&session, &StudioSession::sceneChanged);
+    QSignalSpy frames(&session, &StudioSession::frameShown);
+    QVERIFY(showText(session, kSmallScene));
+    QVERIFY(!scenes.isEmpty());
+    QCOMPARE(session.playback()->lastFrame(), 10);
+    // Paused: the frame refines to the last step, which is what `f2 render --aa 4` gives
+    // at the scene's /camera size (no window: the view is the scene camera).
+    const FrameInfo& shown = session.shownFrame();
+    QCOMPARE(shown.antialias, StudioSession::kRefinedAntialias);
+    QCOMPARE(shown.size, QSize(96, 72));
+    const auto last = frames.last();
+    QCOMPARE(last.at(1).value<FrameInfo>().serial, shown.serial);
+    QVERIFY(fromQImage(last.at(0).value<QImage>()) ==
+            coreRender(*session.document()->scene(), 0, 96, 72, StudioSession::kRefinedAntialias));
+
+    // An edit of the same text keeps the time and renders the new scene there.
+    session.playback()->seek(4);
+    QString edited = kSmallScene;
+    edited.replace("/background 20 30 40", "/background 200 30 40");
+    QVERIFY(showText(session, edited));
+    QCOMPARE(session.shownFrame().time, 4.0);
+    QCOMPARE(int(session.document()->scene()->background.r), 200);
+    QVERIFY(fromQImage(frames.last().at(0).value<QImage>()) ==
+            coreRender(*session.document()->scene(), 4, 96, 72, StudioSession::kRefinedAntialias));
+}
+
+void SessionTest::keyCameraHereWritesTheCameraKey() {
+    StudioSession session;
+    QVERIFY(showText(session, kSmallScene));
+    session.playback()->seek(5);
+    const QString text = kSmallScene;
+    // The camera's first key away from frame 0 comes with /key 0 camera at the /camera pose,
+    // both after the /camera line, and a note saying so.
+    const StudioSession::Capture key = session.keyCameraHere(text, std::nullopt);
+    QCOMPARE(key.edits.size(), std::size_t(2));
+    QVERIFY(!key.note.isEmpty());
+    const QStringList lines = applied(text, key).split('\n');
+    QCOMPARE(lines.value(1), QStringLiteral("/key 0 camera 0 0 -10 0 0 0"));
+    QCOMPARE(lines.value(2), QStringLiteral("/key 5 camera 0 0 -10 0 0 0"));
+    QCOMPARE(lines.size(), text.split('\n').size() + 2);
+
+    // A look-around's pose is what the key holds.
+    const Pose view{{1, 2, -9}, {5, 10, 0}};
+    QCOMPARE(applied(text, session.keyCameraHere(text, view)).split('\n').value(2),
+             QStringLiteral("/key 5 camera 1 2 -9 5 10 0"));
+    // Set Camera from View rewrites the /camera line, keeping its size and d.
+    QCOMPARE(applied(text, session.cameraFromView(text, view)).split('\n').value(0),
+             QStringLiteral("/camera 96 72 0.6 1 2 -9 5 10 0"));
+}
+
+void SessionTest::pickNamesTheLineAndKeysTheSelection() {
+    StudioSession session;
+    QVERIFY(showText(session, kSmallScene));
+    const QString text = kSmallScene;
+    // Without a selection there is nothing to key: a note, no edit.
+    const StudioSession::Capture none = session.keySelectionHere(text);
+    QVERIFY(none.edits.empty());
+    QVERIFY(!none.note.isEmpty());
+
+    // The ball at frame 0 is at (-3, 0, 8): pick where the scene camera draws it.
+    const Camera camera = Camera::fromDesc(session.document()->scene()->camera);
+    float px = 0, py = 0;
+    QVERIFY(camera.project({-3, 0, 8}, px, py));
+    QSignalSpy changed(&session, &StudioSession::selectionChanged);
+    QVERIFY(session.pick({px, py}, camera));
+    QCOMPARE(changed.size(), 1);
+    QCOMPARE(session.selection()->target(), QStringLiteral("ball"));
+    QVERIFY(session.selectionView());
+    QCOMPARE(session.selectionView()->keyFrames, (QList<int>{0, 10}));
+    QVERIFY(session.selectionView()->label.startsWith("ball at (-3.0, 0.0, 8.0)"));
+    // Its creating line, /sphere ball, is line 6.
+    QCOMPARE(session.creatingLine(text).line, 6);
+
+    // Keyed at frame 5: halfway along, replacing nothing, after its last key.
+    session.playback()->seek(5);
+    const QStringList lines = applied(text, session.keySelectionHere(text)).split('\n');
+    QCOMPARE(lines.value(8), QStringLiteral("/key 5 ball 0 0 8 0 0 0"));
+
+    // The frames rendered since bring the selection's bounds (no second evaluation on
+    // this thread): the ones evaluating frame 5 gives, and the label follows the ball.
+    QVERIFY(
+        QTest::qWaitFor([&] { return session.isFrameSettled() && session.shownFrame().time == 5; }, kWaitMs));
+    QVERIFY(session.shownFrame().bounds);
+    EvaluatedFrame frame5;
+    evaluateFrame(*session.document()->scene(), 5, frame5);
+    const Bounds expected =
+        selectionBounds(*session.document()->scene(), frame5,
+                        *findObject(*session.document()->scene(), *session.selection()), std::nullopt);
+    QCOMPARE(session.selectionView()->bounds.lo, expected.lo);
+    QCOMPARE(session.selectionView()->bounds.hi, expected.hi);
+    QVERIFY(session.selectionView()->label.startsWith("ball at (0.0, 0.0, 8.0)"));
+
+    // The background clears the selection.
+    QVERIFY(!session.pick({1, 1}, camera));
+    QVERIFY(!session.selection());
+    QVERIFY(!session.selectionView());
+}
+
+QTEST_MAIN(SessionTest)
+#include "session_test.moc"
