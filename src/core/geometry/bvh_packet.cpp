@@ -72,16 +72,17 @@ void intersectPacket(const Bvh& bvh, const EyeRays& rays, Mask active, Float tMi
 namespace {
 /// The nearest-hit traversal of intersectPacket(), from `roots` and then
 /// `moreRoots` (at most kMaxRoots in all); with `kSkips`, a lane does not test
-/// its `skip` primitive (leaf order).
-template <bool kSkips, class Origin, class Direction>
-void nearestHits(const Bvh& bvh, const Rays<Origin, Direction>& rays, Mask active, Float tMin, PacketHit& hit,
-                 std::span<const std::uint32_t> roots, Int skip,
-                 std::span<const std::uint32_t> moreRoots = {}) {
+/// its `skip` primitive (leaf order); with `kMasked`, hidden primitives (SPEC
+/// 10.7, Bvh::rayMask) are passed by. Scenes without a mask compile the check
+/// away (nearestHits picks).
+template <bool kSkips, bool kMasked, class Origin, class Direction>
+void nearestHitsWith(const Bvh& bvh, const Rays<Origin, Direction>& rays, Mask active, Float tMin,
+                     PacketHit& hit, std::span<const std::uint32_t> roots, Int skip,
+                     std::span<const std::uint32_t> moreRoots) {
     const std::span<const Bvh::Node> nodes = bvh.nodes();
     const std::span<const Primitive> ordered = bvh.orderedPrimitives();
     const std::span<const std::uint32_t> original = bvh.originalIndices();
-    // Hidden primitives (SPEC 10.7); null in most scenes.
-    const std::uint8_t* mask = bvh.rayMask().empty() ? nullptr : bvh.rayMask().data();
+    const std::uint8_t* mask = bvh.rayMask().data();
     if (nodes.empty() || (roots.empty() && moreRoots.empty()) || simd::none(active)) return;
     VisitOrder order(rays, active);
     Float bound = nextUp(hit.t);  // primitives are tested up to and including the lanes' nearest hit
@@ -102,7 +103,9 @@ void nearestHits(const Bvh& bvh, const Rays<Origin, Direction>& rays, Mask activ
                 continue;
             }
             for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
-                if (mask && (mask[original[i]] & ray_mask::kHidden)) continue;
+                if constexpr (kMasked) {
+                    if (mask[original[i]] & ray_mask::kHidden) continue;
+                }
                 Mask test = lanes;
                 if constexpr (kSkips) {
                     test = simd::andNot(lanes, skip == Int(std::int32_t(i)));
@@ -126,6 +129,16 @@ void nearestHits(const Bvh& bvh, const Rays<Origin, Direction>& rays, Mask activ
         if (top == 0) return;
         current = stack[--top];
     }
+}
+
+template <bool kSkips, class Origin, class Direction>
+void nearestHits(const Bvh& bvh, const Rays<Origin, Direction>& rays, Mask active, Float tMin, PacketHit& hit,
+                 std::span<const std::uint32_t> roots, Int skip,
+                 std::span<const std::uint32_t> moreRoots = {}) {
+    if (bvh.rayMask().empty())
+        nearestHitsWith<kSkips, false>(bvh, rays, active, tMin, hit, roots, skip, moreRoots);
+    else
+        nearestHitsWith<kSkips, true>(bvh, rays, active, tMin, hit, roots, skip, moreRoots);
 }
 }  // namespace
 
@@ -158,14 +171,14 @@ Mask occludedPacket(const Bvh& bvh, const ParallelRays& rays, Mask active, Float
 }
 
 namespace {
-template <class Origin, class Direction>
-Mask occludedFrom(const Bvh& bvh, const Rays<Origin, Direction>& rays, Mask active, Float tMin, Float tMax,
-                  Int skip, std::span<const std::uint32_t> roots) {
+/// The any-hit traversal of occludedPacket(); with `kMasked`, primitives
+/// with a ray_mask flag (`/no_shadow`, hidden) are passed by.
+template <bool kMasked, class Origin, class Direction>
+Mask occludedFromWith(const Bvh& bvh, const Rays<Origin, Direction>& rays, Mask active, Float tMin,
+                      Float tMax, Int skip, std::span<const std::uint32_t> roots) {
     const std::span<const Bvh::Node> nodes = bvh.nodes();
     const std::span<const Primitive> ordered = bvh.orderedPrimitives();
-    // Primitives shadow rays pass through (SPEC 10.8 `/no_shadow`, 10.7
-    // hidden), by frame index; null in most scenes, which then pay nothing more.
-    const std::uint8_t* passThrough = bvh.rayMask().empty() ? nullptr : bvh.rayMask().data();
+    const std::uint8_t* passThrough = bvh.rayMask().data();
     const std::span<const std::uint32_t> frameIndex = bvh.originalIndices();
     Mask blocked = simd::noLanes();
     if (nodes.empty() || roots.empty() || simd::none(active)) return blocked;
@@ -186,7 +199,9 @@ Mask occludedFrom(const Bvh& bvh, const Rays<Origin, Direction>& rays, Mask acti
                 continue;
             }
             for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
-                if (passThrough && passThrough[frameIndex[i]]) continue;
+                if constexpr (kMasked) {
+                    if (passThrough[frameIndex[i]]) continue;
+                }
                 Mask test = simd::andNot(lanes, skip == Int(std::int32_t(i)));
                 if (simd::none(test)) continue;
                 Float t = tMax;
@@ -200,6 +215,14 @@ Mask occludedFrom(const Bvh& bvh, const Rays<Origin, Direction>& rays, Mask acti
         if (top == 0) return blocked;
         current = stack[--top];
     }
+}
+
+template <class Origin, class Direction>
+Mask occludedFrom(const Bvh& bvh, const Rays<Origin, Direction>& rays, Mask active, Float tMin, Float tMax,
+                  Int skip, std::span<const std::uint32_t> roots) {
+    // Most scenes have no `/no_shadow` and nothing hidden, and pay nothing for them.
+    if (bvh.rayMask().empty()) return occludedFromWith<false>(bvh, rays, active, tMin, tMax, skip, roots);
+    return occludedFromWith<true>(bvh, rays, active, tMin, tMax, skip, roots);
 }
 }  // namespace
 
