@@ -56,32 +56,25 @@ TEST(Glow, IsReadIntoTheMaterialAndNoShadowIntoTheLook) {
         EXPECT_EQ(s.objects[2].appearance[std::size_t(part)].castsShadow, part != int(PartId::Head)) << part;
 }
 
-/// The pixels of `text`'s scene at frame 0.
-Image render(const std::string& text) {
-    const SceneDesc scene = test::sceneFromText(text);
-    Renderer renderer(1);
-    Image image;
-    renderer.render(scene, 0, cameraAt(scene, 0), image);
-    return image;
-}
+using test::renderText;
 
 TEST(Glow, AddsEmitTimesTheColourWhateverTheLights) {
     // No light at all: the sphere's centre pixel is e · C alone.
     const std::string sphere =
         "/camera 32 32 0.5 0 0 -10\n/sphere s 3 0 0 0\n/paint s 200 100 50\n/material s 0 1 0 1 emit 0.5\n";
-    const Rgb8 alone = render(sphere).at(16, 16);
+    const Rgb8 alone = renderText(sphere).at(16, 16);
     EXPECT_EQ(alone.r, toByte(200 / 255.0f * 0.5f));
     EXPECT_EQ(alone.g, toByte(100 / 255.0f * 0.5f));
     EXPECT_EQ(alone.b, toByte(50 / 255.0f * 0.5f));
     // With an ambient light and ka 1: C · (Ia + e), clamped at 1.
-    const Rgb8 lit = render(sphere + "/amb_light 0.7\n/material s 1 1 0 1 emit 0.6\n").at(16, 16);
+    const Rgb8 lit = renderText(sphere + "/amb_light 0.7\n/material s 1 1 0 1 emit 0.6\n").at(16, 16);
     EXPECT_EQ(lit.r, 255);
     EXPECT_EQ(lit.g, toByte(100 / 255.0f * 1.3f));
     EXPECT_EQ(lit.b, toByte(50 / 255.0f * 1.3f));
     // emit 0 is the material without it, byte for byte.
     EXPECT_TRUE(
-        render(sphere + "/amb_light 0.7\n/material s 1 1 0.3 20\n/dir_light 1 1 -1 1\n").pixels ==
-        render(sphere + "/amb_light 0.7\n/material s 1 1 0.3 20 emit 0\n/dir_light 1 1 -1 1\n").pixels);
+        renderText(sphere + "/amb_light 0.7\n/material s 1 1 0.3 20\n/dir_light 1 1 -1 1\n").pixels ==
+        renderText(sphere + "/amb_light 0.7\n/material s 1 1 0.3 20 emit 0\n/dir_light 1 1 -1 1\n").pixels);
 }
 
 // A floor lit from straight above, a box hovering over it: its shadow is below it.
@@ -97,12 +90,12 @@ TEST(NoShadow, TheObjectIsSeenButItsShadowIsGone) {
     float sx = 0, sy = 0, bx = 0, by = 0;
     ASSERT_TRUE(cameraAt(parsed, 0).project(Vec3{0, 0, -10}, sx, sy));  // the floor in the box's shadow
     ASSERT_TRUE(cameraAt(parsed, 0).project(Vec3{0, 65, 0}, bx, by));   // the box's top
-    const Image shadowed = render(scene), shadowless = render(scene + "/no_shadow b\n");
+    const Image shadowed = renderText(scene), shadowless = renderText(scene + "/no_shadow b\n");
     const std::string noBox =
         "/camera 64 48 0.5 0 200 -150 50 0 0\n"
         "/box floor 400 2 400 0 -1 0\n/paint floor 200 200 200\n/material floor 0 1 0 1\n"
         "/amb_light 0.2\n/dir_light 1 0 -1 0\n";
-    const Image empty = render(noBox);
+    const Image empty = renderText(noBox);
     // In shadow with the box; lit as if it were not there without its shadow.
     EXPECT_LT(shadowed.at(int(sx), int(sy)).r, 60);
     EXPECT_EQ(shadowless.at(int(sx), int(sy)), empty.at(int(sx), int(sy)));
@@ -116,8 +109,8 @@ TEST(NoShadow, APartOfAModelAlone) {
     const std::string scene =
         "/camera 96 72 0.5 0 300 -250 50 0 0\n/box floor 600 2 600 0 -1 0\n/material floor 0 1 0 1\n"
         "/robot r 0 105 0\n/amb_light 0.1\n/dir_light 1 1 -1 0\n";
-    const Image all = render(scene), headless = render(scene + "/no_shadow r.head\n"),
-                none = render(scene + "/no_shadow r\n");
+    const Image all = renderText(scene), headless = renderText(scene + "/no_shadow r.head\n"),
+                none = renderText(scene + "/no_shadow r\n");
     std::size_t changedByHead = 0, changedByAll = 0;
     for (std::size_t i = 0; i < all.pixels.size(); ++i) {
         changedByHead += !(all.pixels[i] == headless.pixels[i]);

@@ -10,6 +10,7 @@
 #include "core/anim/light_frame.h"
 #include "core/render/camera.h"
 #include "core/render/renderer.h"
+#include "render_paths.h"
 #include "test_scenes.h"
 
 namespace f2 {
@@ -159,14 +160,7 @@ TEST(NamedLights, AnOvershootingEasingNeverMakesALightNegative) {
     }
 }
 
-/// The pixels of `text`'s scene at time t, from its own camera.
-Image render(const std::string& text, double t) {
-    const SceneDesc scene = test::sceneFromText(text);
-    Renderer renderer(1);
-    Image image;
-    renderer.render(scene, t, cameraAt(scene, t), image);
-    return image;
-}
+using test::renderText;
 
 constexpr const char* kFloorAndBall =
     "/camera 96 64 0.5 0 40 -60 30 0 0\n"
@@ -175,10 +169,10 @@ constexpr const char* kFloorAndBall =
 
 TEST(NamedLights, ANameAloneChangesNoPixel) {
     const std::string base = kFloorAndBall;
-    EXPECT_TRUE(render(base + "/point_light 1 20 30 -10 fade 40 2\n", 0).pixels ==
-                render(base + "/point_light 1 20 30 -10 fade 40 2 name lamp\n", 0).pixels);
-    EXPECT_TRUE(render(base + "/dir_light 0.8 1 -1 1\n", 0).pixels ==
-                render(base + "/dir_light 0.8 1 -1 1 name sun\n", 0).pixels);
+    EXPECT_TRUE(renderText(base + "/point_light 1 20 30 -10 fade 40 2\n", 0).pixels ==
+                renderText(base + "/point_light 1 20 30 -10 fade 40 2 name lamp\n", 0).pixels);
+    EXPECT_TRUE(renderText(base + "/dir_light 0.8 1 -1 1\n", 0).pixels ==
+                renderText(base + "/dir_light 0.8 1 -1 1 name sun\n", 0).pixels);
 }
 
 TEST(NamedLights, ALampCarriedByAMovingBallLightsWhereTheBallIs) {
@@ -186,7 +180,7 @@ TEST(NamedLights, ALampCarriedByAMovingBallLightsWhereTheBallIs) {
     const std::string scene = std::string(kFloorAndBall) +
                               "/point_light 1 0 6 0 fade 10 3 name lamp\n/attach lamp ball\n"
                               "/key 0 ball\n/key 10 ball 30 0 0 0 0 0\n";
-    const Image start = render(scene, 0), end = render(scene, 10);
+    const Image start = renderText(scene, 0), end = renderText(scene, 10);
     EXPECT_FALSE(start.pixels == end.pixels);
     // A floor point right of the ball's start: brighter once the ball is there.
     const SceneDesc parsed = test::sceneFromText(scene);
@@ -225,12 +219,12 @@ TEST(ColourKeys, AMidFrameShowsTheBlendUnrounded) {
     const std::string scene =
         "/camera 32 32 0.5 0 0 -10\n/sphere s 3 0 0 0\n/material s 1 0 0 1\n/amb_light 1\n"
         "/key 0 s colour 255 0 0\n/key 10 s colour 0 0 255\n/key 0 camera d 0.5\n";
-    const Rgb8 mid = render(scene, 5).at(16, 16);
+    const Rgb8 mid = renderText(scene, 5).at(16, 16);
     EXPECT_EQ(mid.g, 0);
     EXPECT_EQ(mid.r, mid.b);
     EXPECT_GE(mid.r, 127);
     EXPECT_LE(mid.r, 128);
-    const Rgb8 start = render(scene, 0).at(16, 16);
+    const Rgb8 start = renderText(scene, 0).at(16, 16);
     EXPECT_EQ(start.r, 255);
     EXPECT_EQ(start.b, 0);
 }
@@ -249,7 +243,7 @@ TEST(ZoomKeys, TheCameraDistanceFollowsItsKeys) {
         for (const Rgb8& p : image.pixels) n += p.r > 0;
         return n;
     };
-    EXPECT_GT(lit(render(text, 10)), 2 * lit(render(text, 0)));
+    EXPECT_GT(lit(renderText(text, 10)), 2 * lit(renderText(text, 0)));
 }
 
 }  // namespace

@@ -1,14 +1,25 @@
 #pragma once
-/// The packet path (Renderer::render) against the single-ray reference path
-/// (traceReference), for tests of shading features.
+/// Pictures of scenes written as text, and the packet path (Renderer::render)
+/// against the single-ray reference path (traceReference), for tests of
+/// shading features.
 #include <gtest/gtest.h>
 
 #include <string>
 
+#include "core/render/camera.h"
 #include "core/render/renderer.h"
 #include "test_scenes.h"
 
 namespace f2::test {
+
+/// The pixels of `text`'s scene at time t (frames), from its own camera at t.
+inline Image renderText(const std::string& text, double t = 0) {
+    const SceneDesc scene = sceneFromText(text);
+    Renderer renderer(2);
+    Image image;
+    renderer.render(scene, t, cameraAt(scene, t), image);
+    return image;
+}
 
 /// The packet path and the reference path give the same bytes for `text`'s
 /// scene at frame 0: materials without highlights (whose pow() differs), so
