@@ -23,6 +23,11 @@ TEST(GlowErrors, EachAtItsPlace) {
     test::expectOnlyError(ball + "/material ball 1 1 0 1 emit -2\n", 2, 29, "emission must be >= 0, got -2");
     test::expectOnlyError(ball + "/material ball 1 1 0 1 0.5 emit x2\n", 2, 33,
                           "expected a number, got 'x2'");
+    // A line far longer than a /material (the fuzzer's find: its last tokens are not stored).
+    std::string longLine = ball + "/material ball";
+    for (int i = 0; i < 24; ++i) longLine += " 1";
+    test::expectOnlyError(longLine + "\n", 2, 1, "'/material' takes 5 or 6 arguments, got 25");
+    test::expectOnlyError(longLine + " emit 1\n", 2, 1, "'/material' takes 5 or 6 arguments, got 27");
     // Without `emit` the count is read as before.
     test::expectOnlyError(ball + "/material ball 1 1 0 1 1 1\n", 2, 1,
                           "'/material' takes 5 or 6 arguments, got 7");

@@ -1133,9 +1133,11 @@ class Parser : private ExpansionSink {
     }
 
     void parseMaterial() {
-        // `emit e` (SPEC 10.8) ends the line when it is there.
+        // `emit e` (SPEC 10.8) ends the line when it is there. Only a line of
+        // 7 or 8 arguments can hold it (and only so long a line has its
+        // tokens stored: kMaxStoredTokens).
         const int n = argCount();
-        const bool emits = n >= 7 && isWordArgument(n - 2) && arg(n - 2) == kEmitWord;
+        const bool emits = (n == 7 || n == 8) && isWordArgument(n - 2) && arg(n - 2) == kEmitWord;
         if (n == 6 && isWordArgument(5) && arg(5) == kEmitWord) {
             error(argPos(5), "'emit' takes a number (the emission e >= 0)");
             return;
