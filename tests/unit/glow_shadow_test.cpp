@@ -21,16 +21,20 @@ TEST(GlowErrors, EachAtItsPlace) {
     const std::string ball = "/sphere ball 1 0 0 0\n";
     test::expectOnlyError(ball + "/material ball 1 1 0 1 emit\n", 2, 24, "'emit' takes a number");
     test::expectOnlyError(ball + "/material ball 1 1 0 1 emit -2\n", 2, 29, "emission must be >= 0, got -2");
-    test::expectOnlyError(ball + "/material ball 1 1 0 1 0.5 emit x2\n", 2, 33, "expected a number, got 'x2'");
+    test::expectOnlyError(ball + "/material ball 1 1 0 1 0.5 emit x2\n", 2, 33,
+                          "expected a number, got 'x2'");
     // Without `emit` the count is read as before.
-    test::expectOnlyError(ball + "/material ball 1 1 0 1 1 1\n", 2, 1, "'/material' takes 5 or 6 arguments, got 7");
-    test::expectOnlyError(ball + "/material ball 1 1 0 1 glow 1\n", 2, 1, "'/material' takes 5 or 6 arguments, got 7");
+    test::expectOnlyError(ball + "/material ball 1 1 0 1 1 1\n", 2, 1,
+                          "'/material' takes 5 or 6 arguments, got 7");
+    test::expectOnlyError(ball + "/material ball 1 1 0 1 glow 1\n", 2, 1,
+                          "'/material' takes 5 or 6 arguments, got 7");
 }
 
 TEST(NoShadowErrors, EachAtItsPlace) {
     test::expectOnlyError("/sphere ball 1 0 0 0\n/no_shadow\n", 2, 1, "'/no_shadow' takes 1 argument, got 0");
     test::expectOnlyError("/sphere ball 1 0 0 0\n/no_shadow ball ball\n", 2, 1, "takes 1 argument, got 2");
-    test::expectOnlyError("/sphere ball 1 0 0 0\n/no_shadow bal\n", 2, 12, "unknown name 'bal' (did you mean 'ball'?)");
+    test::expectOnlyError("/sphere ball 1 0 0 0\n/no_shadow bal\n", 2, 12,
+                          "unknown name 'bal' (did you mean 'ball'?)");
     test::expectOnlyError("/sphere ball 1 0 0 0\n/no_shadow camera\n", 2, 12, "does not apply to the camera");
     test::expectOnlyError("/point_light 1 0 9 0 name lamp\n/no_shadow lamp\n", 2, 12,
                           "'/no_shadow' does not apply to lights: 'lamp' is a light");
@@ -39,7 +43,8 @@ TEST(NoShadowErrors, EachAtItsPlace) {
 
 TEST(Glow, IsReadIntoTheMaterialAndNoShadowIntoTheLook) {
     const SceneDesc s = test::sceneFromText(
-        "/sphere a 1 0 0 0\n/material a 1 1 0 1 emit 2\n/sphere b 1 0 0 0\n/material b 1 1 0 1 0.5 emit 0.25\n"
+        "/sphere a 1 0 0 0\n/material a 1 1 0 1 emit 2\n/sphere b 1 0 0 0\n/material b 1 1 0 1 0.5 emit "
+        "0.25\n"
         "/robot r 0 0 0\n/no_shadow r.head\n/no_shadow a\n/amb_light 1\n");
     EXPECT_EQ(s.objects[0].appearance[0].material.emission, 2.0f);
     EXPECT_EQ(s.objects[0].appearance[0].material.reflection, 0.0f);
@@ -74,8 +79,9 @@ TEST(Glow, AddsEmitTimesTheColourWhateverTheLights) {
     EXPECT_EQ(lit.g, toByte(100 / 255.0f * 1.3f));
     EXPECT_EQ(lit.b, toByte(50 / 255.0f * 1.3f));
     // emit 0 is the material without it, byte for byte.
-    EXPECT_TRUE(render(sphere + "/amb_light 0.7\n/material s 1 1 0.3 20\n/dir_light 1 1 -1 1\n").pixels ==
-                render(sphere + "/amb_light 0.7\n/material s 1 1 0.3 20 emit 0\n/dir_light 1 1 -1 1\n").pixels);
+    EXPECT_TRUE(
+        render(sphere + "/amb_light 0.7\n/material s 1 1 0.3 20\n/dir_light 1 1 -1 1\n").pixels ==
+        render(sphere + "/amb_light 0.7\n/material s 1 1 0.3 20 emit 0\n/dir_light 1 1 -1 1\n").pixels);
 }
 
 // A floor lit from straight above, a box hovering over it: its shadow is below it.
@@ -92,9 +98,10 @@ TEST(NoShadow, TheObjectIsSeenButItsShadowIsGone) {
     ASSERT_TRUE(cameraAt(parsed, 0).project(Vec3{0, 0, -10}, sx, sy));  // the floor in the box's shadow
     ASSERT_TRUE(cameraAt(parsed, 0).project(Vec3{0, 65, 0}, bx, by));   // the box's top
     const Image shadowed = render(scene), shadowless = render(scene + "/no_shadow b\n");
-    const std::string noBox = "/camera 64 48 0.5 0 200 -150 50 0 0\n"
-                              "/box floor 400 2 400 0 -1 0\n/paint floor 200 200 200\n/material floor 0 1 0 1\n"
-                              "/amb_light 0.2\n/dir_light 1 0 -1 0\n";
+    const std::string noBox =
+        "/camera 64 48 0.5 0 200 -150 50 0 0\n"
+        "/box floor 400 2 400 0 -1 0\n/paint floor 200 200 200\n/material floor 0 1 0 1\n"
+        "/amb_light 0.2\n/dir_light 1 0 -1 0\n";
     const Image empty = render(noBox);
     // In shadow with the box; lit as if it were not there without its shadow.
     EXPECT_LT(shadowed.at(int(sx), int(sy)).r, 60);
@@ -121,10 +128,11 @@ TEST(NoShadow, APartOfAModelAlone) {
 }
 
 TEST(GlowAndNoShadow, PacketPathIdenticalToTheReference) {
-    const std::string scene = std::string(kBoxOverFloor) +
-                              "/sphere bulb 15 60 80 30\n/paint bulb 255 230 150\n/material bulb 0 0 0 1 emit 1.2\n"
-                              "/no_shadow bulb\n/point_light 0.8 60 80 30\n/no_shadow b\n"
-                              "/robot r -80 105 40\n/no_shadow r.lhand\n/material r 0.2 1 0 1 0.3 emit 0.1\n";
+    const std::string scene =
+        std::string(kBoxOverFloor) +
+        "/sphere bulb 15 60 80 30\n/paint bulb 255 230 150\n/material bulb 0 0 0 1 emit 1.2\n"
+        "/no_shadow bulb\n/point_light 0.8 60 80 30\n/no_shadow b\n"
+        "/robot r -80 105 40\n/no_shadow r.lhand\n/material r 0.2 1 0 1 0.3 emit 0.1\n";
     test::expectIdenticalPaths(scene, "glow, a light inside a shadowless bulb, a shadowless part");
     // The bulb holds the light inside it and still lights the floor.
     const SceneDesc parsed = test::sceneFromText(scene);

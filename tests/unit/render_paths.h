@@ -22,7 +22,8 @@ inline void expectIdenticalPaths(const std::string& text, const std::string& wha
     traceReference(renderer.frame(), camera, reference);
     ASSERT_EQ(fast.pixels.size(), reference.pixels.size());
     std::size_t differing = 0;
-    for (std::size_t i = 0; i < fast.pixels.size(); ++i) differing += !(fast.pixels[i] == reference.pixels[i]);
+    for (std::size_t i = 0; i < fast.pixels.size(); ++i)
+        differing += !(fast.pixels[i] == reference.pixels[i]);
     EXPECT_EQ(differing, 0u) << what;
 }
 
