@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cerrno>
+#include <mutex>
 #include <string>
 
 #include "lsp/message_reader.h"
@@ -29,10 +30,27 @@ bool writeAll(int fd, std::string_view bytes) {
 }  // namespace
 
 int runServer(int in, int out, std::FILE* log) {
-    Server server([log](std::string_view line) {
-        std::fprintf(log, "f2 lsp: %.*s\n", static_cast<int>(line.size()), line.data());
-        std::fflush(log);
-    });
+    // Two threads write to `out`: this one its replies, the server's worker
+    // its notifications (publishDiagnostics) as analyses finish, while this
+    // one may be blocked in read(). Each whole framed message is written under
+    // `outMutex`, so messages never interleave. Made before the server, which
+    // joins its worker when destroyed: the worker never writes after this
+    // function returns.
+    std::mutex outMutex;
+    bool outClosed = false;  // under outMutex: a write failed, the client is gone
+    auto write = [&](std::string_view body) {
+        const std::lock_guard lock(outMutex);
+        if (!outClosed && !writeAll(out, frameMessage(body))) outClosed = true;
+        return !outClosed;
+    };
+    Server::Options options;
+    options.notify = [&](std::string body) { write(body); };
+    Server server(
+        [log](std::string_view line) {
+            std::fprintf(log, "f2 lsp: %.*s\n", static_cast<int>(line.size()), line.data());
+            std::fflush(log);
+        },
+        std::move(options));
     MessageReader reader;
     std::array<char, 1 << 16> buffer;
     for (;;) {
@@ -47,7 +65,7 @@ int runServer(int in, int out, std::FILE* log) {
                 continue;
             }
             for (const std::string& reply : server.handle(item.text)) {
-                if (!writeAll(out, frameMessage(reply))) return server.exitCode();
+                if (!write(reply)) return server.exitCode();
             }
             if (server.exited()) return server.exitCode();
         }
