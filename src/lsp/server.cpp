@@ -311,7 +311,7 @@ void Server::waitUntilIdle() {
 void Server::send(std::vector<std::string> messages) {
     if (messages.empty()) return;
     if (options_.notify) {
-        for (std::string& m : messages) options_.notify(std::move(m));
+        options_.notify(std::move(messages));
         return;
     }
     const std::lock_guard lock(mutex_);

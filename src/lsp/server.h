@@ -49,10 +49,12 @@ class Server {
 
     struct Options {
         /// Receives the notifications the worker sends (publishDiagnostics),
-        /// on the worker's thread, as each analysis finishes. Unset: the server
-        /// is synchronous: handle() waits after each notification until the
-        /// worker is idle and returns what it sent (tests, the fuzzer).
-        std::function<void(std::string)> notify;
+        /// on the worker's thread, as analyses finish: those of one round
+        /// together, in order, to be written together (a client that has read
+        /// one of them has the others before any later reply). Unset: the
+        /// server is synchronous: handle() waits after each notification until
+        /// the worker is idle and returns what it sent (tests, the fuzzer).
+        std::function<void(std::vector<std::string>)> notify;
         /// A test seam: called on the worker before each analysis with the
         /// document's URI and version (a test blocks it to hold a parse).
         std::function<void(const std::string&, int)> beforeAnalysis;

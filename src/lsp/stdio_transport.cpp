@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <mutex>
 #include <string>
+#include <vector>
 
 #include "lsp/message_reader.h"
 #include "lsp/server.h"
@@ -32,19 +33,23 @@ bool writeAll(int fd, std::string_view bytes) {
 int runServer(int in, int out, std::FILE* log) {
     // Two threads write to `out`: this one its replies, the server's worker
     // its notifications (publishDiagnostics) as analyses finish, while this
-    // one may be blocked in read(). Each whole framed message is written under
-    // `outMutex`, so messages never interleave. Made before the server, which
+    // one may be blocked in read(). Whole framed messages are written under
+    // `outMutex` (a reply's, or a round's notifications, together), so
+    // messages never interleave. Made before the server, which
     // joins its worker when destroyed: the worker never writes after this
     // function returns.
     std::mutex outMutex;
     bool outClosed = false;  // under outMutex: a write failed, the client is gone
-    auto write = [&](std::string_view body) {
+    auto write = [&](const std::vector<std::string>& bodies) {
         const std::lock_guard lock(outMutex);
-        if (!outClosed && !writeAll(out, frameMessage(body))) outClosed = true;
+        for (const std::string& body : bodies) {
+            if (!outClosed && !writeAll(out, frameMessage(body))) outClosed = true;
+        }
         return !outClosed;
     };
     Server::Options options;
-    options.notify = [&](std::string body) { write(body); };
+    // A round's notifications in one go: a client that has read one has them all.
+    options.notify = [&](std::vector<std::string> bodies) { write(bodies); };
     Server server(
         [log](std::string_view line) {
             std::fprintf(log, "f2 lsp: %.*s\n", static_cast<int>(line.size()), line.data());
@@ -64,9 +69,7 @@ int runServer(int in, int out, std::FILE* log) {
                 server.logProblem(item.text);
                 continue;
             }
-            for (const std::string& reply : server.handle(item.text)) {
-                if (!write(reply)) return server.exitCode();
-            }
+            if (!write(server.handle(item.text))) return server.exitCode();
             if (server.exited()) return server.exitCode();
         }
     }

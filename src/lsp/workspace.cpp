@@ -138,7 +138,8 @@ std::string Workspace::rootOf(const std::string& uri) const {
     return including.empty() ? uri : including.front();
 }
 
-std::vector<std::string> Workspace::refresh(const std::string& changed, const std::set<std::string>& alsoMoved) {
+std::vector<std::string> Workspace::refresh(const std::string& changed,
+                                            const std::set<std::string>& alsoMoved) {
     std::vector<std::string> first;  // the changed documents: published first
     std::set<std::string> done, check;
     // The documents whose scene read the changed file are read again.
@@ -215,7 +216,7 @@ void Workspace::publish(const std::string& uri, std::vector<std::string>& out) {
 }
 
 void Workspace::unpublishOthers(const std::string& uri, const std::set<std::string>& keep,
-                             std::vector<std::string>& out) {
+                                std::vector<std::string>& out) {
     const auto it = publishedOthers_.find(uri);
     if (it == publishedOthers_.end()) return;
     // An include fixed or removed: its old errors must not stay on screen.
