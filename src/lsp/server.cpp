@@ -340,8 +340,8 @@ void Server::work() {
 
         std::vector<std::string> out, analysed;
         std::set<std::string> seen;
-        try {
-            for (Job& job : jobs) {
+        for (Job& job : jobs) {
+            try {
                 std::vector<std::string> uris;
                 switch (job.kind) {
                     case Job::Kind::Text:
@@ -357,9 +357,10 @@ void Server::work() {
                 for (std::string& uri : uris) {
                     if (seen.insert(uri).second) analysed.push_back(std::move(uri));
                 }
+            } catch (const std::exception& e) {
+                // Its document keeps its last analysis (or, never analysed, answers requests with an error).
+                logProblem(std::string("an analysis failed: ") + e.what());
             }
-        } catch (const std::exception& e) {
-            logProblem(std::string("an analysis failed: ") + e.what());
         }
 
         std::vector<std::string> current;
