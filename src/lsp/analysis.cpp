@@ -97,9 +97,26 @@ Analysis analyze(std::string uri, TextDocument document, const SourceOverlay& op
 std::string Analysis::uriOf(std::string_view file) const {
     if (file == path) return uri;
     if (openUris) {
-        if (const auto open = openUris->find(file); open != openUris->end()) return open->second;
+        if (std::optional<std::string> open = openUris->find(file)) return std::move(*open);
     }
     return uriFromPath(file);
+}
+
+std::optional<std::string> OpenUris::find(std::string_view path) const {
+    const std::lock_guard lock(mutex_);
+    const auto it = uris_.find(path);
+    if (it == uris_.end()) return std::nullopt;
+    return it->second;
+}
+
+void OpenUris::set(const std::string& path, const std::string& uri) {
+    const std::lock_guard lock(mutex_);
+    uris_[path] = uri;
+}
+
+void OpenUris::erase(const std::string& path) {
+    const std::lock_guard lock(mutex_);
+    uris_.erase(path);
 }
 
 const TextDocument* Analysis::textOf(std::string_view file) const {

@@ -6,6 +6,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -25,6 +26,22 @@ std::string pathFromUri(std::string_view uri);
 /// A `file://` URI for an absolute path.
 std::string uriFromPath(std::string_view path);
 
+/// The URIs the client gave open documents, by path (a client may spell a
+/// path differently from uriFromPath). One per server, shared by every
+/// analysis it makes and kept current: the analysing thread writes it while
+/// requests read it on the message thread, so each call locks.
+class OpenUris {
+   public:
+    /// The URI of the open document whose file is `path`, if one is open.
+    std::optional<std::string> find(std::string_view path) const;
+    void set(const std::string& path, const std::string& uri);
+    void erase(const std::string& path);
+
+   private:
+    mutable std::mutex mutex_;
+    std::map<std::string, std::string, std::less<>> uris_;
+};
+
 /// A document and the scene it belongs to. The scene is the document itself,
 /// or (`root`) an open document that includes it: then names and variables
 /// of the including file are known here, and errors are those of the file as
@@ -38,10 +55,9 @@ struct Analysis {
     SymbolIndex index;
     SceneSources sources;  ///< the scene's files from `root`, their variables in reading order
     int self = 0;          ///< this document in sources.files
-    /// The URIs the client gave open documents, by path (a client may spell a
-    /// path differently from uriFromPath); shared by every document of a
-    /// server, which keeps it current. Null: none known.
-    std::shared_ptr<const std::map<std::string, std::string, std::less<>>> openUris;
+    /// The URIs of open documents, shared by every document of a server.
+    /// Null: none known.
+    std::shared_ptr<const OpenUris> openUris;
 
     /// True when a place is in this document (not in an included file).
     bool inDocument(const SourceLoc& loc) const { return loc.file == path; }

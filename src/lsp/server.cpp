@@ -2,16 +2,13 @@
 
 #include <algorithm>
 #include <limits>
+#include <set>
 
 #include "lsp/features.h"
 
 namespace f2::lsp {
 
 namespace {
-
-std::string notification(std::string_view method, Json params) {
-    return dumpJson({{"jsonrpc", "2.0"}, {"method", method}, {"params", std::move(params)}});
-}
 
 std::string response(const Json& id, Json result) {
     return dumpJson({{"jsonrpc", "2.0"}, {"id", id}, {"result", std::move(result)}});
@@ -111,10 +108,23 @@ std::string applyChange(const std::string& text, const Json& change) {
     return text.substr(0, from) + newText + text.substr(to);
 }
 
-Server::Server(std::function<void(std::string_view)> log)
-    : log_(std::move(log)), openUris_(std::make_shared<std::map<std::string, std::string, std::less<>>>()) {}
+Server::Server(std::function<void(std::string_view)> log, Options options)
+    : log_(std::move(log)),
+      options_(std::move(options)),
+      workspace_(options_.beforeAnalysis),
+      worker_([this] { work(); }) {}
+
+Server::~Server() {
+    {
+        const std::lock_guard lock(mutex_);
+        stop_ = true;
+    }
+    changed_.notify_all();
+    worker_.join();
+}
 
 void Server::logProblem(std::string_view problem) const {
+    const std::lock_guard lock(logMutex_);
     if (log_) log_(problem);
 }
 
@@ -143,9 +153,16 @@ std::vector<std::string> Server::handle(std::string_view body) {
 
     if (!message.contains("id")) {
         try {
-            dispatchNotification(method, params, out);
+            dispatchNotification(method, params);
         } catch (const std::exception& e) {
             logProblem("notification '" + method + "' ignored: " + e.what());
+        }
+        if (!options_.notify) {
+            // Synchronous: what the worker sends for it is returned.
+            waitUntilIdle();
+            const std::lock_guard lock(mutex_);
+            out = std::move(outbox_);
+            outbox_.clear();
         }
         return out;
     }
@@ -183,26 +200,39 @@ Json Server::dispatchRequest(const std::string& method, const Json& params) {
         shutdown_ = true;
         return nullptr;
     }
-    if (method == "textDocument/completion") return completion(document(params), positionOf(params));
-    if (method == "textDocument/hover") return hover(document(params), positionOf(params));
-    if (method == "textDocument/definition") return definition(document(params), positionOf(params));
+    if (method == "textDocument/formatting") {
+        // From the newest text, not the newest analysis: the edits must apply to what the client has.
+        const auto it = texts_.find(uriOf(params));
+        if (it == texts_.end()) throw RequestError(kInvalidParams, "the document is not open");
+        Analysis current;
+        current.uri = it->first;
+        current.document = TextDocument(it->second.text, it->second.version);
+        return formatKeys(current);
+    }
+    static const std::set<std::string, std::less<>> kOnDocuments = {
+        "textDocument/completion",     "textDocument/hover",         "textDocument/definition",
+        "textDocument/references",     "textDocument/prepareRename", "textDocument/rename",
+        "textDocument/documentSymbol", "textDocument/foldingRange"};
+    if (!kOnDocuments.contains(method))
+        throw RequestError(kMethodNotFound, "unknown method '" + method + "'");
+    // Held while the feature reads it: the worker may make a newer one meanwhile.
+    const std::shared_ptr<const Analysis> a = document(params);
+    if (method == "textDocument/documentSymbol") return documentSymbols(*a);
+    if (method == "textDocument/foldingRange") return foldingRanges(*a);
+    const Position at = positionOf(params);
+    if (method == "textDocument/completion") return completion(*a, at);
+    if (method == "textDocument/hover") return hover(*a, at);
+    if (method == "textDocument/definition") return definition(*a, at);
     if (method == "textDocument/references") {
         bool withDeclaration = true;
         if (params.contains("context")) withDeclaration = params["context"].value("includeDeclaration", true);
-        return references(document(params), positionOf(params), withDeclaration);
+        return references(*a, at, withDeclaration);
     }
-    if (method == "textDocument/prepareRename") return prepareRename(document(params), positionOf(params));
-    if (method == "textDocument/rename") {
-        return rename(document(params), positionOf(params), params.at("newName").get<std::string>());
-    }
-    if (method == "textDocument/documentSymbol") return documentSymbols(document(params));
-    if (method == "textDocument/foldingRange") return foldingRanges(document(params));
-    if (method == "textDocument/formatting") return formatKeys(document(params));
-    throw RequestError(kMethodNotFound, "unknown method '" + method + "'");
+    if (method == "textDocument/prepareRename") return prepareRename(*a, at);
+    return rename(*a, at, params.at("newName").get<std::string>());
 }
 
-void Server::dispatchNotification(const std::string& method, const Json& params,
-                                  std::vector<std::string>& out) {
+void Server::dispatchNotification(const std::string& method, const Json& params) {
     if (method == "exit") {
         exited_ = true;
         return;
@@ -210,236 +240,149 @@ void Server::dispatchNotification(const std::string& method, const Json& params,
     if (!initialized_) return;  // the protocol says: drop notifications before initialize
     if (method == "textDocument/didOpen") {
         const Json& doc = params.at("textDocument");
-        open(doc.at("uri").get<std::string>(), doc.at("text").get<std::string>(), intMember(doc, "version"),
-             out);
+        std::string uri = doc.at("uri").get<std::string>();
+        Text& t = texts_[uri];
+        t = {doc.at("text").get<std::string>(), intMember(doc, "version")};
+        queue({Job::Kind::Text, std::move(uri), t.text, t.version});
     } else if (method == "textDocument/didChange") {
-        const std::string uri = uriOf(params);
-        const auto it = documents_.find(uri);
-        if (it == documents_.end())
-            throw RequestError(kInvalidParams, "a change of a document that is not open");
-        std::string text = it->second.document.text();
+        std::string uri = uriOf(params);
+        const auto it = texts_.find(uri);
+        if (it == texts_.end()) throw RequestError(kInvalidParams, "a change of a document that is not open");
+        std::string text = it->second.text;
         for (const Json& change : params.at("contentChanges")) text = applyChange(text, change);
-        open(uri, std::move(text), intMember(params.at("textDocument"), "version"), out);
+        const int version = intMember(params.at("textDocument"), "version");
+        it->second = {std::move(text), version};
+        queue({Job::Kind::Text, std::move(uri), it->second.text, version});
     } else if (method == "textDocument/didClose") {
-        close(uriOf(params), out);
+        std::string uri = uriOf(params);
+        if (texts_.erase(uri) == 0) return;
+        {
+            // Requests on it fail from now on, whatever the worker is doing.
+            const std::lock_guard lock(mutex_);
+            finished_.erase(uri);
+        }
+        queue({Job::Kind::Close, std::move(uri), {}, 0});
     } else if (method == "textDocument/didSave") {
         // An included file may have changed: every open scene is read again.
-        refresh({}, {}, out);
+        queue({Job::Kind::RefreshAll, {}, {}, 0});
     } else if (!method.starts_with("$/") && method != "initialized" &&
                method != "workspace/didChangeConfiguration") {
         logProblem("unknown notification '" + method + "' ignored");
     }
 }
 
-const Analysis& Server::document(const Json& params) const {
-    const auto it = documents_.find(uriOf(params));
-    if (it == documents_.end()) throw RequestError(kInvalidParams, "the document is not open");
+std::shared_ptr<const Analysis> Server::document(const Json& params) {
+    const std::string uri = uriOf(params);
+    if (!texts_.contains(uri)) throw RequestError(kInvalidParams, "the document is not open");
+    std::unique_lock lock(mutex_);
+    // Only a document never analysed yet is waited for: until its text queued
+    // (and any newer one) has been through the worker.
+    changed_.wait(lock, [&] { return finished_.contains(uri) || (!busy_ && !queuedAt_.contains(uri)); });
+    const auto it = finished_.find(uri);
+    if (it == finished_.end()) throw RequestError(kInternalError, "the document could not be analysed");
     return it->second;
 }
 
-void Server::open(std::string uri, std::string text, int version, std::vector<std::string>& out) {
-    const std::string path = pathFromUri(uri);
-    documents_[uri].document = TextDocument(std::move(text), version);
-    urisByPath_[path].insert(uri);
-    syncPath(path);
-    refresh(path, {}, out);
-}
-
-void Server::close(const std::string& uri, std::vector<std::string>& out) {
-    if (documents_.erase(uri) == 0) return;
-    const std::string path = pathFromUri(uri);
-    roots_.erase(uri);
-    // The documents its includes reached may belong to another scene now.
-    const std::set<std::string> reached = unindex(uri);
-    links_.erase(uri);
-    if (auto it = urisByPath_.find(path); it != urisByPath_.end()) {
-        it->second.erase(uri);
-        if (it->second.empty()) urisByPath_.erase(it);
+void Server::queue(Job job) {
+    {
+        const std::lock_guard lock(mutex_);
+        if (job.kind == Job::Kind::RefreshAll) {
+            // One queued refresh reads everything anyway.
+            if (!queued_.empty() && queued_.back().kind == Job::Kind::RefreshAll) return;
+            queued_.push_back(std::move(job));
+        } else if (const auto at = queuedAt_.find(job.uri); at != queuedAt_.end() &&
+                                                            queued_[at->second].kind == Job::Kind::Text &&
+                                                            job.kind == Job::Kind::Text) {
+            // A newer text replaces the one not analysed yet, in its place.
+            queued_[at->second] = std::move(job);
+        } else {
+            queuedAt_[job.uri] = queued_.size();
+            queued_.push_back(std::move(job));
+        }
     }
-    syncPath(path);
-    out.push_back(
-        notification("textDocument/publishDiagnostics", {{"uri", uri}, {"diagnostics", Json::array()}}));
-    unpublishOthers(uri, {}, out);
-    publishedOthers_.erase(uri);
-    // Scenes that include it read it from disk again.
-    refresh(path, reached, out);
+    changed_.notify_all();
 }
 
-void Server::syncPath(const std::string& path) {
-    const auto it = urisByPath_.find(path);
-    if (it == urisByPath_.end()) {
-        texts_.erase(path);
-        openUris_->erase(path);
+void Server::waitUntilIdle() {
+    std::unique_lock lock(mutex_);
+    changed_.wait(lock, [&] { return queued_.empty() && !busy_; });
+}
+
+void Server::send(std::vector<std::string> messages) {
+    if (messages.empty()) return;
+    if (options_.notify) {
+        options_.notify(std::move(messages));
         return;
     }
-    const std::string& uri = *it->second.rbegin();
-    texts_[path] = documents_.at(uri).document.text();
-    (*openUris_)[path] = uri;
+    const std::lock_guard lock(mutex_);
+    for (std::string& m : messages) outbox_.push_back(std::move(m));
 }
 
-void Server::addDocumentsOf(const std::set<std::string>& paths, std::set<std::string>& to) const {
-    for (const std::string& path : paths) {
-        if (const auto it = urisByPath_.find(path); it != urisByPath_.end())
-            to.insert(it->second.begin(), it->second.end());
-    }
-}
+// The worker. Each round takes every queued job at once (so texts typed
+// while the previous round ran are analysed together, each document's newest
+// only), runs them through the workspace without the lock, then, under the
+// lock, keeps the analyses whose document has no newer job queued by now:
+// those become what requests see and are published; the others are stale and
+// dropped (the newer job analyses them again next round). The message thread
+// never touches the workspace; the worker never touches texts_; they share
+// only the queue, finished_, the outbox and the flags, under mutex_, and the
+// immutable analyses (shared_ptr<const Analysis>).
+void Server::work() {
+    std::unique_lock lock(mutex_);
+    for (;;) {
+        changed_.wait(lock, [&] { return stop_ || !queued_.empty(); });
+        if (stop_) return;
+        std::deque<Job> jobs;
+        jobs.swap(queued_);
+        queuedAt_.clear();
+        busy_ = true;
+        lock.unlock();
 
-std::set<std::string> Server::unindex(const std::string& uri) {
-    const auto it = links_.find(uri);
-    if (it == links_.end()) return {};
-    auto forget = [&](std::map<std::string, std::set<std::string>>& reverse,
-                      const std::set<std::string>& paths) {
-        for (const std::string& path : paths) {
-            const auto entry = reverse.find(path);
-            if (entry == reverse.end()) continue;
-            entry->second.erase(uri);
-            if (entry->second.empty()) reverse.erase(entry);
-        }
-    };
-    forget(includedBy_, it->second.includes);
-    forget(readBy_, it->second.reads);
-    Links old = std::move(it->second);
-    it->second = {};
-    return std::move(old.includes);
-}
-
-std::set<std::string> Server::index(const std::string& uri) {
-    std::set<std::string> before = unindex(uri);
-    const Analysis& a = documents_.at(uri);
-    Links& links = links_[uri];
-    const std::vector<bool> reached = a.sources.reachableFrom(a.self);
-    for (std::size_t i = 0; i < a.sources.files.size(); ++i) {
-        const std::string& file = a.sources.files[i].path;
-        if (file == a.path) continue;
-        links.reads.insert(file);
-        if (reached[i]) links.includes.insert(file);
-    }
-    for (const std::string& file : a.result.files) {
-        if (file != a.path) links.reads.insert(file);
-    }
-    for (const std::string& file : links.includes) includedBy_[file].insert(uri);
-    for (const std::string& file : links.reads) readBy_[file].insert(uri);
-    return before;
-}
-
-void Server::reanalyse(const std::string& uri, const std::string& root) {
-    Analysis& a = documents_.at(uri);
-    a = analyze(uri, TextDocument(a.document.text(), a.document.version()), texts_,
-                root == uri ? std::string() : pathFromUri(root));
-    a.openUris = openUris_;
-    roots_[uri] = root;
-}
-
-std::string Server::rootOf(const std::string& uri) const {
-    // The documents that include it (and that it does not include: in a cycle
-    // each is its own scene); of those, one that no other includes.
-    const auto reaching = includedBy_.find(pathFromUri(uri));
-    if (reaching == includedBy_.end()) return uri;
-    const auto ownLinks = links_.find(uri);
-    const std::set<std::string> none;
-    const std::set<std::string>& own = ownLinks != links_.end() ? ownLinks->second.includes : none;
-    std::vector<std::string> including;
-    for (const std::string& other : reaching->second) {
-        if (other != uri && !own.contains(pathFromUri(other))) including.push_back(other);
-    }
-    for (const std::string& candidate : including) {
-        const std::string candidatePath = pathFromUri(candidate);
-        const bool included = std::any_of(including.begin(), including.end(), [&](const std::string& o) {
-            return o != candidate && links_.at(o).includes.contains(candidatePath);
-        });
-        if (!included) return candidate;
-    }
-    return including.empty() ? uri : including.front();
-}
-
-void Server::refresh(const std::string& changed, const std::set<std::string>& alsoMoved,
-                     std::vector<std::string>& out) {
-    std::vector<std::string> first;  // the changed documents: published first
-    std::set<std::string> done, check;
-    // The documents whose scene read the changed file are read again.
-    std::set<std::string> reading;
-    if (changed.empty()) {
-        for (const auto& [uri, a] : documents_) reading.insert(uri);
-    } else if (const auto it = readBy_.find(changed); it != readBy_.end()) {
-        reading = it->second;
-    }
-    check = reading;
-    addDocumentsOf(alsoMoved, check);
-    // The changed document first, in its old scene: its includes may have changed.
-    if (const auto it = urisByPath_.find(changed); !changed.empty() && it != urisByPath_.end()) {
-        for (const std::string& uri : it->second) {
-            const auto old = roots_.find(uri);
-            reanalyse(uri, old != roots_.end() && documents_.contains(old->second) ? old->second : uri);
-            const std::set<std::string> before = index(uri);
-            // The documents its includes reach, before and after, may move to or from its scene.
-            addDocumentsOf(before, check);
-            addDocumentsOf(links_.at(uri).includes, check);
-            check.insert(uri);
-            done.insert(uri);
-            first.push_back(uri);
-        }
-    }
-    // Then the scenes of the documents looked at, from the index as it is; a
-    // document whose includes change on the way (a file it reaches changed)
-    // is looked at again with those it reaches, for a few rounds at most.
-    constexpr int kMaxRounds = 4;
-    std::set<std::string> toPublish;
-    for (int round = 0; round < kMaxRounds && !check.empty(); ++round) {
-        std::vector<std::pair<std::string, std::string>> work;  // URI, its scene
-        for (const std::string& uri : check) {
-            if (!documents_.contains(uri)) continue;
-            std::string root = rootOf(uri);
-            const auto old = roots_.find(uri);
-            const bool moved = old == roots_.end() || old->second != root;
-            if (!moved && (!reading.contains(uri) || done.contains(uri))) continue;
-            work.emplace_back(uri, std::move(root));
-        }
-        check.clear();
-        for (const auto& [uri, root] : work) {
-            reanalyse(uri, root);
-            const std::set<std::string> before = index(uri);
-            if (before != links_.at(uri).includes) {
-                // Its own scene too: a cycle through it may be gone.
-                check.insert(uri);
-                addDocumentsOf(before, check);
-                addDocumentsOf(links_.at(uri).includes, check);
+        std::vector<std::string> out, analysed;
+        std::set<std::string> seen;
+        for (Job& job : jobs) {
+            try {
+                std::vector<std::string> uris;
+                switch (job.kind) {
+                    case Job::Kind::Text:
+                        uris = workspace_.open(std::move(job.uri), std::move(job.text), job.version);
+                        break;
+                    case Job::Kind::Close:
+                        uris = workspace_.close(job.uri, out);
+                        break;
+                    case Job::Kind::RefreshAll:
+                        uris = workspace_.refreshAll();
+                        break;
+                }
+                for (std::string& uri : uris) {
+                    if (seen.insert(uri).second) analysed.push_back(std::move(uri));
+                }
+            } catch (const std::exception& e) {
+                // Its document keeps its last analysis (or, never analysed, answers requests with an error).
+                logProblem(std::string("an analysis failed: ") + e.what());
             }
-            done.insert(uri);
-            toPublish.insert(uri);
         }
-    }
-    for (const std::string& uri : first) {
-        toPublish.erase(uri);
-        publish(documents_.at(uri), out);
-    }
-    for (const std::string& uri : toPublish) publish(documents_.at(uri), out);
-}
 
-void Server::publish(const Analysis& a, std::vector<std::string>& out) {
-    std::set<std::string> others;
-    for (Json& params : publishDiagnostics(a)) {
-        const std::string uri = params["uri"].get<std::string>();
-        if (uri != a.uri) {
-            // An open document publishes its own (as the scene it belongs to reads it).
-            if (documents_.contains(uri)) continue;
-            others.insert(uri);
+        std::vector<std::string> current;
+        lock.lock();
+        for (std::string& uri : analysed) {
+            if (queuedAt_.contains(uri)) continue;  // stale: a newer text (or its closing) is queued
+            std::shared_ptr<const Analysis> a = workspace_.analysis(uri);
+            if (!a) continue;  // closed since
+            finished_[uri] = std::move(a);
+            current.push_back(std::move(uri));
         }
-        out.push_back(notification("textDocument/publishDiagnostics", std::move(params)));
-    }
-    unpublishOthers(a.uri, others, out);
-    publishedOthers_[a.uri] = std::move(others);
-}
-
-void Server::unpublishOthers(const std::string& uri, const std::set<std::string>& keep,
-                             std::vector<std::string>& out) {
-    const auto it = publishedOthers_.find(uri);
-    if (it == publishedOthers_.end()) return;
-    // An include fixed or removed: its old errors must not stay on screen.
-    for (const std::string& other : it->second) {
-        if (keep.contains(other) || documents_.contains(other)) continue;
-        out.push_back(notification("textDocument/publishDiagnostics",
-                                   {{"uri", other}, {"diagnostics", Json::array()}}));
+        lock.unlock();
+        // Requests may see the new analyses before their diagnostics are out: never the other way round.
+        try {
+            for (const std::string& uri : current) workspace_.publish(uri, out);
+        } catch (const std::exception& e) {
+            logProblem(std::string("publishing diagnostics failed: ") + e.what());
+        }
+        send(std::move(out));
+        lock.lock();
+        busy_ = false;
+        changed_.notify_all();
     }
 }
-
 }  // namespace f2::lsp

@@ -4,7 +4,9 @@
 
 #include <array>
 #include <cerrno>
+#include <mutex>
 #include <string>
+#include <vector>
 
 #include "lsp/message_reader.h"
 #include "lsp/server.h"
@@ -29,10 +31,31 @@ bool writeAll(int fd, std::string_view bytes) {
 }  // namespace
 
 int runServer(int in, int out, std::FILE* log) {
-    Server server([log](std::string_view line) {
-        std::fprintf(log, "f2 lsp: %.*s\n", static_cast<int>(line.size()), line.data());
-        std::fflush(log);
-    });
+    // Two threads write to `out`: this one its replies, the server's worker
+    // its notifications (publishDiagnostics) as analyses finish, while this
+    // one may be blocked in read(). Whole framed messages are written under
+    // `outMutex` (a reply's, or a round's notifications, together), so
+    // messages never interleave. Made before the server, which
+    // joins its worker when destroyed: the worker never writes after this
+    // function returns.
+    std::mutex outMutex;
+    bool outClosed = false;  // under outMutex: a write failed, the client is gone
+    auto write = [&](const std::vector<std::string>& bodies) {
+        const std::lock_guard lock(outMutex);
+        for (const std::string& body : bodies) {
+            if (!outClosed && !writeAll(out, frameMessage(body))) outClosed = true;
+        }
+        return !outClosed;
+    };
+    Server::Options options;
+    // A round's notifications in one go: a client that has read one has them all.
+    options.notify = [&](std::vector<std::string> bodies) { write(bodies); };
+    Server server(
+        [log](std::string_view line) {
+            std::fprintf(log, "f2 lsp: %.*s\n", static_cast<int>(line.size()), line.data());
+            std::fflush(log);
+        },
+        std::move(options));
     MessageReader reader;
     std::array<char, 1 << 16> buffer;
     for (;;) {
@@ -46,9 +69,7 @@ int runServer(int in, int out, std::FILE* log) {
                 server.logProblem(item.text);
                 continue;
             }
-            for (const std::string& reply : server.handle(item.text)) {
-                if (!writeAll(out, frameMessage(reply))) return server.exitCode();
-            }
+            if (!write(server.handle(item.text))) return server.exitCode();
             if (server.exited()) return server.exitCode();
         }
     }

@@ -4,11 +4,16 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <condition_variable>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
+#include <mutex>
 #include <random>
+#include <set>
 #include <string>
+#include <utility>
 
 #include "core/parse/language.h"
 #include "core/parse/parser.h"
@@ -1010,6 +1015,212 @@ TEST(Transport, DeeplyNestedJsonIsAParseErrorAndTheSessionGoesOn) {
                   "the message nests arrays and objects deeper than 256 levels");
     }
     EXPECT_TRUE(t.replies[4]["result"].contains("capabilities")) << t.replies[4];
+}
+
+/// A server as `f2 lsp` runs it: notifications sent by its worker as
+/// analyses finish. Through the test seam (Server::Options::beforeAnalysis) a
+/// test holds the analysis of chosen (URI, version) pairs until release():
+/// everything here waits for events, never for time.
+struct AsyncEditor {
+    using Analysed = std::pair<std::string, int>;
+    std::mutex mutex;
+    std::condition_variable cv;
+    std::vector<Json> sent;          ///< the worker's notifications, in order
+    std::vector<Analysed> analysed;  ///< every analysis started, in order
+    std::set<Analysed> held, entered;
+    bool released = false;
+    std::unique_ptr<Server> server;
+
+    AsyncEditor() {
+        Server::Options options;
+        options.notify = [this](std::vector<std::string> round) {
+            const std::lock_guard lock(mutex);
+            for (const std::string& m : round) sent.push_back(Json::parse(m));
+            cv.notify_all();
+        };
+        options.beforeAnalysis = [this](const std::string& uri, int version) {
+            std::unique_lock lock(mutex);
+            analysed.emplace_back(uri, version);
+            if (!held.contains({uri, version})) return;
+            entered.insert({uri, version});
+            cv.notify_all();
+            cv.wait(lock, [&] { return released; });
+        };
+        server = std::make_unique<Server>(std::function<void(std::string_view)>{}, std::move(options));
+        server->handle(R"({"id":1,"method":"initialize"})");
+    }
+    ~AsyncEditor() {
+        release();
+        server.reset();  // joins the worker before the members it calls back are gone
+    }
+    void hold(const std::string& uri, int version) {
+        const std::lock_guard lock(mutex);
+        held.insert({uri, version});
+    }
+    /// Waits until the worker is inside the held analysis.
+    void waitEntered(const std::string& uri, int version) {
+        std::unique_lock lock(mutex);
+        cv.wait(lock, [&] { return entered.contains({uri, version}); });
+    }
+    void release() {
+        const std::lock_guard lock(mutex);
+        released = true;
+        cv.notify_all();
+    }
+    bool isReleased() {
+        const std::lock_guard lock(mutex);
+        return released;
+    }
+    /// The publishDiagnostics params sent so far for `uri`.
+    std::vector<Json> published(const std::string& uri) {
+        const std::lock_guard lock(mutex);
+        std::vector<Json> found;
+        for (const Json& m : sent) {
+            if (m.value("method", "") == "textDocument/publishDiagnostics" && m["params"]["uri"] == uri)
+                found.push_back(m["params"]);
+        }
+        return found;
+    }
+    /// Waits for the first publishDiagnostics of `uri`.
+    void waitPublished(const std::string& uri) {
+        std::unique_lock lock(mutex);
+        cv.wait(lock, [&] {
+            return std::any_of(sent.begin(), sent.end(), [&](const Json& m) {
+                return m.value("method", "") == "textDocument/publishDiagnostics" &&
+                       m["params"]["uri"] == uri;
+            });
+        });
+    }
+    std::vector<std::string> open(const std::string& uri, int version, const std::string& text) {
+        return server->handle(
+            Json({{"method", "textDocument/didOpen"},
+                  {"params", {{"textDocument", {{"uri", uri}, {"version", version}, {"text", text}}}}}})
+                .dump());
+    }
+    std::vector<std::string> change(const std::string& uri, int version, const std::string& text) {
+        return server->handle(Json({{"method", "textDocument/didChange"},
+                                    {"params",
+                                     {{"textDocument", {{"uri", uri}, {"version", version}}},
+                                      {"contentChanges", Json::array({{{"text", text}}})}}}})
+                                  .dump());
+    }
+    /// A hover's reply: handle() returns it, so it came while whatever is held still is.
+    Json hover(const std::string& uri, int line, int character) {
+        const auto replies =
+            server->handle(Json({{"id", 7},
+                                 {"method", "textDocument/hover"},
+                                 {"params",
+                                  {{"textDocument", {{"uri", uri}}},
+                                   {"position", {{"line", line}, {"character", character}}}}}})
+                               .dump());
+        EXPECT_EQ(replies.size(), 1u);
+        return replies.empty() ? Json() : Json::parse(replies[0]);
+    }
+};
+
+std::string hoverText(const Json& reply) {
+    return reply.contains("result") && reply["result"].is_object()
+               ? reply["result"]["contents"]["value"].get<std::string>()
+               : reply.dump();
+}
+
+TEST(Async, AHoverIsAnsweredWhileAnIncludeIsParsed) {
+    // The parse of a document that includes a (say 10,000,000-line) file is
+    // held inside the worker; hovers are answered meanwhile, before it is let go.
+    const std::string a = "file:///nowhere/a.f2", big = "file:///nowhere/reads-big.f2";
+    AsyncEditor e;
+    EXPECT_TRUE(e.open(a, 1, "/amb_light 1\n/sphere s 1 0 0 0\n").empty());  // published by the worker
+    e.waitPublished(a);
+    e.hold(big, 1);
+    EXPECT_TRUE(e.open(big, 1, "/include huge.f2\n/sphere t 1 0 0 0\n").empty());
+    e.waitEntered(big, 1);
+    // Another document: answered from its analysis.
+    EXPECT_EQ(hoverText(e.hover(a, 1, 9)).rfind("**sphere** `s`", 0), 0u);
+    // A change of it queues behind the held parse; until it is analysed, a
+    // hover is answered from the last good analysis (the text before the change).
+    EXPECT_TRUE(e.change(a, 2, "/amb_light 1\n/box q 1 1 1 0 0 0\n").empty());
+    EXPECT_EQ(hoverText(e.hover(a, 1, 9)).rfind("**sphere** `s`", 0), 0u);
+    EXPECT_FALSE(e.isReleased());
+    EXPECT_TRUE(e.published(big).empty());
+    EXPECT_EQ(e.published(a).size(), 1u);  // version 1's only
+    e.release();
+    e.server->waitUntilIdle();
+    const std::vector<Json> bigs = e.published(big), as = e.published(a);
+    ASSERT_EQ(bigs.size(), 1u);
+    EXPECT_EQ(bigs[0]["version"], 1);
+    EXPECT_FALSE(bigs[0]["diagnostics"].empty());  // huge.f2 does not exist here
+    ASSERT_EQ(as.size(), 2u);
+    EXPECT_EQ(as[1]["version"], 2);
+    EXPECT_EQ(hoverText(e.hover(a, 1, 6)).rfind("**box** `q`", 0), 0u);
+}
+
+TEST(Async, AStaleVersionIsNeverPublished) {
+    const std::string a = "file:///nowhere/stale.f2";
+    AsyncEditor e;
+    const std::string scene = "/amb_light 1\n/sphere s 1 0 0 0\n";
+    e.hold(a, 1);
+    e.open(a, 1, scene + "/fps x\n");  // an error
+    e.waitEntered(a, 1);
+    // Two changes while version 1 is parsed: the second replaces the first,
+    // which is never analysed; version 1's result is dropped.
+    e.change(a, 2, scene + "/fps y\n");
+    e.change(a, 3, scene + "/fps 24\n");
+    e.release();
+    e.server->waitUntilIdle();
+    const std::vector<Json> published = e.published(a);
+    ASSERT_EQ(published.size(), 1u);
+    EXPECT_EQ(published[0]["version"], 3);
+    EXPECT_EQ(published[0]["diagnostics"], Json::array());
+    const std::lock_guard lock(e.mutex);
+    EXPECT_EQ(e.analysed, (std::vector<AsyncEditor::Analysed>{{a, 1}, {a, 3}}));
+}
+
+TEST(Async, ADocumentClosedWhileParsedIsOnlyCleared) {
+    const std::string a = "file:///nowhere/closed.f2";
+    AsyncEditor e;
+    e.hold(a, 1);
+    e.open(a, 1, "/fps x\n");
+    e.waitEntered(a, 1);
+    e.server->handle(
+        Json({{"method", "textDocument/didClose"}, {"params", {{"textDocument", {{"uri", a}}}}}}).dump());
+    EXPECT_EQ(e.hover(a, 0, 1)["error"]["code"], kInvalidParams);  // not open
+    e.release();
+    e.server->waitUntilIdle();
+    const std::vector<Json> published = e.published(a);
+    ASSERT_EQ(published.size(), 1u);  // the clearing, not version 1's error
+    EXPECT_EQ(published[0]["diagnostics"], Json::array());
+}
+
+TEST(Async, AChangeRepublishesItsIncludersOnce) {
+    // The include machinery behind the worker: as Includes.AChangeRepublishes… but asynchronous.
+    const std::string part = "file:///nowhere/part.f2", a = "file:///nowhere/a.f2",
+                      b = "file:///nowhere/b.f2";
+    AsyncEditor e;
+    e.open(part, 1, "/let n 3\n");
+    e.open(a, 1, "/amb_light 1\n/include part.f2\n/sphere s (n) 0 0 0\n");
+    e.open(b, 1, "/amb_light 1\n/include part.f2\n/box c (n) 1 1 0 0 0\n");
+    e.server->waitUntilIdle();
+    const std::size_t before = e.published(a).size() + e.published(b).size() + e.published(part).size();
+    e.change(part, 2, "/let n x\n");
+    e.server->waitUntilIdle();
+    for (const std::string& uri : {a, b, part}) {
+        const std::vector<Json> each = e.published(uri);
+        ASSERT_FALSE(each.empty()) << uri;
+        EXPECT_EQ(each.back()["diagnostics"].size(), 1u) << uri << ": " << each.back();
+    }
+    EXPECT_EQ(e.published(a).size() + e.published(b).size() + e.published(part).size(), before + 3);
+    EXPECT_EQ(e.published(part).back()["version"], 2);
+}
+
+TEST(Async, DestroyedWithWorkQueuedJoinsWithoutHanging) {
+    // Many documents queued, then the server goes (as on `exit`): the worker
+    // finishes the round it is in and is joined; nothing is sent afterwards.
+    auto e = std::make_unique<AsyncEditor>();
+    for (int i = 0; i < 200; ++i) e->open("file:///many/q" + std::to_string(i) + ".f2", 1, "/fps 24\n");
+    e->server.reset();
+    const std::size_t sent = e->sent.size();
+    EXPECT_LE(sent, 200u);
+    e.reset();
 }
 
 TEST(Uris, DecodeAndEncodePaths) {
