@@ -23,7 +23,8 @@ TEST(VisibleErrors, EachAtItsPlace) {
     test::expectOnlyError(ball + "/key 0 ball visible 1 ease\n", 2, 23,
                           "'visible' keys are always a step: a mode word is not allowed here");
     test::expectOnlyError(ball + "/key 0 ball visible\n", 2, 13, "'visible' takes 1 number (0 or 1), got 0");
-    test::expectOnlyError(ball + "/key 0 camera visible 0\n", 2, 15, "'visible' is not a property of the camera");
+    test::expectOnlyError(ball + "/key 0 camera visible 0\n", 2, 15,
+                          "'visible' is not a property of the camera");
     test::expectOnlyError("/point_light 1 0 5 0 name l\n" + ball + "/key 0 l visible 0\n", 3, 10,
                           "'visible' is not a property of the light 'l'");
 }
@@ -82,16 +83,19 @@ TEST(Visible, APartHidesItsOwnShapesAndAnObjectAllOfThem) {
     const std::uint32_t first = frame.firstPrimitive[2];
     ASSERT_EQ(frame.rayMask.size(), frame.primitives.size());
     for (std::size_t k = 0; k < robot.shapes.size(); ++k)
-        EXPECT_EQ((frame.rayMask[first + k] & ray_mask::kHidden) != 0, robot.shapes[k].part == PartId::Head) << k;
+        EXPECT_EQ((frame.rayMask[first + k] & ray_mask::kHidden) != 0, robot.shapes[k].part == PartId::Head)
+            << k;
     // Hiding the robot and showing its head still hides the head: both must show it.
     const SceneDesc both = test::sceneFromText(base + "/key 0 r visible 0\n/key 0 r.head visible 1\n");
     evaluateFrame(both, 0, frame);
-    for (std::size_t k = 0; k < robot.shapes.size(); ++k) EXPECT_TRUE(frame.rayMask[first + k] & ray_mask::kHidden);
+    for (std::size_t k = 0; k < robot.shapes.size(); ++k)
+        EXPECT_TRUE(frame.rayMask[first + k] & ray_mask::kHidden);
     EXPECT_TRUE(render(base + "/key 0 r visible 0\n", 0).pixels == render(kRoom, 0).pixels);
 }
 
 TEST(Visible, AHiddenTargetIsNotPickedAndNotExported) {
-    const std::string text = std::string(kRoom) + "/sphere red 25 50 60 20\n/key 0 red visible 1\n/key 4 red visible 0\n";
+    const std::string text =
+        std::string(kRoom) + "/sphere red 25 50 60 20\n/key 0 red visible 1\n/key 4 red visible 0\n";
     const SceneDesc scene = test::sceneFromText(text);
     const Camera camera = cameraAt(scene, 0);
     float px = 0, py = 0;
@@ -106,11 +110,12 @@ TEST(Visible, AHiddenTargetIsNotPickedAndNotExported) {
 }
 
 TEST(Visible, PacketPathIdenticalToTheReference) {
-    test::expectIdenticalPaths(std::string(kRoom) +
-                                   "/sphere red 25 50 60 20\n/material red 0.2 1 0 1\n/key 0 red visible 0\n"
-                                   "/robot r -40 105 -20\n/material r 0.3 1 0 1\n/key 0 r.lhand visible 0\n"
-                                   "/box title 100 20 10 0 150 0\n/no_shadow title\n/material title 1 1 0 1\n",
-                               "hidden objects, a hidden part, a shadowless title");
+    test::expectIdenticalPaths(
+        std::string(kRoom) +
+            "/sphere red 25 50 60 20\n/material red 0.2 1 0 1\n/key 0 red visible 0\n"
+            "/robot r -40 105 -20\n/material r 0.3 1 0 1\n/key 0 r.lhand visible 0\n"
+            "/box title 100 20 10 0 150 0\n/no_shadow title\n/material title 1 1 0 1\n",
+        "hidden objects, a hidden part, a shadowless title");
 }
 
 }  // namespace

@@ -38,7 +38,7 @@ Transform worldFromRef(const SceneDesc& scene, FrameRef ref, double t) {
     // Bottom up: each level's frame in its parent's space, multiplied on the left.
     Transform world;
     bool first = true;
-    for (std::optional<FrameRef> at = ref; at; at = scene.objects[at->object].attachedTo) {
+    for (std::optional<FrameRef> at = ref; at; at = mountAt(scene.objects[at->object], t)) {
         const SceneObject& object = scene.objects[at->object];
         const Transform root = objectFrame(object, t);
         const Transform level = at->part < 0 ? root : modelPartFrames(object, root, t)[std::size_t(at->part)];
@@ -51,6 +51,12 @@ Transform worldFromRef(const SceneDesc& scene, FrameRef ref, double t) {
 void attachedRootFrames(const SceneDesc& scene, double t, std::vector<Transform>& roots) {
     if (scene.attachOrder.empty()) return;
     roots.resize(scene.objects.size());
+    if (scene.attachmentsChange) {
+        // The rides change with time (SPEC 10.7), and so does their order:
+        // each root through its whole chain at t, O(depth) per object.
+        for (std::uint32_t i : scene.attachOrder) roots[i] = worldFromRef(scene, FrameRef{i, -1}, t);
+        return;
+    }
     for (std::uint32_t i : scene.attachOrder) {
         const SceneObject& object = scene.objects[i];
         const FrameRef mount = *object.attachedTo;
