@@ -189,6 +189,24 @@ TEST(AttachAt, ChainsWhoseOrderChanges) {
     expectCentre(s, "b", 10, {30, 0, 4});
 }
 
+TEST(AttachAt, LongChainWithAChangeEvaluatesInLinearTime) {
+    // 20,000 spheres, each on the previous from the start; s1 lets go at 5.
+    constexpr int kCount = 20000;
+    std::string text;
+    for (int i = 0; i < kCount; ++i) text += "/sphere s" + std::to_string(i) + " 1 1 0 0\n";
+    for (int i = kCount - 1; i > 0; --i)
+        text += "/attach s" + std::to_string(i) + " s" + std::to_string(i - 1) + "\n";
+    text += "/attach s1 world at 5\n";
+    const SceneDesc s = sceneFromText(text);
+    ASSERT_EQ(s.attachOrder.size(), std::size_t(kCount - 1));
+    EvaluatedFrame frame;
+    evaluateFrame(s, 0, frame);
+    EXPECT_VEC_NEAR(frame.primitives.back().centre, (Vec3{float(kCount), 0, 0}), kTol);
+    evaluateFrame(s, 5, frame);
+    EXPECT_VEC_NEAR(frame.primitives.back().centre, (Vec3{float(kCount - 1), 0, 0}), kTol);
+    EXPECT_VEC_NEAR(frame.primitives[1].centre, (Vec3{1, 0, 0}), kTol);
+}
+
 TEST(AttachAt, CyclesAreCheckedPerInterval) {
     const std::string two = "/sphere a 1 0 0 0\n/sphere b 1 0 0 0\n";
     // a on b in [0, 24), b on a from 24 with a's ride ended at 24: no cycle.
