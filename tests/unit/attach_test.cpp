@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "core/anim/frame_builder.h"
+#include "core/parse/parser.h"
 #include "io/frame_primitives.h"
 #include "test_scenes.h"
 
@@ -225,6 +226,58 @@ TEST(AttachAt, CyclesAreCheckedPerInterval) {
                     "attaching 'b' to 'a' at frame 5 makes a cycle: 'a' rides on 'b' from the start");
     // Ended again before the other one starts: fine.
     EXPECT_NO_THROW(sceneFromText(two + "/attach a b at 10\n/attach a world at 20\n/attach b a at 20\n"));
+}
+
+TEST(AttachAt, CycleCheckAgreesWithEveryIntervalCheckedByHand) {
+    // Random rides of 5 spheres (from the start and at times 0..4, on objects
+    // or world): the file has an error exactly when some interval's rides,
+    // each the latest at or before its start, or the rides from the start
+    // alone, make a cycle.
+    std::uint32_t seed = 12345;
+    auto next = [&](std::uint32_t n) {
+        seed = seed * 1664525u + 1013904223u;
+        return (seed >> 16) % n;
+    };
+    constexpr int kObjects = 5, kTimes = 5;
+    int withCycles = 0;
+    for (int round = 0; round < 400; ++round) {
+        // mount[o][0]: from the start, mount[o][1 + t]: at t; -1 none given, kObjects: world.
+        std::array<std::array<int, kTimes + 1>, kObjects> mount;
+        for (auto& m : mount) m.fill(-1);
+        std::string text;
+        for (int o = 0; o < kObjects; ++o) text += "/sphere s" + std::to_string(o) + " 1 0 0 0\n";
+        for (int k = 0, count = 1 + int(next(8)); k < count; ++k) {
+            const int o = int(next(kObjects)), slot = int(next(kTimes + 1));
+            int target = int(next(kObjects + 1));
+            if (slot == 0 && target == kObjects) target = int(next(kObjects));
+            if (target == o || mount[o][slot] >= 0) continue;
+            mount[o][slot] = target;
+            text += "/attach s" + std::to_string(o) + " " +
+                    (target == kObjects ? std::string("world") : "s" + std::to_string(target)) +
+                    (slot == 0 ? std::string() : " at " + std::to_string(slot - 1)) + "\n";
+        }
+        bool cycle = false;
+        // t = -1: the rides from the start by themselves, which must make no
+        // cycle even where an `at 0` replaces them.
+        for (int t = -1; t < kTimes; ++t) {
+            std::array<int, kObjects> holder;
+            for (int o = 0; o < kObjects; ++o) {
+                holder[o] = mount[o][0] >= 0 ? mount[o][0] : kObjects;
+                for (int u = 0; u <= t; ++u)
+                    if (mount[o][1 + u] >= 0) holder[o] = mount[o][1 + u];
+            }
+            for (int o = 0; o < kObjects; ++o) {
+                int x = o;
+                for (int steps = 0; steps <= kObjects && holder[x] != kObjects; ++steps) x = holder[x];
+                cycle = cycle || holder[x] != kObjects;
+            }
+        }
+        withCycles += cycle;
+        const ParseResult r = parseScene(text, "t.f2");
+        EXPECT_EQ(r.ok(), !cycle) << text << test::formatDiagnostics(r);
+    }
+    EXPECT_GT(withCycles, 20);
+    EXPECT_LT(withCycles, 380);
 }
 
 TEST(AttachAt, Errors) {
