@@ -164,7 +164,14 @@ int runInfo(const std::string& path) {
     for (std::size_t i = 0; i < s.objects.size(); ++i) {
         const SceneObject& o = s.objects[i];
         std::cout << "  " << objectKindName(o.kind) << ' ' << o.name << '\n';
-        if (o.attachedTo) std::cout << "    rides on " << refName(s, *o.attachedTo) << '\n';
+        if (o.mayRide()) {
+            // "rides on f2.rhand, from 48 on h.rhand, from 96 on nothing" (SPEC 9.2, 10.7).
+            std::cout << "    rides on " << (o.attachedTo ? refName(s, *o.attachedTo) : "nothing");
+            for (const AttachChange& c : o.attachChanges)
+                std::cout << ", from " << formatNumber(c.time) << " on "
+                          << (c.mount ? refName(s, *c.mount) : "nothing");
+            std::cout << '\n';
+        }
         printTrack(o.name, o.track);
         if (isModel(o.kind))
             for (int p = 0; p < kPartCount; ++p) printTrack(o.name + "." + kPartNames[p], o.partTracks[p]);

@@ -97,7 +97,7 @@ TEST(ParserAttach, ObjectsAndTheCameraRideOnObjectsOrParts) {
 
 TEST(ParserAttach, Errors) {
     const std::string two(kTwo);
-    expectOnlyError(two + "/attach a\n", 3, 1, "'/attach' takes 2 arguments, got 1");
+    expectOnlyError(two + "/attach a\n", 3, 1, "'/attach' takes 2 or 4 arguments, got 1");
     expectOnlyError(two + "/attach b r\n", 3, 9, "unknown name 'b'");
     expectOnlyError(two + "/attach a nobody.head\n", 3, 11, "unknown name 'nobody'");
     // Both names on earlier lines: a target created later is unknown here.

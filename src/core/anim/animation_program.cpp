@@ -153,7 +153,7 @@ std::shared_ptr<const AnimationProgram> AnimationProgram::compile(const SceneDes
         p.sizes[i] = object.size;
         p.firstPrimitive[i] = primitives;
         primitives += std::uint32_t(primitiveCountOf(object.kind));
-        if (object.attachedTo) {
+        if (object.mayRide()) {
             p.rootSource[i] = kAttached;
         } else if (const std::uint32_t track = compiler.animatedTrack(object.track)) {
             p.rootSource[i] = track;

@@ -38,7 +38,7 @@ Transform worldFromRef(const SceneDesc& scene, FrameRef ref, double t) {
     // Bottom up: each level's frame in its parent's space, multiplied on the left.
     Transform world;
     bool first = true;
-    for (std::optional<FrameRef> at = ref; at; at = scene.objects[at->object].attachedTo) {
+    for (std::optional<FrameRef> at = ref; at; at = mountAt(scene.objects[at->object], t)) {
         const SceneObject& object = scene.objects[at->object];
         const Transform root = objectFrame(object, t);
         const Transform level = at->part < 0 ? root : modelPartFrames(object, root, t)[std::size_t(at->part)];
@@ -48,9 +48,57 @@ Transform worldFromRef(const SceneDesc& scene, FrameRef ref, double t) {
     return world;
 }
 
+namespace {
+/// attachedRootFrames when the rides change with time (SPEC 10.7), and so
+/// does their order: from each object not yet done, climb the rides that
+/// hold at t to the first holder done or riding on nothing, then evaluate
+/// that chain top first. Each object once: linear in their number.
+void changingRootFrames(const SceneDesc& scene, double t, std::vector<Transform>& roots) {
+    // Per thread, reused: `done[i] == pass` marks object i evaluated in this call.
+    thread_local std::vector<std::uint32_t> done, chain;
+    thread_local std::uint32_t pass = 0;
+    if (++pass == 0) {
+        std::fill(done.begin(), done.end(), 0u);
+        pass = 1;
+    }
+    const std::vector<SceneObject>& objects = scene.objects;
+    if (done.size() < objects.size()) done.resize(objects.size(), 0u);
+    for (std::uint32_t i : scene.attachOrder) {
+        if (done[i] == pass) continue;
+        chain.clear();
+        for (std::uint32_t x = i;;) {
+            chain.push_back(x);
+            done[x] = pass;
+            const std::optional<FrameRef> mount = mountAt(objects[x], t);
+            if (!mount || !objects[mount->object].mayRide() || done[mount->object] == pass) break;
+            x = mount->object;  // the parser saw to it that no ride closes a cycle at any time
+        }
+        for (std::size_t k = chain.size(); k-- > 0;) {
+            const std::uint32_t y = chain[k];
+            const SceneObject& object = objects[y];
+            const std::optional<FrameRef> mount = mountAt(object, t);
+            if (!mount) {
+                roots[y] = objectFrame(object, t);
+                continue;
+            }
+            const SceneObject& parent = objects[mount->object];
+            const Transform parentRoot = parent.mayRide() ? roots[mount->object] : objectFrame(parent, t);
+            const Transform worldFromMount =
+                mount->part < 0 ? parentRoot
+                                : modelPartFrames(parent, parentRoot, t)[std::size_t(mount->part)];
+            roots[y] = worldFromMount * objectFrame(object, t);
+        }
+    }
+}
+}  // namespace
+
 void attachedRootFrames(const SceneDesc& scene, double t, std::vector<Transform>& roots) {
     if (scene.attachOrder.empty()) return;
     roots.resize(scene.objects.size());
+    if (scene.attachmentsChange) {
+        changingRootFrames(scene, t, roots);
+        return;
+    }
     for (std::uint32_t i : scene.attachOrder) {
         const SceneObject& object = scene.objects[i];
         const FrameRef mount = *object.attachedTo;

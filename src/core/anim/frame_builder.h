@@ -33,12 +33,12 @@ Transform worldFromRef(const SceneDesc& scene, FrameRef ref, double t);
 /// Keeps the vector's capacity: no allocation in steady state.
 void attachedRootFrames(const SceneDesc& scene, double t, std::vector<Transform>& roots);
 
-/// World root frame of object i: `roots` (from attachedRootFrames) when it is
-/// attached, else its own pose.
+/// World root frame of object i: `roots` (from attachedRootFrames) when it may
+/// ride on something (SPEC 9.2, 10.7), else its own pose.
 inline Transform worldFromRoot(const SceneDesc& scene, std::size_t i, double t,
                                const std::vector<Transform>& roots) {
     const SceneObject& object = scene.objects[i];
-    return object.attachedTo ? roots[i] : objectFrame(object, t);
+    return object.mayRide() ? roots[i] : objectFrame(object, t);
 }
 
 /// World position of the centre of a part's shape (its main shape: a robot's

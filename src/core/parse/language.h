@@ -138,6 +138,9 @@ std::string easingText(const Easing& easing);
 
 /// The name of the scene camera as a target (SPEC 9.1); no object may take it.
 inline constexpr std::string_view kCameraName = "camera";
+/// `/attach <name> world at <t>` (SPEC 10.7): no holder, the ride ends
+/// (unless an object is named so).
+inline constexpr std::string_view kWorldName = "world";
 
 /// The name rule (SPEC 3, 9.4), in ASCII whatever the locale: a letter or
 /// '_', then letters, digits or '_'. Object names and variables follow it.

@@ -102,6 +102,16 @@ struct KeyTime {
     bool seconds = false;
 };
 
+/// An `/attach <name> <target> at <t>` (SPEC 10.7), kept until the end of
+/// the file, when its time is in frames.
+struct AttachChangeBook {
+    std::uint32_t object = 0;
+    KeyTime time;
+    std::optional<FrameRef> mount;  ///< none: `world`
+    std::string targetText;         ///< as written, for messages
+    Pos command, timePos;
+};
+
 /// Parse-time bookkeeping of one object.
 struct ObjectBook {
     Pos defined;
@@ -154,6 +164,81 @@ ExpansionLimits expansionLimits(const ParseLimits& limits) {
     return e;
 }
 
+/// The rides at one time as a rooted forest, each object under the object it
+/// rides on, which links, cuts and finds the top of a tree in amortized
+/// O(log n) (a link-cut tree: Sleator and Tarjan; splay trees over the
+/// preferred paths, no reversal since only tops are linked). Lets
+/// `/attach … at` check cycles per interval in O(k log n) for k changes.
+class RideForest {
+   public:
+    explicit RideForest(std::size_t n) : nodes_(n + 1) {}
+
+    /// `child`, the top of its tree, now rides on `parent` (not in its tree).
+    void link(std::uint32_t child, std::uint32_t parent) {
+        const std::uint32_t c = child + 1;
+        access(c);
+        nodes_[c].parent = parent + 1;
+    }
+    /// `child` rides on nothing now (it may ride on nothing already).
+    void cut(std::uint32_t child) {
+        const std::uint32_t c = child + 1;
+        access(c);
+        if (const std::uint32_t above = nodes_[c].kid[0]) {
+            nodes_[above].parent = 0;
+            nodes_[c].kid[0] = 0;
+        }
+    }
+    /// The top of the tree `x` is in: the object its chain of rides ends at.
+    std::uint32_t top(std::uint32_t x) {
+        std::uint32_t v = x + 1;
+        access(v);
+        while (nodes_[v].kid[0]) v = nodes_[v].kid[0];
+        splay(v);
+        return v - 1;
+    }
+
+   private:
+    struct Node {
+        std::uint32_t parent = 0;            ///< in its splay tree, or the path's parent at a splay root
+        std::array<std::uint32_t, 2> kid{};  ///< 0: nearer the top, 1: farther
+    };
+    bool isSplayRoot(std::uint32_t x) const {
+        const Node& p = nodes_[nodes_[x].parent];
+        return nodes_[x].parent == 0 || (p.kid[0] != x && p.kid[1] != x);
+    }
+    void rotate(std::uint32_t x) {
+        const std::uint32_t p = nodes_[x].parent, g = nodes_[p].parent;
+        const int side = nodes_[p].kid[1] == x;
+        if (!isSplayRoot(p)) nodes_[g].kid[nodes_[g].kid[1] == p] = x;
+        nodes_[x].parent = g;
+        const std::uint32_t moved = nodes_[x].kid[1 - side];
+        nodes_[p].kid[side] = moved;
+        if (moved) nodes_[moved].parent = p;
+        nodes_[x].kid[1 - side] = p;
+        nodes_[p].parent = x;
+    }
+    void splay(std::uint32_t x) {
+        while (!isSplayRoot(x)) {
+            const std::uint32_t p = nodes_[x].parent;
+            if (!isSplayRoot(p)) {
+                const std::uint32_t g = nodes_[p].parent;
+                rotate((nodes_[g].kid[1] == p) == (nodes_[p].kid[1] == x) ? p : x);
+            }
+            rotate(x);
+        }
+    }
+    /// Makes the path from x's top to x preferred, x at its splay root with nothing below it.
+    void access(std::uint32_t x) {
+        for (std::uint32_t below = 0, v = x; v; below = v, v = nodes_[v].parent) {
+            splay(v);
+            nodes_[v].kid[1] = below;
+        }
+        splay(x);
+    }
+
+    std::vector<Node> nodes_;  ///< object i is node i + 1; node 0 is none
+};
+
 // Parser
 /// The commands of the scene; /let, /repeat, /end and /include are run by the
 /// SourceExpander before a line gets here.
@@ -178,6 +263,7 @@ class Parser : private ExpansionSink {
         while (!stopped_ && expander_.next(tokens_)) parseLine();
         addCameraKeys();
         convertSecondsToFrames();
+        checkAttachChanges();
         sortUnsortedTracks();
         applyInterpToPropertyTracks();
         orderColourTracks();
@@ -1608,7 +1694,17 @@ class Parser : private ExpansionSink {
     }
 
     void parseAttach() {
-        if (!expectArgs({2})) return;
+        // `/attach <name> <target>`, or `/attach <name> <target> at <t>` (SPEC 10.7).
+        if (argCount() == 3 && !failed(2) && arg(2) == "at") {
+            error(argPos(2), "'at' needs a time: '/attach <name> <target> at <t>'");
+            return;
+        }
+        if (!expectArgs({2, 4})) return;
+        const bool timed = argCount() == 4;
+        if (timed && (failed(2) || arg(2) != "at")) {
+            if (!failed(2)) error(argPos(2), "expected 'at' before the time, got " + quoteToken(arg(2)));
+            return;
+        }
         const std::string_view name = arg(0);
         const bool camera = name == kCameraName;
         const std::optional<int> light = failed(0) ? std::nullopt : lightNamed(name);
@@ -1630,29 +1726,62 @@ class Parser : private ExpansionSink {
                 child = existing(name, name, argPos(0), true);
             }
         }
-        const std::optional<Target> parent = target(1);
-        if ((!camera && !light && !child) || !parent) return;
+        if (timed && (camera || light)) {
+            error(argPos(2), quoteToken(name) +
+                                 " cannot change what it rides on: 'at' is for objects (one '/attach' of " +
+                                 (camera ? "the camera" : "a light") + ", from the start)");
+            return;
+        }
+        // `world` (unless an object takes the name) is no holder: it ends a ride (SPEC 10.7).
+        const bool world = !failed(1) && arg(1) == kWorldName && !names_.contains(kWorldName);
+        if (world && !timed) {
+            error(argPos(1),
+                  "'world' ends a ride, so it needs a time: '/attach <name> world at <t>' (without "
+                  "'/attach' an object rides on nothing)");
+            return;
+        }
+        const std::optional<Target> parent = world ? std::optional<Target>(Target{}) : target(1);
+        bool ok = true;
+        const KeyTime time = timed ? keyTime(3, ok) : KeyTime{};
+        if ((!camera && !light && !child) || !parent || !ok) return;
+        const std::optional<FrameRef> ref =
+            world
+                ? std::nullopt
+                : std::optional<FrameRef>(FrameRef{static_cast<std::uint32_t>(parent->object), parent->part});
+        if (timed) {
+            const auto c = static_cast<std::uint32_t>(*child);
+            if (ref && ref->object == c) {
+                error(commandPos(), quoteToken(name) + " cannot be attached to " +
+                                        (ref->part < 0 ? "itself" : "its own part"));
+                return;
+            }
+            // Its time may be in seconds: checked at the end of the file (checkAttachChanges).
+            attachChangeBooks_.push_back({c, time, ref, std::string(arg(1)), commandPos(), argPos(3)});
+            return;
+        }
         std::optional<Pos>& seen = camera  ? cameraAttached_
                                    : light ? lightBooks_[static_cast<std::size_t>(*light)].attached
                                            : books_[*child].attached;
         if (seen) {
             error(argPos(0), quoteToken(name) + " is already attached (at " + posText(*seen) +
-                                 "); one '/attach' per name");
+                                 "); one '/attach' per name" +
+                                 (child ? " without 'at' (a change of ride: '/attach " + std::string(name) +
+                                              " <target> at <t>')"
+                                        : std::string()));
             return;
         }
-        const FrameRef ref{static_cast<std::uint32_t>(parent->object), parent->part};
         if (camera || light) {  // nothing rides on the camera or a light, so they close no cycle
             (camera ? scene_.camera.attachedTo
                     : scene_.lightMotions[static_cast<std::size_t>(*light)].attachedTo) = ref;
             seen = commandPos();
             return;
         }
-        const auto c = static_cast<std::uint32_t>(*child), p = ref.object;
+        const auto c = static_cast<std::uint32_t>(*child), p = ref->object;
         growSets();
         if (setTop_[findSet(p)] == c) {
             if (p == c) {
                 error(commandPos(), quoteToken(name) + " cannot be attached to " +
-                                        (ref.part < 0 ? "itself" : "its own part"));
+                                        (ref->part < 0 ? "itself" : "its own part"));
             } else {
                 error(commandPos(), "attaching " + quoteToken(name) + " to " + quoteToken(arg(1)) +
                                         " makes a cycle: " + quoteToken(scene_.objects[p].name) +
@@ -1663,6 +1792,96 @@ class Parser : private ExpansionSink {
         joinSets(c, p);
         scene_.objects[c].attachedTo = ref;
         seen = commandPos();
+    }
+
+    /// The `/attach … at` changes (SPEC 10.7), their times now in frames, go
+    /// to their objects, sorted; then one time per name, and no cycle in any
+    /// interval between two changes: a cycle can only be closed by a ride
+    /// that starts at the interval's start, so each change climbs the rides
+    /// that hold then, from its new holder, looking for its own object.
+    void checkAttachChanges() {
+        if (attachChangeBooks_.empty()) return;
+        std::vector<AttachChangeBook>& books = attachChangeBooks_;
+        for (AttachChangeBook& b : books) {
+            if (b.time.seconds) b.time.value = framesOfSeconds(b.time.value, b.timePos);
+        }
+        // By time, file order among equal times.
+        std::stable_sort(
+            books.begin(), books.end(),
+            [](const AttachChangeBook& a, const AttachChangeBook& b) { return a.time.value < b.time.value; });
+        std::vector<bool> kept(books.size(), true);
+        std::unordered_map<std::uint32_t, std::size_t> latest;  // object -> books index of its latest change
+        for (std::size_t k = 0; k < books.size(); ++k) {
+            const AttachChangeBook& b = books[k];
+            SceneObject& object = scene_.objects[b.object];
+            if (auto it = latest.find(b.object);
+                it != latest.end() && books[it->second].time.value == b.time.value) {
+                error(b.command, quoteToken(object.name) + " is already attached at frame " +
+                                     formatNumber(b.time.value) + " (at " +
+                                     posText(books[it->second].command) +
+                                     "); one '/attach' per name and time");
+                kept[k] = false;
+                continue;
+            }
+            latest[b.object] = k;
+            object.attachChanges.push_back({b.time.value, b.mount});
+        }
+        scene_.attachmentsChange = true;
+        const std::size_t n = scene_.objects.size();
+        // The rides as a forest that changes at each `at` time, in order: the
+        // rides that change then are cut, then each new one is linked unless
+        // the object is the top of its holder's tree (a cycle). O(log n) each.
+        RideForest forest(n);
+        for (std::uint32_t i = 0; i < n; ++i) {
+            if (const std::optional<FrameRef>& mount = scene_.objects[i].attachedTo)
+                forest.link(i, mount->object);
+        }
+        for (std::size_t first = 0, end = 0; first < books.size() && !stopped_; first = end) {
+            while (end < books.size() && books[end].time.value == books[first].time.value) ++end;
+            for (std::size_t k = first; k < end; ++k) {
+                if (kept[k]) forest.cut(books[k].object);
+            }
+            for (std::size_t k = first; k < end && !stopped_; ++k) {
+                const AttachChangeBook& b = books[k];
+                if (!kept[k] || !b.mount) continue;
+                if (forest.top(b.mount->object) != b.object) {
+                    forest.link(b.object, b.mount->object);
+                } else {
+                    reportRideCycle(b);
+                }
+            }
+        }
+        attachChangeBooks_ = {};
+    }
+
+    /// The change `b` closes a cycle at its time: told, and then taken as if
+    /// the ride ended (one message per cycle).
+    void reportRideCycle(const AttachChangeBook& b) {
+        const double t = b.time.value;
+        SceneObject& object = scene_.objects[b.object];
+        // When the chain from the holder up to the object holds since: the
+        // latest `at` on it (none: the start). The chain is at most every object long.
+        std::optional<double> since;
+        std::uint32_t x = b.mount->object;
+        for (std::size_t steps = 0; x != b.object && steps < scene_.objects.size(); ++steps) {
+            const SceneObject& holder = scene_.objects[x];
+            const auto after =
+                std::upper_bound(holder.attachChanges.begin(), holder.attachChanges.end(), t,
+                                 [](double time, const AttachChange& c) { return time < c.time; });
+            if (after != holder.attachChanges.begin())
+                since = std::max(since.value_or(0.0), std::prev(after)->time);
+            const std::optional<FrameRef> mount = mountAt(holder, t);
+            if (!mount) break;
+            x = mount->object;
+        }
+        error(b.command, "attaching " + quoteToken(object.name) + " to " + quoteToken(b.targetText) +
+                             " at frame " + formatNumber(t) +
+                             " makes a cycle: " + quoteToken(scene_.objects[b.mount->object].name) +
+                             " rides on " + quoteToken(object.name) +
+                             (since ? " from frame " + formatNumber(*since) : " from the start"));
+        for (AttachChange& change : object.attachChanges) {
+            if (change.time == t) change.mount.reset();
+        }
     }
 
     // Attachment trees (see setParent_)
@@ -1693,10 +1912,18 @@ class Parser : private ExpansionSink {
         setTop_[b] = top;
     }
 
-    /// SceneDesc::attachOrder: each attached object after the attached object it rides on.
+    /// SceneDesc::attachOrder: each attached object after the attached object
+    /// it rides on; every object that may ride when the rides change.
     void orderAttachments() {
-        if (errors_ > 0 || setParent_.empty()) return;
+        if (errors_ > 0) return;
         const std::vector<SceneObject>& objects = scene_.objects;
+        if (scene_.attachmentsChange) {
+            for (std::uint32_t i = 0; i < objects.size(); ++i) {
+                if (objects[i].mayRide()) scene_.attachOrder.push_back(i);
+            }
+            return;
+        }
+        if (setParent_.empty()) return;
         std::vector<bool> placed(objects.size(), false);
         std::vector<std::uint32_t> chain;
         for (std::uint32_t i = 0; i < objects.size(); ++i) {
@@ -1828,6 +2055,8 @@ class Parser : private ExpansionSink {
     /// when the new parent's top is the object being attached. Near O(1) per
     /// `/attach`, so a chain of a million attachments parses fast.
     std::vector<std::uint32_t> setParent_, setSize_, setTop_;
+    /// `/attach … at` (SPEC 10.7) until the end of the file (checkAttachChanges).
+    std::vector<AttachChangeBook> attachChangeBooks_;
 };
 
 ParseResult readError(const std::string& displayName, std::string message) {

@@ -41,6 +41,7 @@ int SceneDesc::lastFrame() const {
     for (const SceneObject& o : objects) {
         scan(o.track);
         for (const Track& t : o.partTracks) scan(t);
+        if (!o.attachChanges.empty()) last = std::max(last, o.attachChanges.back().time);
     }
     scan(camera.track);
     scan(camera.zoom);

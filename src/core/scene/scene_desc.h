@@ -3,9 +3,11 @@
 /// Produced by the parser, evaluated at a time by anim/frame_builder; plain
 /// data, no behaviour (besides the cache of its animation compiled for
 /// evaluation, SceneDesc::animation).
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <iterator>
 #include <memory>
 #include <optional>
 #include <string>
@@ -138,6 +140,12 @@ struct FrameRef {
     friend bool operator==(const FrameRef&, const FrameRef&) = default;
 };
 
+/// A change of ride (SPEC 10.7): `/attach <name> <target> at <time>`.
+struct AttachChange {
+    double time = 0;                ///< in frames
+    std::optional<FrameRef> mount;  ///< none: `world`, the ride ends
+};
+
 /// One named object of the scene: a primitive, a robot or a human.
 struct SceneObject {
     std::string name;
@@ -151,10 +159,26 @@ struct SceneObject {
     std::array<Appearance, kPartCount> appearance{};
     /// Models only: per-part key frames (offset and rotation about the pivot).
     std::array<Track, kPartCount> partTracks{};
-    /// `/attach` (SPEC 9.2): the frame the object rides on; its pose is then
-    /// read in that frame.
+    /// `/attach` (SPEC 9.2): the frame the object rides on from the start; its
+    /// pose is then read in that frame.
     std::optional<FrameRef> attachedTo;
+    /// `/attach <name> <target> at <t>` (SPEC 10.7), by increasing time (all
+    /// distinct): from `time` on the object rides on `mount` (none: `world`).
+    std::vector<AttachChange> attachChanges;
+
+    /// Whether the object rides on something at some time: its root frame then
+    /// comes from attachedRootFrames (anim/frame_builder.h).
+    bool mayRide() const { return attachedTo || !attachChanges.empty(); }
 };
+
+/// The frame `object` rides on at time t (SPEC 9.2, 10.7): the latest
+/// attachment whose time is <= t; none when it rides on nothing then.
+inline std::optional<FrameRef> mountAt(const SceneObject& object, double t) {
+    if (object.attachChanges.empty()) return object.attachedTo;
+    const auto after = std::upper_bound(object.attachChanges.begin(), object.attachChanges.end(), t,
+                                        [](double time, const AttachChange& c) { return time < c.time; });
+    return after == object.attachChanges.begin() ? object.attachedTo : std::prev(after)->mount;
+}
 
 /// `/look_at` (SPEC 9.1): a fixed point, an object's origin or a part's shape centre.
 struct LookAt {
@@ -254,7 +278,11 @@ struct SceneDesc {
     std::vector<SceneObject> objects;
     /// Indices of the attached objects, each after the object it rides on
     /// when that one is attached too: the order in which to evaluate them.
+    /// When `attachmentsChange`, every object that may ride, in index order
+    /// (the order of the rides changes with time).
     std::vector<std::uint32_t> attachOrder;
+    /// Some object has an `/attach … at` (SPEC 10.7).
+    bool attachmentsChange = false;
     /// `/caption`s in file order: drawn in that order over the traced picture.
     std::vector<Caption> captions;
     /// The objects' animation compiled for evaluation (anim/animation_program.h).
