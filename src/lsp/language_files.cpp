@@ -26,7 +26,7 @@ struct NamedList {
     std::vector<std::string> (*words)();
 };
 
-const std::array<NamedList, 15> kLists = {{
+const std::array<NamedList, 16> kLists = {{
     {"commands", [] { return commandWords([](const CommandSpec&) { return true; }); }},
     // As written in a scene: "/camera", … (the fuzz dictionary's entries).
     {"slashed-commands",
@@ -62,6 +62,10 @@ const std::array<NamedList, 15> kLists = {{
          return words;
      }},
     {"material-options", [] { return std::vector<std::string>{std::string(kEmitWord)}; }},
+    {"attach-words",
+     [] {
+         return std::vector<std::string>{std::string(kAtWord), std::string(kWorldName)};
+     }},
     {"key-properties",
      [] {
          std::vector<std::string> words;

@@ -141,6 +141,8 @@ inline constexpr std::string_view kCameraName = "camera";
 /// `/attach <name> world at <t>` (SPEC 10.7): no holder, the ride ends
 /// (unless an object is named so).
 inline constexpr std::string_view kWorldName = "world";
+/// The word before a change of ride's time: `/attach <name> <target> at <t>` (SPEC 10.7).
+inline constexpr std::string_view kAtWord = "at";
 
 /// The name rule (SPEC 3, 9.4), in ASCII whatever the locale: a letter or
 /// '_', then letters, digits or '_'. Object names and variables follow it.

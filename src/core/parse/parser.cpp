@@ -1695,13 +1695,13 @@ class Parser : private ExpansionSink {
 
     void parseAttach() {
         // `/attach <name> <target>`, or `/attach <name> <target> at <t>` (SPEC 10.7).
-        if (argCount() == 3 && !failed(2) && arg(2) == "at") {
+        if (argCount() == 3 && !failed(2) && arg(2) == kAtWord) {
             error(argPos(2), "'at' needs a time: '/attach <name> <target> at <t>'");
             return;
         }
         if (!expectArgs({2, 4})) return;
         const bool timed = argCount() == 4;
-        if (timed && (failed(2) || arg(2) != "at")) {
+        if (timed && (failed(2) || arg(2) != kAtWord)) {
             if (!failed(2)) error(argPos(2), "expected 'at' before the time, got " + quoteToken(arg(2)));
             return;
         }
