@@ -92,6 +92,22 @@ inline bool visibleAt(const Track& track, double t) {
     return track.keys.empty() || evaluateTrack(track, t, Pose{}).position.x >= 0.5f;
 }
 
+/// Calls visit(shape, model shape or nullptr) for each shape of `target` (an
+/// object or a model's part): a primitive is its own shape 0; a model's shapes
+/// are indexed among its primitives.
+template <class Visit>
+void forEachShapeOf(const SceneDesc& scene, FrameRef target, Visit&& visit) {
+    const SceneObject& object = scene.objects[target.object];
+    if (!isModel(object.kind)) {
+        visit(std::size_t(0), static_cast<const ModelShape*>(nullptr));
+        return;
+    }
+    const ModelDef& model = modelOf(object.kind);
+    for (std::size_t k = 0; k < model.shapes.size(); ++k) {
+        if (target.part < 0 || int(model.shapes[k].part) == target.part) visit(k, &model.shapes[k]);
+    }
+}
+
 /// Calls visit(object, shape) for every shape hidden at time t: a shape is
 /// seen while its object's and its part's `visible` tracks (where they have
 /// one) both show it (SPEC 10.7). A shape may be visited twice.
@@ -99,16 +115,9 @@ template <class Visit>
 void forEachHiddenShape(const SceneDesc& scene, double t, Visit&& visit) {
     for (const TargetTrack& v : scene.visibilityTracks) {
         if (visibleAt(v.track, t)) continue;
-        const SceneObject& object = scene.objects[v.target.object];
-        if (!isModel(object.kind)) {
-            visit(std::size_t(v.target.object), std::size_t(0));
-            continue;
-        }
-        const ModelDef& model = modelOf(object.kind);
-        for (std::size_t k = 0; k < model.shapes.size(); ++k) {
-            if (v.target.part >= 0 && int(model.shapes[k].part) != v.target.part) continue;
-            visit(std::size_t(v.target.object), k);
-        }
+        forEachShapeOf(scene, v.target, [&](std::size_t shape, const ModelShape*) {
+            visit(std::size_t(v.target.object), shape);
+        });
     }
 }
 
@@ -124,17 +133,9 @@ void forEachKeyedColour(const SceneDesc& scene, double t, Visit&& visit) {
         // An easing that overshoots stops at the ends of the scale.
         const Vec3 rgb{std::clamp(v.x, 0.0f, 255.0f), std::clamp(v.y, 0.0f, 255.0f),
                        std::clamp(v.z, 0.0f, 255.0f)};
-        const SceneObject& object = scene.objects[c.target.object];
-        if (!isModel(object.kind)) {
-            visit(std::size_t(c.target.object), std::size_t(0), rgb);
-            continue;
-        }
-        const ModelDef& model = modelOf(object.kind);
-        for (std::size_t k = 0; k < model.shapes.size(); ++k) {
-            const ModelShape& shape = model.shapes[k];
-            if (shape.ownColor || (c.target.part >= 0 && int(shape.part) != c.target.part)) continue;
-            visit(std::size_t(c.target.object), k, rgb);
-        }
+        forEachShapeOf(scene, c.target, [&](std::size_t shape, const ModelShape* inModel) {
+            if (!inModel || !inModel->ownColor) visit(std::size_t(c.target.object), shape, rgb);
+        });
     }
 }
 

@@ -796,8 +796,9 @@ class Parser : private ExpansionSink {
     Track& trackOf(Target t, TrackProperty property = std::nullopt) {
         if (property == KeyProperty::Zoom) return scene_.camera.zoom;
         if (property == KeyProperty::Intensity) return lightMotion(t).intensity;
-        if (property == KeyProperty::Colour) return scene_.colourTracks[colourTrackIndex(t)].track;
-        if (property == KeyProperty::Visible) return scene_.visibilityTracks[visibilityTrackIndex(t)].track;
+        if (property == KeyProperty::Colour) return scene_.colourTracks[targetTrackIndex(t, *property)].track;
+        if (property == KeyProperty::Visible)
+            return scene_.visibilityTracks[targetTrackIndex(t, *property)].track;
         if (t.camera) return scene_.camera.track;
         if (t.light >= 0) return lightMotion(t).track;
         SceneObject& o = scene_.objects[t.object];
@@ -806,27 +807,20 @@ class Parser : private ExpansionSink {
     LightMotion& lightMotion(Target t) { return scene_.lightMotions[static_cast<std::size_t>(t.light)]; }
     LightBook& lightBook(Target t) { return lightBooks_[static_cast<std::size_t>(t.light)]; }
 
-    /// The colour track of an object or part, made on its first key.
-    std::size_t colourTrackIndex(Target t) {
-        int& index = books_[t.object].colourTracks[static_cast<std::size_t>(t.part + 1)];
+    /// The index of an object's or part's colour track (SPEC 10.3) or visibility
+    /// track (10.7) in its list, made on its first key.
+    std::size_t targetTrackIndex(Target t, KeyProperty property) {
+        const bool visible = property == KeyProperty::Visible;
+        ObjectBook& book = books_[t.object];
+        int& index =
+            (visible ? book.visibilityTracks : book.colourTracks)[static_cast<std::size_t>(t.part + 1)];
         if (index < 0) {
-            index = static_cast<int>(scene_.colourTracks.size());
-            scene_.colourTracks.push_back({FrameRef{static_cast<std::uint32_t>(t.object), t.part}, {}});
-            colourTrackBooks_.push_back(-1);
-        }
-        return static_cast<std::size_t>(index);
-    }
-
-    /// The visibility track of an object or part (SPEC 10.7), made on its first key.
-    std::size_t visibilityTrackIndex(Target t) {
-        int& index = books_[t.object].visibilityTracks[static_cast<std::size_t>(t.part + 1)];
-        if (index < 0) {
-            index = static_cast<int>(scene_.visibilityTracks.size());
-            Track steps;
-            steps.interpolation = Interpolation::Step;
-            scene_.visibilityTracks.push_back(
-                {FrameRef{static_cast<std::uint32_t>(t.object), t.part}, steps});
-            visibilityTrackBooks_.push_back(-1);
+            std::vector<TargetTrack>& tracks = visible ? scene_.visibilityTracks : scene_.colourTracks;
+            index = static_cast<int>(tracks.size());
+            Track track;
+            if (visible) track.interpolation = Interpolation::Step;  // always a step (SPEC 10.7)
+            tracks.push_back({FrameRef{static_cast<std::uint32_t>(t.object), t.part}, track});
+            (visible ? visibilityTrackBooks_ : colourTrackBooks_).push_back(-1);
         }
         return static_cast<std::size_t>(index);
     }
@@ -1605,8 +1599,8 @@ class Parser : private ExpansionSink {
     int& trackBookIndex(Target t, TrackProperty property) {
         if (property == KeyProperty::Zoom) return cameraZoomBook_;
         if (property == KeyProperty::Intensity) return lightBook(t).intensityBook;
-        if (property == KeyProperty::Colour) return colourTrackBooks_[colourTrackIndex(t)];
-        if (property == KeyProperty::Visible) return visibilityTrackBooks_[visibilityTrackIndex(t)];
+        if (property == KeyProperty::Colour) return colourTrackBooks_[targetTrackIndex(t, *property)];
+        if (property == KeyProperty::Visible) return visibilityTrackBooks_[targetTrackIndex(t, *property)];
         if (t.camera) return cameraTrackBook_;
         if (t.light >= 0) return lightBook(t).poseBook;
         return books_[t.object].tracks[static_cast<std::size_t>(t.part + 1)];
