@@ -44,10 +44,26 @@ void printTrack(const std::string& target, const Track& track) {
     std::cout << '\n';
 }
 
-std::string refName(const SceneDesc& s, FrameRef ref) {
-    std::string name = s.objects[ref.object].name;
-    if (ref.part >= 0) name += std::string(".") + kPartNames[std::size_t(ref.part)];
+std::string refName(const SceneDesc& s, FrameRef ref, int shape = -1) {
+    const SceneObject& o = s.objects[ref.object];
+    std::string name = o.name;
+    if (ref.part >= 0) name += "." + o.model->parts[std::size_t(ref.part)].name;
+    if (shape >= 0) name += "." + o.model->shapes[std::size_t(shape)].name;
     return name;
+}
+
+/// The scene's own model types (SPEC 10.1): "lamp: 3 parts (base, arm <- base, …), 4 shapes".
+void printModels(const SceneDesc& s) {
+    for (const std::shared_ptr<const ModelType>& model : s.models) {
+        std::cout << "  model " << model->name << ": " << model->parts.size()
+                  << (model->parts.size() == 1 ? " part (" : " parts (");
+        for (std::size_t p = 0; p < model->parts.size(); ++p) {
+            const ModelPart& part = model->parts[p];
+            std::cout << (p > 0 ? ", " : "") << part.name;
+            if (part.parent >= 0) std::cout << " on " << model->parts[std::size_t(part.parent)].name;
+        }
+        std::cout << "), " << model->shapes.size() << (model->shapes.size() == 1 ? " shape\n" : " shapes\n");
+    }
 }
 
 void printVec(const Vec3& v) { std::cout << '(' << v.x << ", " << v.y << ", " << v.z << ')'; }
@@ -161,9 +177,10 @@ int runInfo(const std::string& path) {
     }
     printCamera(s);
     printLights(s);
+    printModels(s);
     for (std::size_t i = 0; i < s.objects.size(); ++i) {
         const SceneObject& o = s.objects[i];
-        std::cout << "  " << objectKindName(o.kind) << ' ' << o.name << '\n';
+        std::cout << "  " << typeNameOf(o) << ' ' << o.name << '\n';
         if (o.mayRide()) {
             // "rides on f2.rhand, from 48 on h.rhand, from 96 on nothing" (SPEC 9.2, 10.7).
             std::cout << "    rides on " << (o.attachedTo ? refName(s, *o.attachedTo) : "nothing");
@@ -173,13 +190,13 @@ int runInfo(const std::string& path) {
             std::cout << '\n';
         }
         printTrack(o.name, o.track);
-        if (isModel(o.kind))
-            for (int p = 0; p < kPartCount; ++p) printTrack(o.name + "." + kPartNames[p], o.partTracks[p]);
+        for (std::size_t p = 0; p < o.partTracks.size(); ++p)
+            printTrack(o.name + "." + o.model->parts[p].name, o.partTracks[p]);
         // Its colour keys (SPEC 10.3), the whole object's before its parts', and visibility keys (10.7).
         for (const TargetTrack& c : s.colourTracks)
-            if (c.target.object == i) printTrack(refName(s, c.target) + " colour", c.track);
+            if (c.target.object == i) printTrack(refName(s, c.target, c.shape) + " colour", c.track);
         for (const TargetTrack& v : s.visibilityTracks)
-            if (v.target.object == i) printTrack(refName(s, v.target) + " visible", v.track);
+            if (v.target.object == i) printTrack(refName(s, v.target, v.shape) + " visible", v.track);
     }
     return 0;
 }

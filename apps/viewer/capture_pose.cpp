@@ -6,7 +6,7 @@
 
 namespace f2::viewer {
 
-Pose selectionKeyPose(const SceneDesc& scene, std::size_t object, std::optional<PartId> part, int frame) {
+Pose selectionKeyPose(const SceneDesc& scene, std::size_t object, std::optional<int> part, int frame) {
     const SceneObject& target = scene.objects[object];
     return part ? evaluateTrack(target.partTracks[std::size_t(*part)], frame, Pose{})
                 : evaluateTrack(target.track, frame, target.rest);

@@ -12,7 +12,7 @@ namespace f2::viewer {
 /// The key of object `object` (or of its `part`) that holds it where its
 /// animation has it at `frame`: an object's own pose (in the frame it rides
 /// on, if attached), a part's offset and rotation about its pivot.
-Pose selectionKeyPose(const SceneDesc& scene, std::size_t object, std::optional<PartId> part, int frame);
+Pose selectionKeyPose(const SceneDesc& scene, std::size_t object, std::optional<int> part, int frame);
 
 /// The camera key for `frame`. Without `view`, the pose the camera's keys
 /// give there (its `/camera` pose without keys), so keying changes nothing on

@@ -27,7 +27,7 @@ namespace f2::viewer {
 /// evaluated frame at hand, so the GUI thread need not evaluate it again).
 struct BoundsOf {
     std::size_t object = 0;
-    std::optional<PartId> part;
+    std::optional<int> part;
     friend bool operator==(const BoundsOf&, const BoundsOf&) = default;
 };
 

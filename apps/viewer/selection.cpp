@@ -2,16 +2,20 @@
 
 #include <algorithm>
 
+#include "core/scene/models.h"
+
 namespace f2::viewer {
 
 QString Selection::target() const {
     QString name = QString::fromStdString(object);
-    if (part) name += QLatin1Char('.') + QString::fromLatin1(kPartNames[std::size_t(*part)]);
+    if (part) name += QLatin1Char('.') + QString::fromStdString(partName);
     return name;
 }
 
 Selection selectionOf(const SceneDesc& scene, const PickHit& hit) {
-    return {scene.objects[hit.object].name, hit.part};
+    const SceneObject& object = scene.objects[hit.object];
+    return {object.name, hit.part,
+            hit.part ? object.model->parts[std::size_t(*hit.part)].name : std::string()};
 }
 
 std::optional<std::size_t> findObject(const SceneDesc& scene, const Selection& selection) {

@@ -12,8 +12,9 @@
 namespace f2::viewer {
 
 struct Selection {
-    std::string object;          ///< the object's name
-    std::optional<PartId> part;  ///< a part of a robot or human
+    std::string object;       ///< the object's name
+    std::optional<int> part;  ///< a part of a model instance: its index among the model's parts
+    std::string partName;     ///< that part's name
 
     /// `name` or `name.part`, as the scene language writes the target.
     QString target() const;

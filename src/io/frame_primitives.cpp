@@ -7,16 +7,6 @@
 
 namespace f2 {
 
-namespace {
-std::string shapeLabel(const SceneObject& object, const ModelShape& shape) {
-    std::string label = object.name + "." + kPartNames[int(shape.part)];
-    // The robot's eyes are the two spheres on its head, left (-x) first.
-    if (object.kind == ObjectKind::Robot && shape.kind == ShapeKind::Sphere)
-        label += shape.centre.x < 0 ? " (left eye)" : " (right eye)";
-    return label;
-}
-}  // namespace
-
 std::vector<PlacedPrimitive> framePrimitives(const SceneDesc& scene, double t) {
     std::vector<PlacedPrimitive> out;
     out.reserve(scene.primitiveCount());
@@ -27,20 +17,21 @@ std::vector<PlacedPrimitive> framePrimitives(const SceneDesc& scene, double t) {
         const SceneObject& object = scene.objects[i];
         firstOf[i] = out.size();
         Transform worldFromObject = worldFromRoot(scene, i, t, attachedRoots);
-        if (!isModel(object.kind)) {
+        if (!object.model) {
             const Appearance& look = object.appearance[0];
             out.push_back({object.name, shapeKindOf(object.kind), object.size, worldFromObject, look.color,
                            look.material, look.checker, look.castsShadow});
             continue;
         }
-        auto worldFromPart = modelPartFrames(object, worldFromObject, t);
-        for (const ModelShape& shape : modelOf(object.kind).shapes) {
-            const Appearance& look = object.appearance[int(shape.part)];
-            Transform partFromShape{Mat3{}, shape.centre};
-            out.push_back({shapeLabel(object, shape), shape.kind, shape.size,
-                           worldFromPart[int(shape.part)] * partFromShape,
-                           shape.ownColor ? shape.color : look.color, look.material,
-                           shape.ownColor ? Checker{} : look.checker, look.castsShadow});
+        const std::vector<Transform> worldFromPart = modelPartFrames(object, worldFromObject, t);
+        const ModelType& model = *object.model;
+        for (std::size_t k = 0; k < model.shapes.size(); ++k) {
+            const ModelShape& shape = model.shapes[k];
+            const Appearance& look = object.appearance[k];
+            // Its full name in the language: `r1.head.leye`.
+            out.push_back({object.name + "." + model.parts[std::size_t(shape.part)].name + "." + shape.name,
+                           shape.kind, shape.size, modelShapeFrame(object, k, worldFromPart), look.color,
+                           look.material, look.checker, look.castsShadow});
         }
     }
     // Colour keys (SPEC 10.3), to the nearest of the formats' whole numbers.

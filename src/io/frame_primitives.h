@@ -12,7 +12,7 @@
 namespace f2 {
 
 struct PlacedPrimitive {
-    std::string label;  ///< "floor", "r1.head", "r1.head (left eye)"...
+    std::string label;  ///< "floor", "r1.head.face", "r1.head.leye"... (the shape's name in the language)
     ShapeKind kind = ShapeKind::Sphere;
     Vec3 size;                 ///< sphere (r, 0, 0); cylinder (r, h, 0); box (sx, sy, sz)
     Transform worldFromLocal;  ///< canonical frame: centred, cylinder axis local y

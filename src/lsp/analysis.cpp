@@ -4,6 +4,7 @@
 
 #include "core/parse/language.h"
 #include "core/parse/lexer.h"
+#include "core/scene/models.h"
 
 namespace f2::lsp {
 
@@ -141,8 +142,10 @@ std::vector<const VariableOccurrence*> Analysis::ownVariables() const {
     return out;
 }
 
-std::optional<PartSuffix> partAfter(const Analysis& a, const TokenSpan& name) {
-    if (!a.inDocument(name.loc)) return std::nullopt;
+std::optional<PartSuffix> partAfter(const Analysis& a, const TokenSpan& name, std::size_t object) {
+    if (!a.inDocument(name.loc) || object >= a.index.objects.size()) return std::nullopt;
+    const ModelType* model = a.index.objects[object].object.model.get();
+    if (!model) return std::nullopt;
     const int lineIndex = name.loc.line - 1;
     const std::string_view line = a.document.line(lineIndex);
     const std::size_t bom = lineIndex == 0 && a.document.text().starts_with("\xEF\xBB\xBF") ? 3 : 0;
@@ -151,10 +154,9 @@ std::optional<PartSuffix> partAfter(const Analysis& a, const TokenSpan& name) {
     std::size_t end = dot + 1;
     while (end < line.size() && isNameChar(line[end])) ++end;
     const std::string_view word = line.substr(dot + 1, end - dot - 1);
-    for (int i = 0; i < kPartCount; ++i) {
-        if (word == kPartNames[static_cast<std::size_t>(i)]) return PartSuffix{i, dot + 1, end};
-    }
-    return std::nullopt;
+    const int part = model->partIndex(word);
+    if (part < 0) return std::nullopt;
+    return PartSuffix{part, dot + 1, end};
 }
 
 SymbolAt symbolAt(const Analysis& a, Position p) {
@@ -169,7 +171,7 @@ SymbolAt symbolAt(const Analysis& a, Position p) {
         if (!a.inDocument(span.loc) || !contains(span, lineIndex, byte, bom)) {
             // The part after `name.` belongs to the same object.
             if (a.inDocument(span.loc) && span.loc.line == p.line + 1) {
-                if (const auto suffix = partAfter(a, span);
+                if (const auto suffix = partAfter(a, span, object);
                     suffix && byte >= suffix->begin && byte <= suffix->end) {
                     const std::string_view line = a.document.line(p.line);
                     at = {SymbolAt::Kind::Part,
@@ -265,19 +267,19 @@ std::optional<std::size_t> findLight(const SymbolIndex& index, std::string_view 
     return std::nullopt;
 }
 
-std::array<std::size_t, 5> keyCounts(const Analysis& a, std::size_t object) {
-    std::array<std::size_t, 5> counts{};
+std::vector<std::size_t> keyCounts(const Analysis& a, std::size_t object) {
+    const SceneObject& indexed = a.index.objects[object].object;
+    std::vector<std::size_t> counts(1 + (indexed.model ? indexed.model->parts.size() : 0), 0);
     if (a.result.ok() && object < a.result.scene->objects.size()) {
         const SceneObject& o = a.result.scene->objects[object];
         counts[0] = o.track.keys.size();
-        for (int i = 0; i < kPartCount; ++i) {
-            counts[static_cast<std::size_t>(i + 1)] = o.partTracks[static_cast<std::size_t>(i)].keys.size();
-        }
+        for (std::size_t i = 0; i < o.partTracks.size() && i + 1 < counts.size(); ++i)
+            counts[i + 1] = o.partTracks[i].keys.size();
         return counts;
     }
     for (const NameUse& use : a.index.uses) {
         if (use.light || use.object != object || use.command != "/key") continue;
-        const auto suffix = partAfter(a, use.name);
+        const auto suffix = partAfter(a, use.name, object);
         counts[suffix ? static_cast<std::size_t>(suffix->part + 1) : 0] += 1;
     }
     return counts;

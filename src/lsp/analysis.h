@@ -86,7 +86,7 @@ Analysis analyze(std::string uri, TextDocument document, const SourceOverlay& op
 struct SymbolAt {
     enum class Kind { None, Command, Object, Part, Variable, Include, Camera, Light } kind = Kind::None;
     std::size_t object = 0;    ///< Object and Part: index into index.objects; Light: into index.lights
-    int part = -1;             ///< Part: PartId index
+    int part = -1;             ///< Part: index among the model's parts
     std::string_view command;  ///< Command: its name
     Range range;               ///< the token (or the name or part within it)
     std::string text;          ///< Variable: its name; Include: the path as written
@@ -99,16 +99,16 @@ std::optional<std::size_t> findObject(const SymbolIndex& index, std::string_view
 /// The named light `name` in the index (SPEC 10.2), if any.
 std::optional<std::size_t> findLight(const SymbolIndex& index, std::string_view name);
 
-/// Keys of an object: [0] its own, [1 + PartId] each part's. From the scene
-/// when it parsed; otherwise the `/key` lines that name it in this document.
-std::array<std::size_t, 5> keyCounts(const Analysis& a, std::size_t object);
+/// Keys of an object: [0] its own, [1 + part] each part's of a model. From the
+/// scene when it parsed; otherwise the `/key` lines that name it in this document.
+std::vector<std::size_t> keyCounts(const Analysis& a, std::size_t object);
 
-/// A part name (body, head, lhand, rhand) right after `name` at a use or
-/// definition in this document: its PartId index and byte range in the line.
+/// A part name of object `object`'s model right after `name` at a use or
+/// definition in this document: its index among the parts and byte range in the line.
 struct PartSuffix {
     int part = -1;
     std::size_t begin = 0, end = 0;  ///< bytes in the line
 };
-std::optional<PartSuffix> partAfter(const Analysis& a, const TokenSpan& name);
+std::optional<PartSuffix> partAfter(const Analysis& a, const TokenSpan& name, std::size_t object);
 
 }  // namespace f2::lsp

@@ -6,6 +6,7 @@
 #include "core/parse/expression.h"
 #include "core/parse/language.h"
 #include "core/parse/lexer.h"
+#include "core/scene/models.h"
 #include "core/scene/scene_desc.h"
 #include "lsp/features.h"
 
@@ -96,13 +97,11 @@ void addModes(Json& items, const Range& replace) {
 void addParts(Json& items, const Analysis& a, std::string_view objectName, const Range& replace,
               std::string_view prefix, int beforeLine) {
     for (const IndexedObject* o : visibleObjects(a, beforeLine)) {
-        if (o->object.name != objectName || !isModel(o->object.kind)) continue;
-        for (const char* part : kPartNames) {
-            const std::string text = std::string(prefix) + part;
-            items.push_back(item(
-                text, kCompletionField,
-                std::string("part of ") + std::string(objectKindName(o->object.kind)) + " " + o->object.name,
-                replace, text));
+        if (o->object.name != objectName || !o->object.model) continue;
+        for (const ModelPart& part : o->object.model->parts) {
+            const std::string text = std::string(prefix) + part.name;
+            items.push_back(item(text, kCompletionField,
+                                 "part of " + o->object.model->name + " " + o->object.name, replace, text));
         }
         return;
     }

@@ -55,23 +55,24 @@ Json markdown(std::string text, const Range& range) {
 std::string objectHover(const Analysis& a, std::size_t index) {
     const IndexedObject& entry = a.index.objects[index];
     const SceneObject& o = entry.object;
-    std::string text = "**" + std::string(objectKindName(o.kind)) + "** `" + o.name + "`, created at " +
-                       placeText(a, entry.command);
+    std::string text =
+        "**" + std::string(typeNameOf(o)) + "** `" + o.name + "`, created at " + placeText(a, entry.command);
     if (a.inDocument(entry.command)) {
         text += ":\n```f2\n" + std::string(a.document.line(entry.command.line - 1)) + "\n```\n";
     } else {
         text += "\n\n";
     }
-    if (!isModel(o.kind)) text += "- " + shapeText(shapeKindOf(o.kind), o.size) + "\n";
+    if (!o.model) text += "- " + shapeText(shapeKindOf(o.kind), o.size) + "\n";
     const auto keys = keyCounts(a, index);
     text += "- keys: " + std::to_string(keys[0]);
-    if (isModel(o.kind)) {
+    if (o.model) {
         text += " (own)";
-        for (int i = 0; i < kPartCount; ++i) {
-            text += ", " + std::string(kPartNames[static_cast<std::size_t>(i)]) + " " +
-                    std::to_string(keys[static_cast<std::size_t>(i + 1)]);
+        std::string parts;
+        for (std::size_t i = 0; i < o.model->parts.size(); ++i) {
+            text += ", " + o.model->parts[i].name + " " + std::to_string(keys[i + 1]);
+            parts += (i > 0 ? ", " : "") + o.model->parts[i].name;
         }
-        text += "\n- parts: body, head, lhand, rhand";
+        text += "\n- parts: " + parts;
     }
     text += "\n";
     // The pose at frame 0 needs the keys, which only a scene without errors has.
@@ -88,17 +89,18 @@ std::string objectHover(const Analysis& a, std::size_t index) {
 
 std::string partHover(const Analysis& a, std::size_t index, int part) {
     const SceneObject& o = a.index.objects[index].object;
-    const std::string_view name = kPartNames[static_cast<std::size_t>(part)];
-    std::string text = "**part** `" + o.name + "." + std::string(name) + "` of " +
-                       std::string(objectKindName(o.kind)) + " `" + o.name + "`\n";
-    if (!isModel(o.kind)) return text;
-    const ModelDef& model = modelOf(o.kind);
+    if (!o.model) return "**part** of `" + o.name + "`\n";
+    const ModelType& model = *o.model;
     const ModelPart& mp = model.parts[static_cast<std::size_t>(part)];
-    const std::string parent = mp.parent < 0 ? "the root" : kPartNames[static_cast<std::size_t>(mp.parent)];
-    text += "- pivot " + vec(mp.pivot) + " in " + parent + "'s frame\n";
+    std::string text = "**part** `" + o.name + "." + mp.name + "` of " + model.name + " `" + o.name + "`\n";
+    const std::string parent =
+        mp.parent < 0 ? "the root" : model.parts[static_cast<std::size_t>(mp.parent)].name;
+    text += "- pivot " + vec(mp.pivot) + " in " + parent + "'s frame";
+    if (mp.rest) text += ", rest rotation " + vec(mp.restRotation);
+    text += "\n";
     for (const ModelShape& s : model.shapes) {
-        if (static_cast<int>(s.part) != part) continue;
-        text += "- " + shapeText(s.kind, s.size) + " centred at " + vec(s.centre) +
+        if (s.part != part) continue;
+        text += "- `" + s.name + "`: " + shapeText(s.kind, s.size) + " centred at " + vec(s.centre) +
                 (s.ownColor ? " (keeps its colour)" : "") + "\n";
     }
     const auto keys = keyCounts(a, index);
@@ -169,7 +171,8 @@ std::optional<std::pair<std::string, std::string>> findCommandLine(const Analysi
 
 std::string frameRefText(const SceneDesc& scene, const FrameRef& ref) {
     std::string text = "`" + scene.objects[ref.object].name;
-    if (ref.part >= 0) text += "." + std::string(kPartNames[static_cast<std::size_t>(ref.part)]);
+    if (ref.part >= 0)
+        text += "." + scene.objects[ref.object].model->parts[static_cast<std::size_t>(ref.part)].name;
     return text + "`";
 }
 

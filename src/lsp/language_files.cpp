@@ -5,6 +5,7 @@
 
 #include "core/parse/expression.h"
 #include "core/parse/language.h"
+#include "core/scene/models.h"
 #include "core/scene/scene_desc.h"
 
 namespace f2::lsp {
@@ -81,7 +82,8 @@ const std::array<NamedList, 16> kLists = {{
     {"parts",
      [] {
          std::vector<std::string> words;
-         for (const char* p : kPartNames) words.emplace_back(p);
+         // The built-in models' parts (a scene's own models name their own).
+         for (const ModelPart& p : robotModel()->parts) words.push_back(p.name);
          return words;
      }},
     {"camera", [] { return std::vector<std::string>{std::string(kCameraName)}; }},

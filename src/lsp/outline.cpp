@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/parse/lexer.h"
+#include "core/scene/models.h"
 #include "lsp/features.h"
 
 namespace f2::lsp {
@@ -41,15 +42,15 @@ Json documentSymbols(const Analysis& a) {
         const Range selection = a.rangeOf(entry.name);
         const Range whole = a.document.lineRange(entry.command.line - 1);
         Json symbol = {{"name", o.name},
-                       {"detail", std::string(objectKindName(o.kind)) + ", " + keysText(keys[0])},
+                       {"detail", std::string(typeNameOf(o)) + ", " + keysText(keys[0])},
                        {"kind", kSymbolObject},
                        {"range", toJson(whole)},
                        {"selectionRange", toJson(selection)}};
-        if (isModel(o.kind)) {
+        if (o.model) {
             Json parts = Json::array();
-            for (int p = 0; p < kPartCount; ++p) {
-                parts.push_back({{"name", kPartNames[static_cast<std::size_t>(p)]},
-                                 {"detail", keysText(keys[static_cast<std::size_t>(p + 1)])},
+            for (std::size_t p = 0; p < o.model->parts.size(); ++p) {
+                parts.push_back({{"name", o.model->parts[p].name},
+                                 {"detail", keysText(keys[p + 1])},
                                  {"kind", kSymbolField},
                                  {"range", toJson(whole)},
                                  {"selectionRange", toJson(selection)}});

@@ -15,9 +15,12 @@
 #include "core/anim/frame_builder.h"
 #include "core/scene/bench_scenes.h"
 #include "core/scene/models.h"
+#include "robot_parts.h"
 #include "test_scenes.h"
 
 namespace f2 {
+
+using test::RobotPart;
 namespace {
 
 Vec3 unitColor(Color8 c) { return Vec3{float(c.r), float(c.g), float(c.b)} / 255.0f; }
@@ -30,7 +33,7 @@ EvaluatedFrame referenceFrame(const SceneDesc& scene, double t) {
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
         const Transform root = worldFromRoot(scene, i, t, frame.attachedRoots);
-        if (!isModel(object.kind)) {
+        if (!object.model) {
             frame.primitives.push_back(makePrimitive(shapeKindOf(object.kind), object.size, root));
             const Appearance& look = object.appearance[0];
             frame.surfaces.push_back(
@@ -38,14 +41,13 @@ EvaluatedFrame referenceFrame(const SceneDesc& scene, double t) {
             continue;
         }
         const auto worldFromPart = modelPartFrames(object, root, t);
-        for (const ModelShape& shape : modelOf(object.kind).shapes) {
-            const Transform& part = worldFromPart[int(shape.part)];
-            frame.primitives.push_back(makePrimitive(shape.kind, shape.size, part.translated(shape.centre)));
-            const Appearance& look = object.appearance[int(shape.part)];
-            frame.surfaces.push_back(shape.ownColor
-                                         ? Surface{unitColor(shape.color), look.material, Vec3{}, 0.0f}
-                                         : Surface{unitColor(look.color), look.material,
-                                                   unitColor(look.checker.color), look.checker.size});
+        for (std::size_t k = 0; k < object.model->shapes.size(); ++k) {
+            const ModelShape& shape = object.model->shapes[k];
+            frame.primitives.push_back(
+                makePrimitive(shape.kind, shape.size, modelShapeFrame(object, k, worldFromPart)));
+            const Appearance& look = object.appearance[k];
+            frame.surfaces.push_back(
+                {unitColor(look.color), look.material, unitColor(look.checker.color), look.checker.size});
         }
     }
     return frame;
@@ -160,8 +162,8 @@ constexpr const char* kTurns =
 
 TEST(AnimationProgram, PartsTurningAboutOneAxisMatchTheSceneDescBitForBit) {
     SceneDesc scene = test::sceneFromText(kTurns);
-    for (Key& key : scene.objects[1].partTracks[int(PartId::RHand)].keys) key.pose.position.x = -0.0f;
-    for (Key& key : scene.objects[0].partTracks[int(PartId::Head)].keys) key.pose.rotation.z = -0.0f;
+    for (Key& key : scene.objects[1].partTracks[int(RobotPart::RHand)].keys) key.pose.position.x = -0.0f;
+    for (Key& key : scene.objects[0].partTracks[int(RobotPart::Head)].keys) key.pose.rotation.z = -0.0f;
     const auto program = AnimationProgram::compile(scene);
     // a: head, lhand, rhand; h: body, head; g: lhand. b's three stay general.
     EXPECT_EQ(program->turnTracks.size(), 6u);

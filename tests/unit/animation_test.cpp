@@ -6,9 +6,12 @@
 #include "core/anim/frame_builder.h"
 #include "core/anim/track.h"
 #include "core/render/camera.h"
+#include "robot_parts.h"
 #include "test_scenes.h"
 
 namespace f2 {
+
+using test::RobotPart;
 namespace {
 
 Track trackOf(std::initializer_list<std::pair<double, float>> keys, Interpolation mode) {
@@ -104,13 +107,13 @@ TEST(Animation, RobotRightHandPivotAfterTurnAndLean) {
     // Body pivot (0,-105,0); rhand pivot in body frame (52,140,0) turned by Rx(20):
     //   (52, 140 cos20, 140 sin20) = (52, 131.5570, 47.8828); plus pivot -> (52, 26.5570, 47.8828)
     // Ry(90): x' = z, z' = -x -> (47.8828, 26.5570, -52); plus (100, 0, 50):
-    Vec3 pivot = parts[int(PartId::RHand)].translation;
+    Vec3 pivot = parts[int(RobotPart::RHand)].translation;
     EXPECT_NEAR(pivot.x, 147.8828, 1e-3);
     EXPECT_NEAR(pivot.y, 26.5570, 1e-3);
     EXPECT_NEAR(pivot.z, -2.0, 1e-3);
     // Halfway (frame 5) the lean is 10 degrees: y = -105 + 140 cos10 = 32.8730
     auto half = modelPartFrames(robot, objectFrame(robot, 5), 5);
-    EXPECT_NEAR(half[int(PartId::RHand)].translation.y, 32.8730, 1e-3);
+    EXPECT_NEAR(half[int(RobotPart::RHand)].translation.y, 32.8730, 1e-3);
 }
 
 TEST(Animation, PositiveArmRxSwingsBackwardUp) {
@@ -173,7 +176,7 @@ TEST(Animation, SeedExampleTurnsTheRobotAndRaisesItsArms) {
     double angle = std::atan2(forward.x, forward.z) * 180 / kPi;
     EXPECT_NEAR(angle, 157.5, 1e-3);
     // Frame 10: the left hand is halfway between rest (5) and (120, 45, 0) (15).
-    Pose hand = evaluateTrack(robot.partTracks[int(PartId::LHand)], 10, Pose{});
+    Pose hand = evaluateTrack(robot.partTracks[int(RobotPart::LHand)], 10, Pose{});
     EXPECT_FLOAT_EQ(hand.rotation.x, 60);
     EXPECT_FLOAT_EQ(hand.rotation.y, 22.5f);
 }

@@ -5,9 +5,12 @@
 #include "core/anim/frame_builder.h"
 #include "core/parse/parser.h"
 #include "io/frame_primitives.h"
+#include "robot_parts.h"
 #include "test_scenes.h"
 
 namespace f2 {
+
+using test::RobotPart;
 namespace {
 
 using test::expectOnlyError;
@@ -85,7 +88,7 @@ TEST(Attach, AModelOnAnObjectCarriesItsParts) {
     const Transform root = worldFromRef(s, {std::uint32_t(h), -1}, 10);
     EXPECT_VEC_NEAR(root.translation, (Vec3{320, 110, 0}), kTol);
     // The head's pivot frame: root + (0, −105, 0) + (0, 140, 0).
-    EXPECT_VEC_NEAR(worldFromRef(s, {std::uint32_t(h), int(PartId::Head)}, 10).translation,
+    EXPECT_VEC_NEAR(worldFromRef(s, {std::uint32_t(h), int(RobotPart::Head)}, 10).translation,
                     (Vec3{320, 145, 0}), kTol);
     EvaluatedFrame frame;
     evaluateFrame(s, 10, frame);
@@ -158,7 +161,7 @@ TEST(AttachAt, TheRideFollowsItsHolderAtEveryFrame) {
 TEST(AttachAt, MountAtTakesTheLatestChangeAtOrBeforeT) {
     const SceneDesc s = sceneFromText(kHandOver);
     const SceneObject& ball = s.objects[indexOf(s, "ball")];
-    const FrameRef f2Hand{0, int(PartId::RHand)}, hHand{1, int(PartId::RHand)};
+    const FrameRef f2Hand{0, int(RobotPart::RHand)}, hHand{1, int(RobotPart::RHand)};
     EXPECT_EQ(mountAt(ball, 0), f2Hand);
     EXPECT_EQ(mountAt(ball, 47.999), f2Hand);
     EXPECT_EQ(mountAt(ball, 48), hHand);

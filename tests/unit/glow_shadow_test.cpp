@@ -10,11 +10,15 @@
 #include "core/render/pixel_report.h"
 #include "core/render/renderer.h"
 #include "core/render/shading.h"
+#include "core/scene/models.h"
 #include "io/pov_export.h"
 #include "render_paths.h"
+#include "robot_parts.h"
 #include "test_scenes.h"
 
 namespace f2 {
+
+using test::RobotPart;
 namespace {
 
 TEST(GlowErrors, EachAtItsPlace) {
@@ -57,8 +61,9 @@ TEST(Glow, IsReadIntoTheMaterialAndNoShadowIntoTheLook) {
     EXPECT_EQ(s.objects[1].appearance[0].material.reflection, 0.5f);
     EXPECT_FALSE(s.objects[0].appearance[0].castsShadow);
     EXPECT_TRUE(s.objects[1].appearance[0].castsShadow);
-    for (int part = 0; part < kPartCount; ++part)
-        EXPECT_EQ(s.objects[2].appearance[std::size_t(part)].castsShadow, part != int(PartId::Head)) << part;
+    const ModelType& robot = *s.objects[2].model;
+    for (std::size_t k = 0; k < robot.shapes.size(); ++k)
+        EXPECT_EQ(s.objects[2].appearance[k].castsShadow, robot.shapes[k].part != RobotPart::Head) << k;
 }
 
 using test::renderText;

@@ -9,9 +9,12 @@
 #include "core/anim/frame_builder.h"
 #include "core/anim/track.h"
 #include "core/parse/language.h"
+#include "robot_parts.h"
 #include "test_scenes.h"
 
 namespace f2 {
+
+using test::RobotPart;
 namespace {
 
 using test::sceneFromText;
@@ -214,7 +217,7 @@ TEST(Interpolation, PartKeysAndRestKeysTakeModesToo) {
         "/robot r 0 0 0\n"
         "/key 0 r.head ease_out\n"
         "/key 4 r.head 0 0 0 0 64 0\n");
-    const Track& head = s.objects[0].partTracks[std::size_t(PartId::Head)];
+    const Track& head = s.objects[0].partTracks[std::size_t(RobotPart::Head)];
     ASSERT_EQ(head.keys.size(), 2u);
     EXPECT_EQ(head.keys[0].pose, Pose{});
     EXPECT_FLOAT_EQ(evaluateTrack(head, 1, Pose{}).rotation.y, float(64 * 0.578125));

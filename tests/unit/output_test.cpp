@@ -159,8 +159,8 @@ TEST(FramePrimitives, RobotExpandsInPeerOrderWithExactTransforms) {
     Vec3 z = prims[0].worldFromLocal.linear.column(2);
     EXPECT_NEAR(z.x, 1, 1e-6);
     EXPECT_EQ(prims[0].worldFromLocal.translation, (Vec3{1, 2, 3}));
-    const char* robot[] = {"r.body",  "r.head", "r.head (left eye)", "r.head (right eye)",
-                           "r.lhand", "r.rhand"};
+    const char* robot[] = {"r.body.torso", "r.head.face", "r.head.leye",
+                           "r.head.reye",  "r.lhand.arm", "r.rhand.arm"};
     for (int i = 0; i < 6; ++i) EXPECT_EQ(prims[1 + i].label, robot[i]);
     EXPECT_EQ(prims[3].color, (Color8{20, 20, 20}));  // eyes keep their colour
     EXPECT_EQ(prims[2].color, (Color8{1, 2, 3}));
@@ -168,8 +168,8 @@ TEST(FramePrimitives, RobotExpandsInPeerOrderWithExactTransforms) {
     Vec3 body = prims[1].worldFromLocal.translation;
     EXPECT_NEAR(body.y, -30, 1e-4);
     EXPECT_NEAR(body.z, 100, 1e-4);
-    EXPECT_EQ(prims[7].label, "h.body");
-    EXPECT_EQ(prims[10].label, "h.rhand");
+    EXPECT_EQ(prims[7].label, "h.body.torso");
+    EXPECT_EQ(prims[10].label, "h.rhand.arm");
 }
 
 TEST(FramePrimitives, NumbersReadBackExactly) {

@@ -40,8 +40,7 @@ TEST(CreatingCommandErrors, AWrongArgumentCountStillRegistersTheNameWithItsKind)
     EXPECT_EQ(
         messages("/sphere s 1 0 0\n/key 0 s.head\n"),
         (Lines{"1:1: error: '/sphere' takes 5 or 8 arguments, got 4",
-               "2:10: error: '/key' on a part of a primitive: 's' is a sphere; only robots and humans have "
-               "parts"}));
+               "2:10: error: '/key' on a part of a primitive: 's' is a sphere; only models have parts"}));
     EXPECT_EQ(
         messages("/box b 1 2\n/cylinder c 1\n/human h\n/paint b 1 1 1\n/paint c 1 1 1\n/key 1 h.rhand\n"),
         (Lines{"1:1: error: '/box' takes 7 or 10 arguments, got 3",
@@ -287,8 +286,7 @@ TEST(SceneWarnings, ASecondInterpForTheSameTarget) {
     const ParseResult r = parseScene(text, kFile);
     ASSERT_TRUE(r.ok());
     EXPECT_EQ(r.scene->objects[0].track.interpolation, Interpolation::Linear);  // the last one wins
-    EXPECT_EQ(r.scene->objects[0].partTracks[static_cast<std::size_t>(PartId::LHand)].interpolation,
-              Interpolation::Spline);
+    EXPECT_EQ(r.scene->objects[0].partTracks[2].interpolation /* lhand */, Interpolation::Spline);
     // The camera is a target like any other.
     EXPECT_EQ(messages("/sphere s 1 0 0 5\n/amb_light 1\n/interp camera ease\n/interp camera spline\n"),
               (Lines{"4:9: warning: interpolation of 'camera' is given again; it replaces the one at 3:9"}));

@@ -5,9 +5,12 @@
 
 #include "core/parse/language.h"
 #include "core/parse/parser.h"
+#include "robot_parts.h"
 #include "test_scenes.h"
 
 namespace f2 {
+
+using test::RobotPart;
 namespace {
 
 using test::sceneFromText;
@@ -72,7 +75,7 @@ TEST(ParserCamera, LookAtAPointAnObjectOrAPart) {
     EXPECT_EQ(sceneFromText("/look_at 1 2 3\n").camera.lookAt->point, (Vec3{1, 2, 3}));
     const SceneDesc s = sceneFromText(std::string(kTwo) + "/look_at r.rhand\n");
     ASSERT_TRUE(s.camera.lookAt && s.camera.lookAt->target);
-    EXPECT_EQ(*s.camera.lookAt->target, (FrameRef{1, int(PartId::RHand)}));
+    EXPECT_EQ(*s.camera.lookAt->target, (FrameRef{1, int(RobotPart::RHand)}));
     EXPECT_FALSE(sceneFromText("/fps 24\n").camera.lookAt.has_value());
 }
 
@@ -88,7 +91,7 @@ TEST(ParserCamera, LookAtErrors) {
 // 9.2 Attachments
 TEST(ParserAttach, ObjectsAndTheCameraRideOnObjectsOrParts) {
     const SceneDesc s = sceneFromText(std::string(kTwo) + "/attach a r.lhand\n/attach camera a\n");
-    EXPECT_EQ(s.objects[0].attachedTo, (FrameRef{1, int(PartId::LHand)}));
+    EXPECT_EQ(s.objects[0].attachedTo, (FrameRef{1, int(RobotPart::LHand)}));
     EXPECT_FALSE(s.objects[1].attachedTo.has_value());
     EXPECT_EQ(s.camera.attachedTo, (FrameRef{0, -1}));
     ASSERT_EQ(s.attachOrder.size(), 1u);
@@ -141,7 +144,7 @@ TEST(ParserModes, EveryModeWordOnKeysAndInterp) {
                                           "\n/key 1 r.head 0 0 0 1 2 3 " + w + "\n");
         EXPECT_EQ(easingText(s.objects[0].track.interpolation), word);
         EXPECT_EQ(easingText(*s.objects[0].track.keys[0].mode), word);
-        EXPECT_EQ(easingText(*s.objects[0].partTracks[std::size_t(PartId::Head)].keys[0].mode), word);
+        EXPECT_EQ(easingText(*s.objects[0].partTracks[std::size_t(RobotPart::Head)].keys[0].mode), word);
     }
 }
 

@@ -17,9 +17,13 @@
 
 #include "core/parse/lexer.h"
 #include "core/parse/number.h"
+#include "core/scene/models.h"
+#include "robot_parts.h"
 #include "test_scenes.h"
 
 namespace f2 {
+
+using test::RobotPart;
 namespace {
 
 namespace fs = std::filesystem;
@@ -51,8 +55,11 @@ const SceneObject& object(const SceneDesc& s, std::string_view name) {
     return kNone;
 }
 
-const Appearance& part(const SceneObject& o, PartId p) { return o.appearance[static_cast<std::size_t>(p)]; }
-const Track& partTrack(const SceneObject& o, PartId p) { return o.partTracks[static_cast<std::size_t>(p)]; }
+/// The look of a part's main shape (the head's face, not its eyes).
+const Appearance& part(const SceneObject& o, int p) {
+    return o.appearance[static_cast<std::size_t>(o.model->mainShapeOf(static_cast<int>(p)))];
+}
+const Track& partTrack(const SceneObject& o, int p) { return o.partTracks[static_cast<std::size_t>(p)]; }
 
 Pose makePose(float px, float py, float pz, float rx, float ry, float rz) {
     return {{px, py, pz}, {rx, ry, rz}};
@@ -288,9 +295,9 @@ TEST(Parser, PrimitivesWithAndWithoutRotation) {
 TEST(Parser, RobotAndHuman) {
     const SceneDesc s = parseOk("/robot r1 0 0 200 0 180 0\n/human _h2 1 2 3\n");
     ASSERT_EQ(s.objects.size(), 2u);
-    EXPECT_EQ(s.objects[0].kind, ObjectKind::Robot);
+    EXPECT_EQ(typeNameOf(s.objects[0]), "robot");
     EXPECT_EQ(s.objects[0].rest, makePose(0, 0, 200, 0, 180, 0));
-    EXPECT_EQ(s.objects[1].kind, ObjectKind::Human);
+    EXPECT_EQ(typeNameOf(s.objects[1]), "human");
     EXPECT_EQ(s.objects[1].name, "_h2");
     EXPECT_EQ(s.objects[1].rest, makePose(1, 2, 3, 0, 0, 0));
     EXPECT_EQ(s.primitiveCount(), 10u);
@@ -301,24 +308,28 @@ TEST(Parser, PaintPrimitiveModelAndPart) {
         "/sphere s 1 0 0 0\n/robot r 0 0 0\n/human h 0 0 0\n"
         "/paint s 1 2 3\n/paint r 10 20 30\n/paint h.head 7 8 9\n");
     EXPECT_EQ(object(s, "s").appearance[0].color, (Color8{1, 2, 3}));
-    for (const Appearance& a : object(s, "r").appearance) EXPECT_EQ(a.color, (Color8{10, 20, 30}));
+    // Every shape of the robot but its eyes, painted in the model (SPEC 10.1).
+    const SceneObject& r = object(s, "r");
+    for (std::size_t k = 0; k < r.appearance.size(); ++k)
+        EXPECT_EQ(r.appearance[k].color,
+                  (r.model->shapes[k].ownColor ? Color8{20, 20, 20} : Color8{10, 20, 30}));
     const SceneObject& h = object(s, "h");
-    EXPECT_EQ(part(h, PartId::Head).color, (Color8{7, 8, 9}));
-    EXPECT_EQ(part(h, PartId::Body).color, (Color8{200, 200, 200}));
-    EXPECT_EQ(part(h, PartId::LHand).color, (Color8{200, 200, 200}));
+    EXPECT_EQ(part(h, RobotPart::Head).color, (Color8{7, 8, 9}));
+    EXPECT_EQ(part(h, RobotPart::Body).color, (Color8{200, 200, 200}));
+    EXPECT_EQ(part(h, RobotPart::LHand).color, (Color8{200, 200, 200}));
 }
 
 TEST(Parser, PaintAppliesInFileOrder) {
     // A part painted before its robot is repainted by the robot's /paint...
     SceneDesc s = parseOk("/robot r 0 0 0\n/paint r.head 1 1 1\n/paint r 2 2 2\n");
-    EXPECT_EQ(part(object(s, "r"), PartId::Head).color, (Color8{2, 2, 2}));
+    EXPECT_EQ(part(object(s, "r"), RobotPart::Head).color, (Color8{2, 2, 2}));
     // ...and a part painted after keeps its own colour.
     s = parseOk("/robot r 0 0 0\n/paint r 2 2 2\n/paint r.lhand 1 1 1\n");
     const SceneObject& r = object(s, "r");
-    EXPECT_EQ(part(r, PartId::LHand).color, (Color8{1, 1, 1}));
-    EXPECT_EQ(part(r, PartId::RHand).color, (Color8{2, 2, 2}));
-    EXPECT_EQ(part(r, PartId::Head).color, (Color8{2, 2, 2}));
-    EXPECT_EQ(part(r, PartId::Body).color, (Color8{2, 2, 2}));
+    EXPECT_EQ(part(r, RobotPart::LHand).color, (Color8{1, 1, 1}));
+    EXPECT_EQ(part(r, RobotPart::RHand).color, (Color8{2, 2, 2}));
+    EXPECT_EQ(part(r, RobotPart::Head).color, (Color8{2, 2, 2}));
+    EXPECT_EQ(part(r, RobotPart::Body).color, (Color8{2, 2, 2}));
 }
 
 TEST(Parser, MaterialPrimitiveModelAndPartInFileOrder) {
@@ -330,12 +341,12 @@ TEST(Parser, MaterialPrimitiveModelAndPartInFileOrder) {
         "/material r.rhand 1 2 3 5\n");
     EXPECT_EQ(object(s, "b").appearance[0].material, (Material{0.5f, 0.25f, 0, 1}));
     const SceneObject& r = object(s, "r");
-    EXPECT_EQ(part(r, PartId::Head).material, (Material{0.1f, 0.2f, 0.3f, 4}));
-    EXPECT_EQ(part(r, PartId::Body).material, (Material{0.1f, 0.2f, 0.3f, 4}));
-    EXPECT_EQ(part(r, PartId::LHand).material, (Material{0.1f, 0.2f, 0.3f, 4}));
-    EXPECT_EQ(part(r, PartId::RHand).material, (Material{1, 2, 3, 5}));
+    EXPECT_EQ(part(r, RobotPart::Head).material, (Material{0.1f, 0.2f, 0.3f, 4}));
+    EXPECT_EQ(part(r, RobotPart::Body).material, (Material{0.1f, 0.2f, 0.3f, 4}));
+    EXPECT_EQ(part(r, RobotPart::LHand).material, (Material{0.1f, 0.2f, 0.3f, 4}));
+    EXPECT_EQ(part(r, RobotPart::RHand).material, (Material{1, 2, 3, 5}));
     // Material and colour are independent.
-    EXPECT_EQ(part(r, PartId::RHand).color, (Color8{200, 200, 200}));
+    EXPECT_EQ(part(r, RobotPart::RHand).color, (Color8{200, 200, 200}));
 }
 
 TEST(Parser, AnimAcceptsBothFormsAndChangesNothing) {
@@ -357,11 +368,11 @@ TEST(Parser, KeyWithoutNumbersUsesRestState) {
     ASSERT_EQ(r.track.keys.size(), 1u);
     EXPECT_EQ(r.track.keys[0].time, 7);
     EXPECT_EQ(r.track.keys[0].pose, r.rest);  // the object as created
-    const Track& head = partTrack(r, PartId::Head);
+    const Track& head = partTrack(r, RobotPart::Head);
     ASSERT_EQ(head.keys.size(), 1u);
     EXPECT_EQ(head.keys[0].time, 8);
     EXPECT_EQ(head.keys[0].pose, Pose{});  // zero offset and rotation
-    EXPECT_TRUE(partTrack(r, PartId::Body).keys.empty());
+    EXPECT_TRUE(partTrack(r, RobotPart::Body).keys.empty());
     EXPECT_EQ(s.lastFrame(), 8);
 }
 
@@ -374,7 +385,7 @@ TEST(Parser, KeyWithSixNumbersOnObjectPrimitiveAndPart) {
     EXPECT_EQ(object(s, "r1").track.keys[0].pose, makePose(1, 2, 3, 4, 5, 6));
     EXPECT_EQ(object(s, "b").track.keys[0].time, 10);
     EXPECT_EQ(object(s, "b").track.keys[0].pose, makePose(-1, -2, -3, -4, -5, -6));
-    const Track& l = partTrack(object(s, "r1"), PartId::LHand);
+    const Track& l = partTrack(object(s, "r1"), RobotPart::LHand);
     ASSERT_EQ(l.keys.size(), 1u);
     EXPECT_EQ(l.keys[0].pose, makePose(0, 0, 0, 120, 45, 0));
     EXPECT_EQ(s.lastFrame(), 15);
@@ -430,7 +441,7 @@ TEST(Parser, DuplicateKeyOutOfOrderReplacesWithWarningInFileOrder) {
         "r.head\n",
         kFile);
     ASSERT_TRUE(r.ok()) << dump(r);
-    const Track& t = partTrack(r.scene->objects[0], PartId::Head);
+    const Track& t = partTrack(r.scene->objects[0], RobotPart::Head);
     EXPECT_EQ(framesOf(t), (std::vector<double>{0, 5, 9}));
     EXPECT_FLOAT_EQ(t.keys[1].pose.position.x, 2);
 }
@@ -441,8 +452,8 @@ TEST(Parser, InterpolationPerTarget) {
         "/interp r ease\n/interp r.lhand spline\n/interp s linear\n/interp s spline\n");
     const SceneObject& r = object(s, "r");
     EXPECT_EQ(r.track.interpolation, Interpolation::Ease);
-    EXPECT_EQ(partTrack(r, PartId::LHand).interpolation, Interpolation::Spline);
-    EXPECT_EQ(partTrack(r, PartId::RHand).interpolation, Interpolation::Linear);
+    EXPECT_EQ(partTrack(r, RobotPart::LHand).interpolation, Interpolation::Spline);
+    EXPECT_EQ(partTrack(r, RobotPart::RHand).interpolation, Interpolation::Linear);
     EXPECT_EQ(object(s, "s").track.interpolation, Interpolation::Spline);  // the last one wins
 }
 
@@ -450,7 +461,7 @@ TEST(Parser, NamesMayLookLikePartsOrCommands) {
     const SceneDesc s =
         parseOk("/sphere head 1 0 0 0\n/robot key 0 0 0\n/paint head 1 1 1\n/key 1 key.head\n");
     EXPECT_EQ(object(s, "head").appearance[0].color, (Color8{1, 1, 1}));
-    EXPECT_EQ(partTrack(object(s, "key"), PartId::Head).keys.size(), 1u);
+    EXPECT_EQ(partTrack(object(s, "key"), RobotPart::Head).keys.size(), 1u);
 }
 
 TEST(Parser, SeedExampleOfSpec8) {
@@ -493,23 +504,23 @@ TEST(Parser, SeedExampleOfSpec8) {
     EXPECT_EQ(gr.appearance[0].color, (Color8{0, 200, 0}));
 
     const SceneObject& r1 = s.objects[1];
-    EXPECT_EQ(r1.kind, ObjectKind::Robot);
+    EXPECT_EQ(typeNameOf(r1), "robot");
     EXPECT_EQ(r1.rest, makePose(0, 0, 200, 0, 180, 0));
     ASSERT_EQ(framesOf(r1.track), (std::vector<double>{0, 5}));
     EXPECT_EQ(r1.track.keys[0].pose, r1.rest);
     EXPECT_EQ(r1.track.keys[1].pose, makePose(0, 0, 200, 0, 135, 0));
-    const Track& l = partTrack(r1, PartId::LHand);
+    const Track& l = partTrack(r1, RobotPart::LHand);
     ASSERT_EQ(framesOf(l), (std::vector<double>{0, 5, 15}));
     EXPECT_EQ(l.keys[0].pose, Pose{});
     EXPECT_EQ(l.keys[1].pose, Pose{});
     EXPECT_EQ(l.keys[2].pose, makePose(0, 0, 0, 120, 45, 0));
-    const Track& rh = partTrack(r1, PartId::RHand);
+    const Track& rh = partTrack(r1, RobotPart::RHand);
     ASSERT_EQ(framesOf(rh), (std::vector<double>{0, 5, 15}));
     EXPECT_EQ(rh.keys[2].pose, makePose(0, 0, 0, 120, -45, 0));
-    EXPECT_TRUE(partTrack(r1, PartId::Head).keys.empty());
+    EXPECT_TRUE(partTrack(r1, RobotPart::Head).keys.empty());
 
     const SceneObject& h1 = s.objects[2];
-    EXPECT_EQ(h1.kind, ObjectKind::Human);
+    EXPECT_EQ(typeNameOf(h1), "human");
     EXPECT_EQ(h1.rest, makePose(300, 0, 150, 0, 90, 0));
     EXPECT_EQ(s.lastFrame(), 15);
 
@@ -794,7 +805,9 @@ TEST(ParserError, UnknownPartPointsAtThePart) {
     expectError(base + "/anim r1 leg\n", 2, 10, "unknown part 'leg'");
     expectError(base + "/paint r1.Head 1 1 1\n", 2, 11, "unknown part 'Head'");
     expectError(base + "/paint r1. 1 1 1\n", 2, 11, "unknown part ''");
-    expectError(base + "/paint r1.head.x 1 1 1\n", 2, 11, "unknown part 'head.x'");
+    // A third word is a shape of the part (SPEC 10.1).
+    expectError(base + "/paint r1.head.x 1 1 1\n", 2, 16,
+                "unknown shape 'x' on the part 'head' of 'robot' (expected face, leye, reye)");
 }
 
 TEST(ParserError, PartOfAPrimitive) {
@@ -831,13 +844,13 @@ TEST(ParserError, ReportsEveryErrorAndKeepsNoScene) {
     EXPECT_FALSE(r.scene.has_value());
     std::vector<std::string> got;
     for (const Diagnostic& d : r.diagnostics) got.push_back(d.format());
-    EXPECT_EQ(got, (std::vector<std::string>{
-                       "t.f2:2:1: error: unknown command '/cylnder' (did you mean '/cylinder'?)",
-                       "t.f2:3:11: error: radius must be > 0, got -1",
-                       "t.f2:5:8: error: unknown name 'q'",
-                       "t.f2:6:10: error: '/key' on a part of a primitive: 's' is a sphere; only robots and "
-                       "humans have parts",
-                   }));
+    EXPECT_EQ(
+        got, (std::vector<std::string>{
+                 "t.f2:2:1: error: unknown command '/cylnder' (did you mean '/cylinder'?)",
+                 "t.f2:3:11: error: radius must be > 0, got -1",
+                 "t.f2:5:8: error: unknown name 'q'",
+                 "t.f2:6:10: error: '/key' on a part of a primitive: 's' is a sphere; only models have parts",
+             }));
 }
 
 TEST(ParserError, WarningsAloneKeepTheScene) {

@@ -11,9 +11,11 @@
 
 #include "core/anim/frame_builder.h"
 #include "core/render/renderer.h"
+#include "robot_parts.h"
 #include "test_scenes.h"
 
 using namespace f2;
+using f2::test::RobotPart;
 
 namespace {
 
@@ -39,7 +41,7 @@ constexpr const char* kFlatScene = R"(/camera 120 90 0.6 0 60 -320
 
 Color8 paintOf(const SceneDesc& scene, const PickHit& hit) {
     const SceneObject& object = scene.objects[hit.object];
-    return object.appearance[hit.part ? std::size_t(*hit.part) : 0].color;
+    return object.appearance[std::size_t(hit.shape)].color;
 }
 
 }  // namespace
@@ -63,10 +65,11 @@ TEST(Pick, EveryPixelNamesWhatTheRendererDrew) {
                 }
                 seen.insert({hit->object, hit->part ? int(*hit->part) : -1});
                 const Color8 paint = paintOf(scene, *hit);
-                // The eyes keep their own colour; they are the head's.
-                if (hit->part == PartId::Head && drawn != Rgb8{paint.r, paint.g, paint.b}) {
+                // The eyes keep their own colour; they are shapes of the head.
+                const ModelType* model = scene.objects[hit->object].model.get();
+                if (model && model->shapes[std::size_t(hit->shape)].ownColor) {
+                    EXPECT_EQ(hit->part, RobotPart::Head);
                     ++eyes;
-                    continue;
                 }
                 EXPECT_EQ(drawn, (Rgb8{paint.r, paint.g, paint.b}))
                     << "pixel " << x << "," << y << " t=" << t;
@@ -135,7 +138,7 @@ TEST(Pick, SelectionBoundsHoldWhatIsPicked) {
     // A part's bounds lie inside its model's.
     const std::size_t robot = 2;
     const Bounds whole = selectionBounds(scene, frame, robot, std::nullopt);
-    const Bounds head = selectionBounds(scene, frame, robot, PartId::Head);
+    const Bounds head = selectionBounds(scene, frame, robot, RobotPart::Head);
     EXPECT_GT(head.lo.y, whole.lo.y);
     EXPECT_LE(head.hi.y, whole.hi.y);
 }

@@ -10,10 +10,14 @@
 #include "core/anim/light_frame.h"
 #include "core/render/camera.h"
 #include "core/render/renderer.h"
+#include "core/scene/models.h"
 #include "render_paths.h"
+#include "robot_parts.h"
 #include "test_scenes.h"
 
 namespace f2 {
+
+using test::RobotPart;
 namespace {
 
 TEST(NamedLightErrors, EachAtItsPlace) {
@@ -199,12 +203,12 @@ TEST(ColourKeys, MostSpecificTargetWinsAndPaintedEyesStay) {
         "/key 0 s colour 0 0 0\n/key 10 s colour 255 0 0\n/amb_light 1\n");
     EvaluatedFrame frame;
     evaluateFrame(scene, 5, frame);
-    const ModelDef& robot = modelOf(ObjectKind::Robot);
+    const ModelType& robot = *robotModel();
     for (std::size_t k = 0; k < robot.shapes.size(); ++k) {
         const ModelShape& shape = robot.shapes[k];
-        const Vec3 expected = shape.ownColor               ? toUnit(shape.color)
-                              : shape.part == PartId::Head ? Vec3{1, 1, 1}
-                                                           : Vec3{100, 50, 25} / 255.0f;
+        const Vec3 expected = shape.ownColor                  ? toUnit(shape.look.color)
+                              : shape.part == RobotPart::Head ? Vec3{1, 1, 1}
+                                                              : Vec3{100, 50, 25} / 255.0f;
         SCOPED_TRACE(k);
         EXPECT_VEC_NEAR(frame.surfaces[frame.firstPrimitive[0] + k].color, expected, 1e-6f);
     }

@@ -11,14 +11,20 @@
 #include "core/render/pixel_report.h"
 #include "core/render/reflection.h"
 #include "core/render/renderer.h"
+#include "core/scene/models.h"
 #include "io/pov_export.h"
+#include "robot_parts.h"
 #include "test_scenes.h"
 
 namespace f2 {
+
+using test::RobotPart;
 namespace {
 
-const Appearance& look(const SceneDesc& s, std::size_t object, PartId part = PartId::Body) {
-    return s.objects[object].appearance[static_cast<std::size_t>(part)];
+/// A primitive's look, or that of a model part's main shape.
+const Appearance& look(const SceneDesc& s, std::size_t object, int part = RobotPart::Body) {
+    const SceneObject& o = s.objects[object];
+    return o.appearance[o.model ? static_cast<std::size_t>(o.model->mainShapeOf(part)) : 0];
 }
 
 std::uint8_t byte(double v) { return std::uint8_t(std::floor(255 * std::clamp(v, 0.0, 1.0) + 0.5)); }
@@ -60,9 +66,9 @@ TEST(CheckerCommand, SetsTheSecondColourAndSizeLikePaintInFileOrder) {
         "/paint floor 200 0 0\n");
     EXPECT_EQ(look(s, 0).checker, (Checker{{10, 20, 30}, 25}));
     EXPECT_EQ(look(s, 0).color, (Color8{200, 0, 0}));  // /paint keeps the pattern
-    EXPECT_EQ(look(s, 1, PartId::Head).checker, (Checker{{5, 6, 7}, 8}));
-    EXPECT_EQ(look(s, 1, PartId::Body).checker, (Checker{{5, 6, 7}, 8}));
-    EXPECT_EQ(look(s, 1, PartId::LHand).checker, (Checker{{9, 9, 9}, 0.5f}));
+    EXPECT_EQ(look(s, 1, RobotPart::Head).checker, (Checker{{5, 6, 7}, 8}));
+    EXPECT_EQ(look(s, 1, RobotPart::Body).checker, (Checker{{5, 6, 7}, 8}));
+    EXPECT_EQ(look(s, 1, RobotPart::LHand).checker, (Checker{{9, 9, 9}, 0.5f}));
 }
 
 TEST(CheckerCommand, Errors) {
@@ -85,7 +91,7 @@ TEST(MaterialReflection, IsTheOptionalSixthArgumentAndDefaultsToZero) {
         "/material r 0.5 0.5 0.5 5 0.25\n");
     EXPECT_EQ(look(s, 0).material.reflection, 0.75f);
     EXPECT_EQ(look(s, 1).material.reflection, 0.0f);
-    EXPECT_EQ(look(s, 2, PartId::Head).material, (Material{0.5f, 0.5f, 0.5f, 5, 0.25f}));
+    EXPECT_EQ(look(s, 2, RobotPart::Head).material, (Material{0.5f, 0.5f, 0.5f, 5, 0.25f}));
     EXPECT_EQ(Material{}.reflection, 0.0f);
     const std::string base = "/sphere s 1 0 0 0\n";
     test::expectOnlyError(base + "/material s 1 1 1 1 -0.5\n", 2, 21, "reflection must be >= 0, got -0.5");
@@ -282,7 +288,7 @@ TEST(SurfacePovExport, WritesTheCheckerBeforeTheMatrixAndTheReflection) {
     EXPECT_NE(pov.find("max_trace_level 5 adc_bailout 0"), std::string::npos);
     EXPECT_NE(pov.find("checker rgb <200, 200, 200> / 255, rgb <7, 8, 9> / 255 scale 5"), std::string::npos);
     // The eyes keep their own plain colour; only the mirror reflects.
-    EXPECT_NE(pov.find("// r.head (left eye)\nsphere { <0, 0, 0>, 6\n  pigment { rgb <20, 20, 20> / 255 }"),
+    EXPECT_NE(pov.find("// r.head.leye\nsphere { <0, 0, 0>, 6\n  pigment { rgb <20, 20, 20> / 255 }"),
               std::string::npos);
     std::size_t reflections = 0;
     for (std::size_t at = pov.find(" reflection "); at != std::string::npos;

@@ -9,11 +9,15 @@
 #include "core/render/camera.h"
 #include "core/render/pick.h"
 #include "core/render/renderer.h"
+#include "core/scene/models.h"
 #include "io/frame_primitives.h"
 #include "render_paths.h"
+#include "robot_parts.h"
 #include "test_scenes.h"
 
 namespace f2 {
+
+using test::RobotPart;
 namespace {
 
 TEST(VisibleErrors, EachAtItsPlace) {
@@ -72,11 +76,12 @@ TEST(Visible, APartHidesItsOwnShapesAndAnObjectAllOfThem) {
     const SceneDesc scene = test::sceneFromText(base + "/key 0 r.head visible 0\n");
     EvaluatedFrame frame;
     evaluateFrame(scene, 0, frame);
-    const ModelDef& robot = modelOf(ObjectKind::Robot);
+    const ModelType& robot = *robotModel();
     const std::uint32_t first = frame.firstPrimitive[2];
     ASSERT_EQ(frame.rayMask.size(), frame.primitives.size());
     for (std::size_t k = 0; k < robot.shapes.size(); ++k)
-        EXPECT_EQ((frame.rayMask[first + k] & ray_mask::kHidden) != 0, robot.shapes[k].part == PartId::Head)
+        EXPECT_EQ((frame.rayMask[first + k] & ray_mask::kHidden) != 0,
+                  robot.shapes[k].part == RobotPart::Head)
             << k;
     // Hiding the robot and showing its head still hides the head: both must show it.
     const SceneDesc both = test::sceneFromText(base + "/key 0 r visible 0\n/key 0 r.head visible 1\n");

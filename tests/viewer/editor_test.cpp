@@ -637,7 +637,7 @@ void EditorTest::captureWritesLinesInOneUndoStep() {
     QCOMPARE(editor->toPlainText(), original);
 
     // Key Selection Here at frame 5: the ball's pose there, after its last key.
-    w->setSelection(Selection{"ball", std::nullopt});
+    w->setSelection(Selection{"ball", std::nullopt, {}});
     QVERIFY(w->keySelectionHere());
     QCOMPARE(doc->findBlockByNumber(8).text(), QStringLiteral("/key 5 ball 0 0 8 0 0 0"));
     QCOMPARE(doc->findBlockByNumber(7).text(), QStringLiteral("/key 10 ball 3 0 8 0 0 0"));

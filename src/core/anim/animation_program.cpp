@@ -6,6 +6,7 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "core/geometry/ray_mask.h"
 #include "core/scene/models.h"
@@ -16,11 +17,8 @@ namespace f2 {
 namespace {
 Vec3 toUnitColor(Color8 c) { return Vec3{float(c.r), float(c.g), float(c.b)} / 255.0f; }
 
-/// Shading inputs of a primitive object (`shape` null) or of one shape of a model.
-Surface surfaceOf(const SceneObject& object, const ModelShape* shape) {
-    const Appearance& look = object.appearance[shape ? int(shape->part) : 0];
-    // The eyes keep their own plain colour, painted or chequered head alike.
-    if (shape && shape->ownColor) return {toUnitColor(shape->color), look.material, Vec3{}, 0.0f};
+/// Shading inputs of a primitive's or a model shape's look.
+Surface surfaceOf(const Appearance& look) {
     return {toUnitColor(look.color), look.material, toUnitColor(look.checker.color), look.checker.size};
 }
 
@@ -92,19 +90,20 @@ class Compiler {
 
     /// First index in `surfaces` of an object's surfaces (equal runs stored once).
     std::uint32_t surfaces(const SceneObject& object) {
-        Surface run[6];
-        std::size_t count = 0;
-        if (isModel(object.kind)) {
-            for (const ModelShape& shape : modelOf(object.kind).shapes)
-                run[count++] = surfaceOf(object, &shape);
-        } else {
-            run[count++] = surfaceOf(object, nullptr);
-        }
+        run_.clear();
+        for (const Appearance& look : object.appearance) run_.push_back(surfaceOf(look));
         std::string key;
-        for (std::size_t i = 0; i < count; ++i) appendBytes(key, run[i]);
+        for (const Surface& surface : run_) appendBytes(key, surface);
         auto [it, added] = surfaceIndex_.try_emplace(std::move(key), std::uint32_t(p_.surfaces.size()));
-        if (added) p_.surfaces.insert(p_.surfaces.end(), run, run + count);
+        if (added) p_.surfaces.insert(p_.surfaces.end(), run_.begin(), run_.end());
         return it->second;
+    }
+
+    /// The program's entry for an instance's type: kept alive with the program.
+    const ModelType* type(const std::shared_ptr<const ModelType>& model) {
+        if (!model) return nullptr;
+        if (types_.insert(model.get()).second) p_.types.push_back(model);
+        return model.get();
     }
 
    private:
@@ -129,6 +128,8 @@ class Compiler {
 
     AnimationProgram& p_;
     std::unordered_map<std::string, std::uint32_t> layoutIndex_, motionIndex_, surfaceIndex_;
+    std::unordered_set<const ModelType*> types_;
+    std::vector<Surface> run_;
 };
 
 }  // namespace
@@ -138,10 +139,11 @@ std::shared_ptr<const AnimationProgram> AnimationProgram::compile(const SceneDes
     AnimationProgram& p = *program;
     const std::size_t count = scene.objects.size();
     p.kinds.resize(count);
+    p.models.resize(count);
     p.sizes.resize(count);
     p.rootSource.resize(count);
     p.constantRoots.resize(count);
-    p.partSource.resize(count);
+    p.firstPartSource.resize(count);
     p.firstSurface.resize(count);
     p.firstPrimitive.resize(count + 1);
     p.still.resize(count);
@@ -150,9 +152,10 @@ std::shared_ptr<const AnimationProgram> AnimationProgram::compile(const SceneDes
     for (std::size_t i = 0; i < count; ++i) {
         const SceneObject& object = scene.objects[i];
         p.kinds[i] = object.kind;
+        p.models[i] = compiler.type(object.model);
         p.sizes[i] = object.size;
         p.firstPrimitive[i] = primitives;
-        primitives += std::uint32_t(primitiveCountOf(object.kind));
+        primitives += std::uint32_t(primitiveCountOf(object));
         if (object.mayRide()) {
             p.rootSource[i] = kAttached;
         } else if (const std::uint32_t track = compiler.animatedTrack(object.track)) {
@@ -164,14 +167,12 @@ std::shared_ptr<const AnimationProgram> AnimationProgram::compile(const SceneDes
             p.constantRoots[i] = Transform::fromPose(pose.position, pose.rotation);
         }
         bool still = p.rootSource[i] == kConstantRoot;
-        if (isModel(object.kind)) {
-            for (int part = 0; part < kPartCount; ++part) {
-                const Track& track = object.partTracks[std::size_t(part)];
-                std::uint32_t animated = compiler.turnTrack(track);
-                if (!animated) animated = compiler.animatedTrack(track);
-                p.partSource[i][std::size_t(part)] = animated ? animated : compiler.constantMotion(track);
-                still = still && !animated;
-            }
+        p.firstPartSource[i] = std::uint32_t(p.partSources.size());
+        for (const Track& track : object.partTracks) {
+            std::uint32_t animated = compiler.turnTrack(track);
+            if (!animated) animated = compiler.animatedTrack(track);
+            p.partSources.push_back(animated ? animated : compiler.constantMotion(track));
+            still = still && !animated;
         }
         p.still[i] = still;
         p.firstSurface[i] = compiler.surfaces(object);
@@ -183,13 +184,8 @@ std::shared_ptr<const AnimationProgram> AnimationProgram::compile(const SceneDes
         })) {
         p.castsNoShadow.reserve(primitives);
         for (const SceneObject& object : scene.objects) {
-            if (!isModel(object.kind)) {
-                p.castsNoShadow.push_back(shadowless(object.appearance[0]) ? ray_mask::kCastsNoShadow : 0);
-                continue;
-            }
-            for (const ModelShape& shape : modelOf(object.kind).shapes)
-                p.castsNoShadow.push_back(
-                    shadowless(object.appearance[std::size_t(shape.part)]) ? ray_mask::kCastsNoShadow : 0);
+            for (const Appearance& look : object.appearance)
+                p.castsNoShadow.push_back(shadowless(look) ? ray_mask::kCastsNoShadow : 0);
         }
     }
     return program;
@@ -208,8 +204,10 @@ void AnimationProgram::segmentsAt(double t, std::vector<TrackSegment>& segments)
 
 // Inlined into both loops below: a call per object measured slower.
 [[gnu::always_inline]] inline AnimationProgram::ObjectFrames AnimationProgram::objectFrames(
-    std::size_t i, const TrackSegment* segments, const std::vector<Transform>& attachedRoots) const {
+    std::size_t i, const TrackSegment* segments, const std::vector<Transform>& attachedRoots,
+    Transform* parts) const {
     ObjectFrames out;
+    out.parts = parts;
     const std::uint32_t root = rootSource[i];
     if (root == kConstantRoot) {
         out.root = constantRoots[i];
@@ -219,25 +217,36 @@ void AnimationProgram::segmentsAt(double t, std::vector<TrackSegment>& segments)
         const Pose pose = trackPose(root & ~kAnimated, segments);
         out.root = Transform::fromPose(pose.position, pose.rotation);
     }
-    const ObjectKind kind = kinds[i];
-    if (!isModel(kind)) return out;
+    const ModelType* model = models[i];
+    if (!model) return out;
 
-    // Part frames, parents first (SPEC 5).
-    for (const ModelPart& part : modelOf(kind).parts) {
-        const int index = int(part.id);
-        const Transform& worldFromParent = part.parent < 0 ? out.root : out.parts[part.parent];
-        const std::uint32_t source = partSource[i][std::size_t(index)];
+    // Part frames, parents first (SPEC 5, 10.1), as modelPartFrames computes them.
+    const std::uint32_t* sources = &partSources[firstPartSource[i]];
+    const std::size_t count = model->parts.size();
+    for (std::size_t index = 0; index < count; ++index) {
+        const ModelPart& part = model->parts[index];
+        const Transform& worldFromParent = part.parent < 0 ? out.root : parts[part.parent];
+        const std::uint32_t source = sources[index];
         if (source & kTurning) {
             const TurnTrack& turn = turnTracks[source & ~kTurning];
-            out.parts[index] = childFrameTurned(worldFromParent, part.pivot + turn.offset,
-                                                turnAngle(source & ~kTurning, segments), turn.axis);
+            const float degrees = turnAngle(source & ~kTurning, segments);
+            if (!part.rest) {
+                parts[index] =
+                    childFrameTurned(worldFromParent, part.pivot + turn.offset, degrees, turn.axis);
+            } else {
+                const Mat3 rotation = degrees == 0 ? Mat3{} : turnMatrix(degrees, turn.axis);
+                parts[index] =
+                    partFrame(worldFromParent, part, turn.offset, degrees == 0 ? nullptr : &rotation);
+            }
         } else if (source & kAnimated) {
             const Pose motion = trackPose(source & ~kAnimated, segments);
-            out.parts[index] = childFrame(worldFromParent, part.pivot + motion.position, motion.rotation);
+            const bool turned = !(motion.rotation == Vec3{});
+            const Mat3 rotation = turned ? rotationFromEulerDegrees(motion.rotation) : Mat3{};
+            parts[index] = partFrame(worldFromParent, part, motion.position, turned ? &rotation : nullptr);
         } else {
             const ConstantMotion& motion = constantMotions[source];
-            out.parts[index] = childFrame(worldFromParent, part.pivot + motion.offset,
-                                          motion.rotated ? &motion.rotation : nullptr);
+            parts[index] =
+                partFrame(worldFromParent, part, motion.offset, motion.rotated ? &motion.rotation : nullptr);
         }
     }
     return out;
@@ -245,23 +254,22 @@ void AnimationProgram::segmentsAt(double t, std::vector<TrackSegment>& segments)
 
 void AnimationProgram::evaluateObjects(std::size_t begin, std::size_t end, const TrackSegment* segments,
                                        bool refill, EvaluatedFrame& frame) const {
+    Transform parts[kMaxModelParts];
     for (std::size_t i = begin; i < end; ++i) {
         if (refill && still[i]) continue;
-        const ObjectFrames frames = objectFrames(i, segments, frame.attachedRoots);
+        const ObjectFrames frames = objectFrames(i, segments, frame.attachedRoots, parts);
         const std::uint32_t first = firstPrimitive[i];
         Primitive* prims = &frame.primitives[first];
         const Surface* look = &surfaces[firstSurface[i]];
-        const ObjectKind kind = kinds[i];
-        if (!isModel(kind)) {
-            *prims = makePrimitive(shapeKindOf(kind), sizes[i], frames.root);
+        const ModelType* model = models[i];
+        if (!model) {
+            *prims = makePrimitive(shapeKindOf(kinds[i]), sizes[i], frames.root);
             if (!refill) frame.surfaces[first] = *look;
             continue;
         }
-        const ModelDef& model = modelOf(kind);
-        for (const ModelShape& shape : model.shapes)
-            *prims++ =
-                makePrimitive(shape.kind, shape.size, frames.parts[int(shape.part)].translated(shape.centre));
-        if (!refill) std::memcpy(&frame.surfaces[first], look, model.shapes.size() * sizeof(Surface));
+        for (const ModelShape& shape : model->shapes)
+            *prims++ = makePrimitive(shape.kind, shape.size, shapeFrame(parts[shape.part], shape));
+        if (!refill) std::memcpy(&frame.surfaces[first], look, model->shapes.size() * sizeof(Surface));
     }
 }
 
@@ -271,9 +279,10 @@ void AnimationProgram::evaluateObjectsIntoLeaves(std::size_t begin, std::size_t 
                                                  std::span<Primitive> leaves) const {
     // A large frame does not fit in the caches: both copies are written around
     // them, without first reading each line from memory.
+    Transform parts[kMaxModelParts];
     for (std::size_t i = begin; i < end; ++i) {
         if (still[i]) continue;
-        const ObjectFrames frames = objectFrames(i, segments, frame.attachedRoots);
+        const ObjectFrames frames = objectFrames(i, segments, frame.attachedRoots, parts);
         const std::uint32_t first = firstPrimitive[i];
         const std::uint32_t count = firstPrimitive[i + 1] - first;
         for (std::uint32_t shape = 0; shape < count; ++shape) {

@@ -72,11 +72,14 @@ struct AnimationProgram {
 
     // Per object, in scene order.
     std::vector<ObjectKind> kinds;
+    std::vector<const ModelType*> models;   ///< an instance's type (kept alive by `types`), else null
     std::vector<Vec3> sizes;                ///< as SceneObject::size
     std::vector<std::uint32_t> rootSource;  ///< kAnimated | track, kConstantRoot, kAttached
     std::vector<Transform> constantRoots;   ///< the root frame when kConstantRoot
-    std::vector<std::array<std::uint32_t, kPartCount>>
-        partSource;                             ///< models: kAnimated | track, kTurning | turn, or a constant
+    /// Models: where each part gets its pose (kAnimated | track, kTurning |
+    /// turn, or a constant), the object's parts from `firstPartSource[object]`.
+    std::vector<std::uint32_t> partSources;
+    std::vector<std::uint32_t> firstPartSource;
     std::vector<std::uint32_t> firstSurface;    ///< the object's surfaces in `surfaces`, one per primitive
     std::vector<std::uint32_t> firstPrimitive;  ///< as EvaluatedFrame::firstPrimitive (objects + 1)
     std::vector<std::uint8_t> still;            ///< 1: neither the object nor a part of it ever moves
@@ -91,6 +94,8 @@ struct AnimationProgram {
     std::vector<float> angles;  ///< keys' angles of the turn tracks, track after track
     std::vector<ConstantMotion> constantMotions;
     std::vector<Surface> surfaces;
+    /// The model types of the instances, so that `models` stay valid as long as the program.
+    std::vector<std::shared_ptr<const ModelType>> types;
     /// Per primitive (frame order), ray_mask::kCastsNoShadow where `/no_shadow`
     /// (SPEC 10.8) reached it; empty when nothing in the scene uses it.
     std::vector<std::uint8_t> castsNoShadow;
@@ -120,22 +125,23 @@ struct AnimationProgram {
     }
 
     /// An object's frames at this frame: its root frame (a primitive object's
-    /// own frame) and, for a model, every part's.
+    /// own frame) and, for a model, every part's (in `parts`, room for
+    /// kMaxModelParts, given by the caller).
     struct ObjectFrames {
         Transform root;
-        std::array<Transform, kPartCount> parts;
+        Transform* parts;
     };
     /// The frames of object i with this frame's `segments` and, if it is
-    /// attached, `attachedRoots[i]`.
+    /// attached, `attachedRoots[i]`; its parts' into `parts`.
     ObjectFrames objectFrames(std::size_t i, const TrackSegment* segments,
-                              const std::vector<Transform>& attachedRoots) const;
+                              const std::vector<Transform>& attachedRoots, Transform* parts) const;
     /// Primitive `shape` (0 for a primitive object; a model's shapes in
     /// order) of object i whose frames are `frames`.
     Primitive objectPrimitive(std::size_t i, std::uint32_t shape, const ObjectFrames& frames) const {
-        const ObjectKind kind = kinds[i];
-        if (!isModel(kind)) return makePrimitive(shapeKindOf(kind), sizes[i], frames.root);
-        const ModelShape& s = modelOf(kind).shapes[shape];
-        return makePrimitive(s.kind, s.size, frames.parts[int(s.part)].translated(s.centre));
+        const ModelType* model = models[i];
+        if (!model) return makePrimitive(shapeKindOf(kinds[i]), sizes[i], frames.root);
+        const ModelShape& s = model->shapes[shape];
+        return makePrimitive(s.kind, s.size, shapeFrame(frames.parts[s.part], s));
     }
 
     /// Writes the primitives and surfaces of objects [begin, end) into `frame`
@@ -168,16 +174,21 @@ inline Transform childFrame(const Transform& worldFromParent, Vec3 origin, Vec3 
     return childFrame(worldFromParent, origin, &rotation);
 }
 
-/// The same for a rotation of `degrees` about axis `axis` (0: x, 1: y, 2:
-/// z) alone: rotationFromEulerDegrees with the other angles 0, bit for bit,
-/// for one sine and cosine and a third of the products.
+/// The rotation of `degrees` about axis `axis` (0: x, 1: y, 2: z) alone:
+/// rotationFromEulerDegrees with the other angles 0, bit for bit, for one
+/// sine and cosine and a third of the products.
+inline Mat3 turnMatrix(float degrees, std::uint32_t axis) {
+    const SinCos turn = sinCosDegrees(degrees), none;
+    return axis == 0   ? rotationFromSinCos(turn, none, none)
+           : axis == 1 ? rotationFromSinCos(none, turn, none)
+                       : rotationFromSinCos(none, none, turn);
+}
+
+/// childFrame for a rotation about one axis alone (turnMatrix).
 inline Transform childFrameTurned(const Transform& worldFromParent, Vec3 origin, float degrees,
                                   std::uint32_t axis) {
     if (degrees == 0) return worldFromParent.translated(origin);
-    const SinCos turn = sinCosDegrees(degrees), none;
-    const Mat3 rotation = axis == 0   ? rotationFromSinCos(turn, none, none)
-                          : axis == 1 ? rotationFromSinCos(none, turn, none)
-                                      : rotationFromSinCos(none, none, turn);
+    const Mat3 rotation = turnMatrix(degrees, axis);
     return childFrame(worldFromParent, origin, &rotation);
 }
 

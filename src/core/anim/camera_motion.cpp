@@ -25,7 +25,7 @@ Vec3 lookAtPoint(const SceneDesc& scene, const LookAt& lookAt, double t) {
     const FrameRef ref = *lookAt.target;
     const Transform world = worldFromRef(scene, ref, t);
     if (ref.part < 0) return world.translation;  // an object's origin
-    return partShapeCentre(scene.objects[ref.object].kind, ref.part, world);
+    return partShapeCentre(scene.objects[ref.object], ref.part, world);
 }
 
 Transform cameraFrameAt(const SceneDesc& scene, double t) {

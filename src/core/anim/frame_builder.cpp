@@ -21,15 +21,19 @@ Transform objectFrame(const SceneObject& object, double t) {
     return Transform::fromPose(pose.position, pose.rotation);
 }
 
-std::array<Transform, kPartCount> modelPartFrames(const SceneObject& object, const Transform& worldFromRoot,
-                                                  double t) {
-    const ModelDef& model = modelOf(object.kind);
-    std::array<Transform, kPartCount> worldFromPart;
-    for (const ModelPart& part : model.parts) {
-        int index = int(part.id);
-        Pose motion = evaluateTrack(object.partTracks[index], t, Pose{});
-        const Transform& worldFromParent = part.parent < 0 ? worldFromRoot : worldFromPart[part.parent];
-        worldFromPart[index] = childFrame(worldFromParent, part.pivot + motion.position, motion.rotation);
+std::vector<Transform> modelPartFrames(const SceneObject& object, const Transform& worldFromRoot, double t) {
+    const std::vector<ModelPart>& parts = object.model->parts;
+    std::vector<Transform> worldFromPart(parts.size());
+    for (std::size_t index = 0; index < parts.size(); ++index) {
+        const ModelPart& part = parts[index];
+        const Pose motion = evaluateTrack(object.partTracks[index], t, Pose{});
+        const Transform& worldFromParent =
+            part.parent < 0 ? worldFromRoot : worldFromPart[std::size_t(part.parent)];
+        // As childFrame: zero angles make no matrix.
+        const bool turned = !(motion.rotation == Vec3{});
+        const Mat3 rotation = turned ? rotationFromEulerDegrees(motion.rotation) : Mat3{};
+        worldFromPart[index] =
+            partFrame(worldFromParent, part, motion.position, turned ? &rotation : nullptr);
     }
     return worldFromPart;
 }
@@ -111,11 +115,10 @@ void attachedRootFrames(const SceneDesc& scene, double t, std::vector<Transform>
     }
 }
 
-Vec3 partShapeCentre(ObjectKind kind, int part, const Transform& worldFromPart) {
-    for (const ModelShape& shape : modelOf(kind).shapes) {
-        if (int(shape.part) == part) return worldFromPart.applyToPoint(shape.centre);
-    }
-    return worldFromPart.translation;
+Vec3 partShapeCentre(const SceneObject& object, int part, const Transform& worldFromPart) {
+    const int shape = object.model->mainShapeOf(part);
+    return shape < 0 ? worldFromPart.translation
+                     : worldFromPart.applyToPoint(object.model->shapes[std::size_t(shape)].centre);
 }
 
 namespace {

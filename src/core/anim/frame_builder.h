@@ -15,9 +15,15 @@
 namespace f2 {
 
 /// World transform of every part of a model placed at `worldFromRoot`, with the
-/// parts' animation evaluated at `t` (indexed by PartId).
-std::array<Transform, kPartCount> modelPartFrames(const SceneObject& object, const Transform& worldFromRoot,
-                                                  double t);
+/// parts' animation evaluated at `t` (in the model's order of parts).
+std::vector<Transform> modelPartFrames(const SceneObject& object, const Transform& worldFromRoot, double t);
+
+/// World transform of shape k of a model whose part frames are `worldFromPart`.
+inline Transform modelShapeFrame(const SceneObject& object, std::size_t k,
+                                 const std::vector<Transform>& worldFromPart) {
+    const ModelShape& shape = object.model->shapes[k];
+    return shapeFrame(worldFromPart[std::size_t(shape.part)], shape);
+}
 
 /// An object's root frame (a primitive's own frame) at time t from its own
 /// pose alone: its world frame unless it is attached (SPEC 9.2).
@@ -41,9 +47,10 @@ inline Transform worldFromRoot(const SceneDesc& scene, std::size_t i, double t,
     return object.mayRide() ? roots[i] : objectFrame(object, t);
 }
 
-/// World position of the centre of a part's shape (its main shape: a robot's
-/// head box, not its eyes) whose part frame is `worldFromPart`.
-Vec3 partShapeCentre(ObjectKind kind, int part, const Transform& worldFromPart);
+/// World position of the centre of a part's main shape (its first: a robot's
+/// head box, not its eyes) whose part frame is `worldFromPart`; the pivot
+/// when the part has no shape.
+Vec3 partShapeCentre(const SceneObject& object, int part, const Transform& worldFromPart);
 
 /// Fills `frame` (primitives, surfaces, lights) for time `t` in frames, on the
 /// pool's threads when one is given, from the scene's compiled animation
@@ -93,29 +100,33 @@ inline bool visibleAt(const Track& track, double t) {
 }
 
 /// Calls visit(shape, model shape or nullptr) for each shape of `target` (an
-/// object or a model's part): a primitive is its own shape 0; a model's shapes
-/// are indexed among its primitives.
+/// object, a model's part, or the model's shape `shape`): a primitive is its
+/// own shape 0; a model's shapes are indexed among its primitives.
 template <class Visit>
-void forEachShapeOf(const SceneDesc& scene, FrameRef target, Visit&& visit) {
+void forEachShapeOf(const SceneDesc& scene, FrameRef target, int shape, Visit&& visit) {
     const SceneObject& object = scene.objects[target.object];
-    if (!isModel(object.kind)) {
+    if (!object.model) {
         visit(std::size_t(0), static_cast<const ModelShape*>(nullptr));
         return;
     }
-    const ModelDef& model = modelOf(object.kind);
-    for (std::size_t k = 0; k < model.shapes.size(); ++k) {
-        if (target.part < 0 || int(model.shapes[k].part) == target.part) visit(k, &model.shapes[k]);
+    const std::vector<ModelShape>& shapes = object.model->shapes;
+    if (shape >= 0) {
+        visit(std::size_t(shape), &shapes[std::size_t(shape)]);
+        return;
+    }
+    for (std::size_t k = 0; k < shapes.size(); ++k) {
+        if (target.part < 0 || shapes[k].part == target.part) visit(k, &shapes[k]);
     }
 }
 
 /// Calls visit(object, shape) for every shape hidden at time t: a shape is
-/// seen while its object's and its part's `visible` tracks (where they have
-/// one) both show it (SPEC 10.7). A shape may be visited twice.
+/// seen while its object's, its part's and its own `visible` tracks (where
+/// they have one) all show it (SPEC 10.7). A shape may be visited twice.
 template <class Visit>
 void forEachHiddenShape(const SceneDesc& scene, double t, Visit&& visit) {
     for (const TargetTrack& v : scene.visibilityTracks) {
         if (visibleAt(v.track, t)) continue;
-        forEachShapeOf(scene, v.target, [&](std::size_t shape, const ModelShape*) {
+        forEachShapeOf(scene, v.target, v.shape, [&](std::size_t shape, const ModelShape*) {
             visit(std::size_t(v.target.object), shape);
         });
     }
@@ -124,7 +135,8 @@ void forEachHiddenShape(const SceneDesc& scene, double t, Visit&& visit) {
 /// Calls visit(object, shape, rgb) for every shape a `colour` track reaches at
 /// time t (shape: its index among the object's primitives; rgb: 0..255,
 /// unrounded), least specific target first, so the last call for a shape
-/// is its colour. A shape painted in its model is not reached (SPEC 10.3).
+/// is its colour. A shape painted in its model is reached only by its own
+/// track (SPEC 10.3).
 template <class Visit>
 void forEachKeyedColour(const SceneDesc& scene, double t, Visit&& visit) {
     for (const TargetTrack& c : scene.colourTracks) {
@@ -133,8 +145,9 @@ void forEachKeyedColour(const SceneDesc& scene, double t, Visit&& visit) {
         // An easing that overshoots stops at the ends of the scale.
         const Vec3 rgb{std::clamp(v.x, 0.0f, 255.0f), std::clamp(v.y, 0.0f, 255.0f),
                        std::clamp(v.z, 0.0f, 255.0f)};
-        forEachShapeOf(scene, c.target, [&](std::size_t shape, const ModelShape* inModel) {
-            if (!inModel || !inModel->ownColor) visit(std::size_t(c.target.object), shape, rgb);
+        forEachShapeOf(scene, c.target, c.shape, [&](std::size_t shape, const ModelShape* inModel) {
+            if (!inModel || !inModel->ownColor || c.shape >= 0)
+                visit(std::size_t(c.target.object), shape, rgb);
         });
     }
 }

@@ -21,12 +21,14 @@ constexpr std::array kRepeat = {Variable, Number};
 constexpr std::array kInclude = {Path};
 constexpr std::array kLookAt = {PointOrTarget, Number};
 constexpr std::array kAttach = {Object, Target};
+constexpr std::array kModel = {NewName};
+constexpr std::array kPart = {NewName, Part, Number};
 constexpr std::array kCaption = {Number, Number, Number, Number, Number, Text, Number};
 constexpr std::array<ArgKind, 0> kNone = {};
 
 // Rows in CommandId order (checked below). The syntax and meaning are what
 // hover shows; docs/scene-language.md has each command's full story.
-constexpr std::array<CommandSpec, 26> kCommands = {{
+constexpr std::array<CommandSpec, 28> kCommands = {{
     {CommandId::Camera, "/camera", Edition::First, CommandGroup::Setting, kNumbers,
      "/camera <w> <h> <d> [<px> <py> <pz> [<rx> <ry> <rz>]]",
      "/camera ${1:800} ${2:600} ${3:0.5} ${4:0} ${5:0} ${6:0} ${7:0} ${8:0} ${9:0}",
@@ -159,8 +161,21 @@ constexpr std::array<CommandSpec, 26> kCommands = {{
      false},
     {CommandId::NoShadow, "/no_shadow", Edition::Third, CommandGroup::Look, kTarget, "/no_shadow <target>",
      "/no_shadow ${1:target}",
-     "The target (an object or a part) casts no shadow; it is still seen and reflected, as POV-Ray's "
-     "`no_shadow`.",
+     "The target (an object, a part or a shape) casts no shadow; it is still seen and reflected, as "
+     "POV-Ray's `no_shadow`.",
+     false},
+    {CommandId::Model, "/model", Edition::Third, CommandGroup::Creating, kModel, "/model <type>  …  /end",
+     "/model ${1:type}\n/part ${2:base} root ${3:0} ${4:0} ${5:0}\n/box ${2:base}.${6:shape} ${7:40} ${8:10} "
+     "${9:40} ${10:0} ${11:0} ${12:0}\n$0\n/end",
+     "Defines a model type: `/part`s and shapes on them (`/sphere`, `/cylinder`, `/box` named "
+     "`part.shape`, placed in the part's frame), and their `/paint`, `/material`, `/checker`, up to "
+     "`/end`. `/type name px py pz [rx ry rz]` then makes an instance, as `/robot` does.",
+     false},
+    {CommandId::Part, "/part", Edition::Third, CommandGroup::Creating, kPart,
+     "/part <part> <parent> <px> <py> <pz> [<rx> <ry> <rz>]",
+     "/part ${1:part} ${2:root} ${3:0} ${4:0} ${5:0}",
+     "Inside `/model`: a part hanging on `root` or an earlier part, its pivot at `p` in the parent's "
+     "frame, turned by its rest rotation `r`. Its keys (`/key t name.part …`) move it about the pivot.",
      false},
 }};
 

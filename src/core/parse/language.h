@@ -71,6 +71,8 @@ enum class CommandId : std::uint8_t {
     Attach,
     Caption,
     NoShadow,
+    Model,
+    Part,
 };
 
 struct CommandSpec {
@@ -141,6 +143,8 @@ inline constexpr std::string_view kCameraName = "camera";
 /// `/attach <name> world at <t>` (SPEC 10.7): no holder, the ride ends
 /// (unless an object is named so).
 inline constexpr std::string_view kWorldName = "world";
+/// A `/part`'s parent when it hangs on the model's root frame (SPEC 10.1).
+inline constexpr std::string_view kRootName = "root";
 /// The word before a change of ride's time: `/attach <name> <target> at <t>` (SPEC 10.7).
 inline constexpr std::string_view kAtWord = "at";
 

@@ -22,6 +22,7 @@
 #include "core/parse/suggest.h"
 #include "core/parse/symbol_index.h"
 #include "core/parse/unusual_char.h"
+#include "core/scene/models.h"
 
 namespace f2 {
 
@@ -33,14 +34,6 @@ constexpr std::size_t kMaxNameSuggestWork = 50'000'000;
 
 /// A place in the source: file, line, column and reading order (SPEC 9.5).
 using Pos = SourcePos;
-
-/// PartId index of a part name, or -1.
-int partIndex(std::string_view s) {
-    for (int i = 0; i < kPartCount; ++i) {
-        if (s == kPartNames[static_cast<std::size_t>(i)]) return i;
-    }
-    return -1;
-}
 
 /// The command closest to a mistyped one, if it is close enough to be a typo.
 std::string_view suggestCommand(std::string_view word) {
@@ -68,18 +61,27 @@ struct StringHash {
     std::size_t operator()(std::string_view s) const noexcept { return std::hash<std::string_view>{}(s); }
 };
 
-/// A command's target: an object, one part of a model, the camera or a named light.
+/// A command's target: an object, one part or shape of a model, the camera or a named light.
 struct Target {
     std::size_t object = 0;
-    int part = -1;        ///< PartId index, or -1 for the object itself
+    int part = -1;        ///< index among the model's parts, or -1 for the object itself
     bool camera = false;  ///< the scene camera (SPEC 9.1); `object` and `part` unused
     int light = -1;       ///< a named light (SPEC 10.2): SceneDesc::lightMotions index; `object` unused
+    int shape = -1;       ///< a shape of the model (`f2.head.leye`, SPEC 10.1), or -1
 };
+
+/// A key for the per-target books: object, part and shape in one number.
+std::uint64_t slotOf(const Target& t) {
+    return std::uint64_t(t.object) << 20 | std::uint64_t(t.part + 1) << 10 | std::uint64_t(t.shape + 1);
+}
 
 /// Whether a command accepts `camera` as its target.
 enum class CameraTarget : bool { Refused, Accepted };
 /// Whether a command accepts a named light as its target (SPEC 10.2).
 enum class LightTarget : bool { Refused, Accepted };
+/// Whether a command accepts a model's shape as its target (SPEC 10.1: looks and
+/// colour or visible keys only).
+enum class ShapeTarget : bool { Refused, Accepted };
 
 /// What a track holds: the pose (none) or a property (SPEC 10.3).
 using TrackProperty = std::optional<KeyProperty>;
@@ -112,21 +114,27 @@ struct AttachChangeBook {
     Pos command, timePos;
 };
 
-/// Parse-time bookkeeping of one object.
+/// Parse-time bookkeeping of one object (its tracks' books are kept by
+/// target: Parser::poseTrackBooks_ and the like).
 struct ObjectBook {
     Pos defined;
-    /// Index into Parser::trackBooks_ for the object track (0) and each part (1 + PartId); -1 if none.
-    std::array<int, kPartCount + 1> tracks{-1, -1, -1, -1, -1};
-    /// Where the target of each /interp of the object (0) and each part (1 + PartId) was given.
-    std::array<std::optional<Pos>, kPartCount + 1> interps{};
     std::optional<Pos> attached;  ///< where its `/attach` is
     std::uint32_t loopNote = 0;  ///< the loop pass it was defined in: Parser::loopNotes_ index + 1, 0 if none
-    /// Index into SceneDesc::visibilityTracks of its (0) and each part's (1 + PartId) visible keys; -1 if
-    /// none.
-    std::array<int, kPartCount + 1> visibilityTracks{-1, -1, -1, -1, -1};
-    /// Index into SceneDesc::colourTracks of the object's (0) and each part's (1 + PartId) colour keys; -1 if
-    /// none.
-    std::array<int, kPartCount + 1> colourTracks{-1, -1, -1, -1, -1};
+};
+
+/// A `/model` block being read (SPEC 10.1).
+struct ModelBuild {
+    std::shared_ptr<ModelType> type;
+    Pos defined;
+    bool named = false;  ///< its name is valid and new: the type is registered at `/end`
+    int nested = 0;      ///< `/model` lines inside it (each an error) whose `/end` is still to come
+    IndexedModel indexed;
+};
+
+/// A model type that instances may use: the robot, the human, or a `/model` of the file.
+struct TypeBook {
+    std::shared_ptr<const ModelType> type;
+    std::optional<Pos> defined;  ///< none for the robot and the human
 };
 
 /// Parse-time bookkeeping of one named light (SPEC 10.2).
@@ -278,7 +286,14 @@ class Parser : private ExpansionSink {
     }
     bool knowsCommand(std::string_view command) const override {
         const CommandSpec* c = findCommand(command);
-        return c && c->group != CommandGroup::Source;
+        return (c && c->group != CommandGroup::Source) || typeOfCommand(command) != nullptr;
+    }
+
+    /// The model type `/<type>` creates an instance of, or null.
+    const TypeBook* typeOfCommand(std::string_view command) const {
+        if (!command.starts_with('/')) return nullptr;
+        const auto it = types_.find(command.substr(1));
+        return it == types_.end() ? nullptr : &it->second;
     }
 
     /// "3:5", or "FILE:3:5" when `p` is in another file than the current line.
@@ -416,12 +431,21 @@ class Parser : private ExpansionSink {
             error(commandPos(), noteCharacters(std::move(message), head, commandPos()));
             return;
         }
+        if (building_) return parseModelLine(head);
         // The Source group never arrives here: the expander runs those lines.
         if (const CommandSpec* c = findCommand(head); c && c->group != CommandGroup::Source) {
             if (index_) index_->noteCommand(head, sourceLoc(commandPos()));
             dispatch(c->id);
             return;
         }
+        if (const TypeBook* type = typeOfCommand(head)) {
+            if (index_) index_->noteCommand(head, sourceLoc(commandPos()));
+            return parseObject(ObjectKind::Model, type->type);
+        }
+        unknownCommand(head);
+    }
+
+    void unknownCommand(std::string_view head) {
         std::string message = "unknown command " + quoteToken(head);
         if (const std::string_view guess = suggestCommand(head); !guess.empty()) {
             message += " (did you mean '" + std::string(guess) + "'?)";
@@ -455,9 +479,9 @@ class Parser : private ExpansionSink {
             case Paint:
                 return parsePaint();
             case Robot:
-                return parseObject(ObjectKind::Robot);
+                return parseObject(ObjectKind::Model, robotModel());
             case Human:
-                return parseObject(ObjectKind::Human);
+                return parseObject(ObjectKind::Model, humanModel());
             case Anim:
                 return parseAnim();
             case Key:
@@ -476,6 +500,11 @@ class Parser : private ExpansionSink {
                 return parseCaption();
             case NoShadow:
                 return parseNoShadow();
+            case Model:
+                return openModel();
+            case Part:
+                error(commandPos(), "'/part' stands only inside a '/model' block");
+                return;
             case Let:
             case Repeat:
             case End:
@@ -708,32 +737,64 @@ class Parser : private ExpansionSink {
         return closest.best();
     }
 
-    /// Checks that `part` is a part name and the object has parts.
+    /// "body, head, lhand or rhand": the parts of a model, for messages.
+    static std::string partList(const ModelType& model) {
+        std::string list;
+        for (std::size_t k = 0; k < model.parts.size(); ++k) {
+            if (k > 0) list += k + 1 == model.parts.size() ? " or " : ", ";
+            list += model.parts[k].name;
+        }
+        return list;
+    }
+
+    /// Checks that the object is a model and `part` one of its parts.
     std::optional<int> partOf(std::size_t object, std::string_view part, Pos pos) {
-        const int index = partIndex(part);
-        if (index < 0) {
-            const std::string_view guess = suggestPart(part);
-            error(pos,
-                  noteCharacters("unknown part " + quoteToken(part) +
-                                     (guess.empty() ? std::string(" (expected body, head, lhand or rhand)")
-                                                    : " (did you mean '" + std::string(guess) + "'?)"),
-                                 part, pos));
+        const SceneObject& o = scene_.objects[object];
+        if (!o.model) {
+            error(pos, quoteToken(commandText()) + " on a part of a primitive: " + quoteToken(o.name) +
+                           " is a " + std::string(objectKindName(o.kind)) + "; only models have parts");
             return std::nullopt;
         }
-        const SceneObject& o = scene_.objects[object];
-        if (!isModel(o.kind)) {
-            error(pos, quoteToken(commandText()) + " on a part of a primitive: " + quoteToken(o.name) +
-                           " is a " + std::string(objectKindName(o.kind)) +
-                           "; only robots and humans have parts");
+        const int index = o.model->partIndex(part);
+        if (index < 0) {
+            const std::string_view guess = suggestPart(part, *o.model);
+            error(pos, noteCharacters("unknown part " + quoteToken(part) +
+                                          (guess.empty() ? " (expected " + partList(*o.model) + ")"
+                                                         : " (did you mean '" + std::string(guess) + "'?)"),
+                                      part, pos));
             return std::nullopt;
         }
         return index;
     }
 
+    /// Checks that `shape` is a shape on part `part` of the object's model.
+    std::optional<int> shapeOf(std::size_t object, int part, std::string_view shape, Pos pos) {
+        const ModelType& model = *scene_.objects[object].model;
+        const int index = model.shapeIndex(part, shape);
+        if (index >= 0) return index;
+        std::string list;
+        ClosestWord closest(shape);
+        for (const ModelShape& s : model.shapes) {
+            if (s.part != part) continue;
+            list += (list.empty() ? "" : ", ") + s.name;
+            closest.consider(s.name);
+        }
+        const std::string& partName = model.parts[std::size_t(part)].name;
+        error(pos, noteCharacters(
+                       "unknown shape " + quoteToken(shape) + " on the part " + quoteToken(partName) +
+                           " of '" + model.name + "'" +
+                           (!closest.best().empty() ? " (did you mean '" + std::string(closest.best()) + "'?)"
+                            : list.empty()          ? " (it has no shapes)"
+                                                    : " (expected " + list + ")"),
+                       shape, pos));
+        return std::nullopt;
+    }
+
     /// Resolves `name` or `name.part` in argument i, or `camera` or a named
     /// light when the command takes them.
     std::optional<Target> target(int i, CameraTarget cameraUse = CameraTarget::Refused,
-                                 LightTarget lightUse = LightTarget::Refused) {
+                                 LightTarget lightUse = LightTarget::Refused,
+                                 ShapeTarget shapeUse = ShapeTarget::Refused) {
         if (failed(i)) return std::nullopt;
         const std::string_view text = arg(i);
         const Pos pos = argPos(i);
@@ -776,19 +837,35 @@ class Parser : private ExpansionSink {
         const std::size_t writtenDot = argToken(i).written.find('.');
         Pos partPos = pos;
         partPos.column += static_cast<int>(writtenDot == std::string_view::npos ? dot : writtenDot) + 1;
-        const std::optional<int> part = partOf(*object, text.substr(dot + 1), partPos);
+        const std::string_view rest = text.substr(dot + 1);
+        const std::size_t shapeDot = rest.find('.');
+        const std::optional<int> part = partOf(*object, rest.substr(0, shapeDot), partPos);
         if (!part) return std::nullopt;
-        return Target{*object, *part};
+        if (shapeDot == std::string_view::npos) return Target{*object, *part};
+        Pos shapePos = partPos;
+        shapePos.column += static_cast<int>(shapeDot) + 1;
+        shapePos.length = static_cast<int>(rest.size() - shapeDot - 1);
+        const std::optional<int> shape = shapeOf(*object, *part, rest.substr(shapeDot + 1), shapePos);
+        if (!shape) return std::nullopt;
+        if (shapeUse == ShapeTarget::Refused) {
+            error(shapePos,
+                  quoteToken(commandText()) + " does not apply to a shape: " + quoteToken(text) +
+                      " is a shape, which takes looks and colour or visible keys only (its part is " +
+                      quoteToken(text.substr(0, dot + 1 + shapeDot)) + ")");
+            return std::nullopt;
+        }
+        Target t{*object, *part};
+        t.shape = *shape;
+        return t;
     }
 
     std::string targetName(Target t) const {
         if (t.camera) return std::string(kCameraName);
         if (t.light >= 0) return scene_.lightMotions[static_cast<std::size_t>(t.light)].name;
-        std::string s = scene_.objects[t.object].name;
-        if (t.part >= 0) {
-            s += '.';
-            s += kPartNames[static_cast<std::size_t>(t.part)];
-        }
+        const SceneObject& o = scene_.objects[t.object];
+        std::string s = o.name;
+        if (t.part >= 0) s += "." + o.model->parts[std::size_t(t.part)].name;
+        if (t.shape >= 0) s += "." + o.model->shapes[std::size_t(t.shape)].name;
         return s;
     }
 
@@ -811,18 +888,16 @@ class Parser : private ExpansionSink {
     /// track (10.7) in its list, made on its first key.
     std::size_t targetTrackIndex(Target t, KeyProperty property) {
         const bool visible = property == KeyProperty::Visible;
-        ObjectBook& book = books_[t.object];
-        int& index =
-            (visible ? book.visibilityTracks : book.colourTracks)[static_cast<std::size_t>(t.part + 1)];
-        if (index < 0) {
+        auto [it, added] = (visible ? visibilityTrackIndex_ : colourTrackIndex_).try_emplace(slotOf(t), 0);
+        if (added) {
             std::vector<TargetTrack>& tracks = visible ? scene_.visibilityTracks : scene_.colourTracks;
-            index = static_cast<int>(tracks.size());
+            it->second = tracks.size();
             Track track;
             if (visible) track.interpolation = Interpolation::Step;  // always a step (SPEC 10.7)
-            tracks.push_back({FrameRef{static_cast<std::uint32_t>(t.object), t.part}, track});
+            tracks.push_back({FrameRef{static_cast<std::uint32_t>(t.object), t.part}, t.shape, track});
             (visible ? visibilityTrackBooks_ : colourTrackBooks_).push_back(-1);
         }
-        return static_cast<std::size_t>(index);
+        return it->second;
     }
 
     // Commands
@@ -1103,16 +1178,35 @@ class Parser : private ExpansionSink {
         if (ok) scene_.fps = fps;
     }
 
-    void parseObject(ObjectKind kind) {
+    /// How many numbers give a primitive's size: 1 sphere, 2 cylinder, 3 box, 0 a model.
+    static int sizeArgCount(ObjectKind kind) {
+        return kind == ObjectKind::Sphere     ? 1
+               : kind == ObjectKind::Cylinder ? 2
+               : kind == ObjectKind::Box      ? 3
+                                              : 0;
+    }
+
+    /// The size of a primitive from arguments first… (radius; radius and height; sides).
+    Vec3 primitiveSize(ObjectKind kind, int first, bool& ok) {
         static constexpr std::array<std::string_view, 3> kBoxWhat = {"side sx", "side sy", "side sz"};
         static constexpr std::array<std::string_view, 2> kCylinderWhat = {"radius", "height"};
-        int sizeArgs = 0;
-        if (kind == ObjectKind::Sphere) sizeArgs = 1;
-        if (kind == ObjectKind::Cylinder) sizeArgs = 2;
-        if (kind == ObjectKind::Box) sizeArgs = 3;
+        Vec3 size;
+        for (int k = 0; k < sizeArgCount(kind); ++k) {
+            const std::string_view what = kind == ObjectKind::Box
+                                              ? kBoxWhat[static_cast<std::size_t>(k)]
+                                              : kCylinderWhat[static_cast<std::size_t>(k)];
+            size[k] = positive(first + k, what, ok);
+        }
+        return size;
+    }
+
+    /// A primitive (`model` null) or an instance of `model` (SPEC 10.1).
+    void parseObject(ObjectKind kind, const std::shared_ptr<const ModelType>& model = nullptr) {
+        const int sizeArgs = sizeArgCount(kind);
         const int withoutRotation = 1 + sizeArgs + 3;
         SceneObject object;
         object.kind = kind;
+        if (model) makeInstance(object, model);
         // After an error about the whole line, a valid new name is still
         // registered with its kind, so later lines that use it do not add
         // "unknown name" errors. The error count caps how far this goes past
@@ -1131,12 +1225,7 @@ class Parser : private ExpansionSink {
         }
 
         bool ok = true;
-        for (int k = 0; k < sizeArgs; ++k) {
-            const std::string_view what = kind == ObjectKind::Box
-                                              ? kBoxWhat[static_cast<std::size_t>(k)]
-                                              : kCylinderWhat[static_cast<std::size_t>(k)];
-            object.size[k] = positive(1 + k, what, ok);
-        }
+        object.size = primitiveSize(kind, 1, ok);
         object.rest = pose(1 + sizeArgs, argCount() == withoutRotation + 3, ok);
         // A valid new name is registered even if other arguments are wrong, so
         // later lines that use it do not add "unknown name" errors.
@@ -1158,7 +1247,7 @@ class Parser : private ExpansionSink {
         object.name = std::string(arg(0));
         names_.emplace(object.name, scene_.objects.size());
         if (index_) index_->objects.push_back({object, span(argPos(0), arg(0)), sourceLoc(commandPos())});
-        books_.push_back({argPos(0), {-1, -1, -1, -1, -1}, {}, std::nullopt, definitionLoopNote()});
+        books_.push_back({argPos(0), std::nullopt, definitionLoopNote()});
         scene_.objects.push_back(std::move(object));
     }
 
@@ -1189,27 +1278,56 @@ class Parser : private ExpansionSink {
         }
     }
 
-    /// The appearances a `/paint`-like command on `t` sets (SPEC 3): one part's,
-    /// every part's of a model (the eyes follow the head), or a primitive's.
+    /// What a look command sets (SPEC 3, 10.1): a colour, which a shape painted
+    /// in its model keeps unless the command names that shape, or the rest of
+    /// the look, which reaches every shape of the target.
+    enum class LookPart : bool { Colour, Other };
+
+    /// The shapes' appearances a `/paint`-like command on `t` sets (SPEC 3, 10.1):
+    /// a primitive's, a model's shape's, a part's shapes' or every shape's.
     template <class Set>
-    void setAppearance(const Target& t, Set&& set) {
+    void setAppearance(const Target& t, LookPart what, Set&& set) {
         SceneObject& o = scene_.objects[t.object];
-        if (t.part >= 0) {
-            set(o.appearance[static_cast<std::size_t>(t.part)]);
-        } else if (isModel(o.kind)) {
-            for (Appearance& a : o.appearance) set(a);
-        } else {
-            set(o.appearance[0]);
+        if (!o.model) return set(o.appearance[0]);
+        if (t.shape >= 0) return set(o.appearance[std::size_t(t.shape)]);
+        const std::vector<ModelShape>& shapes = o.model->shapes;
+        for (std::size_t k = 0; k < shapes.size(); ++k) {
+            if (t.part >= 0 && shapes[k].part != t.part) continue;
+            if (what == LookPart::Colour && shapes[k].ownColor) continue;  // painted in its model
+            set(o.appearance[k]);
         }
+    }
+
+    /// Where a look command's target is: a shape of the model being read
+    /// (SPEC 10.1, `part.shape`), else a target of the scene.
+    struct LookTarget {
+        std::optional<Target> scene;
+        ModelShape* modelShape = nullptr;
+        explicit operator bool() const { return scene || modelShape; }
+    };
+    LookTarget lookTarget(int i) {
+        if (!building_)
+            return {target(i, CameraTarget::Refused, LightTarget::Refused, ShapeTarget::Accepted)};
+        const std::optional<int> shape = modelShapeArgument(i);
+        return {std::nullopt, shape ? &building_->type->shapes[std::size_t(*shape)] : nullptr};
+    }
+    template <class Set>
+    void setLook(const LookTarget& t, LookPart what, Set&& set) {
+        if (t.modelShape) {
+            set(t.modelShape->look);
+            if (what == LookPart::Colour) t.modelShape->ownColor = true;
+            return;
+        }
+        setAppearance(*t.scene, what, set);
     }
 
     void parsePaint() {
         if (!expectArgs({4})) return;
         bool ok = true;
-        const std::optional<Target> t = target(0);
+        const LookTarget t = lookTarget(0);
         const Color8 c = color(1, ok);
         if (!t || !ok) return;
-        setAppearance(*t, [&](Appearance& a) { a.color = c; });
+        setLook(t, LookPart::Colour, [&](Appearance& a) { a.color = c; });
     }
 
     void parseMaterial() {
@@ -1224,7 +1342,7 @@ class Parser : private ExpansionSink {
         }
         if (!expectArgs({5, 6}, emits ? 2 : 0)) return;
         bool ok = true;
-        const std::optional<Target> t = target(0);
+        const LookTarget t = lookTarget(0);
         Material m;
         m.ka = nonNegative(1, "ka", ok);
         m.kd = nonNegative(2, "kd", ok);
@@ -1233,15 +1351,16 @@ class Parser : private ExpansionSink {
         if (n - (emits ? 2 : 0) == 6) m.reflection = nonNegative(5, "reflection", ok);
         if (emits) m.emission = nonNegative(n - 1, "emission", ok);
         if (!t || !ok) return;
-        setAppearance(*t, [&](Appearance& a) { a.material = m; });
+        setLook(t, LookPart::Other, [&](Appearance& a) { a.material = m; });
     }
 
     /// `/no_shadow <target>` (SPEC 10.8): the target casts no shadow.
     void parseNoShadow() {
         if (!expectArgs({1})) return;
-        const std::optional<Target> t = target(0);
+        const std::optional<Target> t =
+            target(0, CameraTarget::Refused, LightTarget::Refused, ShapeTarget::Accepted);
         if (!t) return;
-        setAppearance(*t, [](Appearance& a) { a.castsShadow = false; });
+        setAppearance(*t, LookPart::Other, [](Appearance& a) { a.castsShadow = false; });
     }
 
     /// `/checker <target> <r> <g> <b> <size>`: the second colour and cell size
@@ -1249,12 +1368,247 @@ class Parser : private ExpansionSink {
     void parseChecker() {
         if (!expectArgs({5})) return;
         bool ok = true;
-        const std::optional<Target> t = target(0);
+        const LookTarget t = lookTarget(0);
         Checker checker;
         checker.color = color(1, ok);
         checker.size = positive(4, "cell size", ok);
         if (!t || !ok) return;
-        setAppearance(*t, [&](Appearance& a) { a.checker = checker; });
+        // A chequered colour is a colour: a shape painted in its model keeps its own.
+        setLook(t, LookPart::Colour, [&](Appearance& a) { a.checker = checker; });
+    }
+
+    // Models (SPEC 10.1)
+    /// `/model <type>`: starts reading a block; its lines go to parseModelLine
+    /// up to the `/end` the expander pairs with it.
+    void openModel() {
+        building_.emplace();
+        ModelBuild& build = *building_;
+        build.type = std::make_shared<ModelType>();
+        build.defined = commandPos();
+        if (!expectArgs({1}) || failed(0)) return;
+        const std::string_view name = arg(0);
+        const Pos pos = argPos(0);
+        if (!isValidName(name)) {
+            error(pos, noteCharacters("invalid model type " + quoteToken(name) +
+                                          " (expected a letter or '_', then letters, digits or '_')",
+                                      name, pos));
+            return;
+        }
+        const std::string slashed = "/" + std::string(name);
+        if (const auto it = types_.find(name); it != types_.end()) {
+            error(pos, it->second.defined ? "model type " + quoteToken(name) + " is already defined (at " +
+                                                posText(*it->second.defined) + ")"
+                                          : quoteToken(name) + " is a built-in model type ('" + slashed +
+                                                "' makes one); choose another name");
+            return;
+        }
+        if (findCommand(slashed) || name == kRootName || name == kCameraName) {
+            error(pos,
+                  quoteToken(name) + " cannot name a model type: " +
+                      (findCommand(slashed) ? "'" + slashed + "' is a command" : "it is a reserved word"));
+            return;
+        }
+        if (types_.size() >= std::size_t(kMaxModelTypes)) {
+            error(pos, "too many model types: at most " + std::to_string(kMaxModelTypes) +
+                           " allowed (the robot and the human count)");
+            return;
+        }
+        build.type->name = std::string(name);
+        build.named = true;
+        build.indexed.name = span(pos, name);
+        build.indexed.command = sourceLoc(commandPos());
+    }
+
+    /// A line inside a `/model` block.
+    void parseModelLine(std::string_view head) {
+        ModelBuild& build = *building_;
+        const CommandSpec* c = findCommand(head);
+        if (c && c->id == CommandId::End) {
+            if (build.nested > 0) {
+                --build.nested;
+                return;
+            }
+            return closeModel();
+        }
+        if (c && c->id == CommandId::Model) {
+            error(commandPos(), "a '/model' cannot stand inside another (the block of " + modelText(build) +
+                                    " is open until its '/end')");
+            ++build.nested;
+            return;
+        }
+        if (build.nested > 0) return;  // the lines of a refused block
+        if (!c) return unknownCommand(head);
+        using enum CommandId;
+        switch (c->id) {
+            case Part:
+                return parsePart();
+            case Sphere:
+                return parseModelShape(ShapeKind::Sphere, ObjectKind::Sphere);
+            case Cylinder:
+                return parseModelShape(ShapeKind::Cylinder, ObjectKind::Cylinder);
+            case Box:
+                return parseModelShape(ShapeKind::Box, ObjectKind::Box);
+            case Paint:
+                return parsePaint();
+            case Material:
+                return parseMaterial();
+            case Checker:
+                return parseChecker();
+            default:
+                error(commandPos(), quoteToken(head) +
+                                        " cannot stand inside a '/model' block (only /part, "
+                                        "/sphere, /cylinder, /box, /paint, /material, /checker, "
+                                        "/let, /repeat and /include; the block of " +
+                                        modelText(build) + " ends with '/end')");
+        }
+    }
+
+    static std::string modelText(const ModelBuild& build) {
+        return build.named ? quoteToken(build.type->name) : std::string("the model");
+    }
+
+    /// `/part <part> <parent> <px> <py> <pz> [<rx> <ry> <rz>]`.
+    void parsePart() {
+        ModelType& type = *building_->type;
+        if (!expectArgs({5, 8})) return;
+        bool ok = true;
+        ModelPart part;
+        part.pivot = vec3(2, ok);
+        const Vec3 rest = argCount() == 8 ? vec3(5, ok) : Vec3{};
+        setRestRotation(part, rest);
+        if (failed(0) || failed(1)) return;
+        const std::string_view name = arg(0), parent = arg(1);
+        if (!isValidName(name)) {
+            error(argPos(0), noteCharacters("invalid part name " + quoteToken(name) +
+                                                " (expected a letter or '_', then letters, digits or '_')",
+                                            name, argPos(0)));
+            return;
+        }
+        if (name == kRootName) {
+            error(argPos(0),
+                  "'root' is the model's own frame, the parent of its first parts; a part cannot "
+                  "take the name");
+            return;
+        }
+        if (type.partIndex(name) >= 0) {
+            error(argPos(0), "duplicate part " + quoteToken(name) + " in " + modelText(*building_));
+            return;
+        }
+        if (parent == kRootName) {
+            part.parent = -1;
+        } else if (const int index = type.partIndex(parent); index >= 0) {
+            part.parent = index;
+        } else {
+            error(argPos(1), "unknown parent " + quoteToken(parent) +
+                                 " (expected 'root' or a part declared "
+                                 "before this one" +
+                                 (type.parts.empty() ? std::string(")") : ": " + partList(type) + ")"));
+            return;
+        }
+        if (type.parts.size() >= std::size_t(kMaxModelParts)) {
+            error(commandPos(), "too many parts: at most " + std::to_string(kMaxModelParts) + " in a model");
+            return;
+        }
+        if (!ok) return;
+        part.name = std::string(name);
+        type.parts.push_back(std::move(part));
+        building_->indexed.parts.push_back(span(argPos(0), name));
+    }
+
+    /// The `part.shape` in argument i names a shape of the model being read.
+    std::optional<int> modelShapeArgument(int i) {
+        if (failed(i)) return std::nullopt;
+        const ModelType& type = *building_->type;
+        const std::string_view text = arg(i);
+        const std::size_t dot = text.find('.');
+        if (dot == std::string_view::npos) {
+            error(argPos(i), "inside '/model' " + quoteToken(commandText()) +
+                                 " takes a shape of the model, '<part>.<shape>', got " + quoteToken(text));
+            return std::nullopt;
+        }
+        const int part = type.partIndex(text.substr(0, dot));
+        if (part < 0) {
+            error(argPos(i), "unknown part " + quoteToken(text.substr(0, dot)) + " of " +
+                                 modelText(*building_) +
+                                 (type.parts.empty() ? std::string(" (declare it with '/part' first)")
+                                                     : " (expected " + partList(type) + ")"));
+            return std::nullopt;
+        }
+        const int shape = type.shapeIndex(part, text.substr(dot + 1));
+        if (shape < 0) {
+            Pos shapePos = argPos(i);
+            shapePos.column += static_cast<int>(dot) + 1;
+            shapePos.length = static_cast<int>(text.size() - dot - 1);
+            error(shapePos, "unknown shape " + quoteToken(text.substr(dot + 1)) + " on the part " +
+                                quoteToken(text.substr(0, dot)) + " of " + modelText(*building_));
+        }
+        return shape < 0 ? std::nullopt : std::optional<int>(shape);
+    }
+
+    /// `/sphere|/cylinder|/box <part>.<shape> <size…> <cx> <cy> <cz> [<rx> <ry> <rz>]` in a model.
+    void parseModelShape(ShapeKind kind, ObjectKind sized) {
+        ModelType& type = *building_->type;
+        const int sizeArgs = sizeArgCount(sized), withoutRotation = 1 + sizeArgs + 3;
+        if (!expectArgs({withoutRotation, withoutRotation + 3})) return;
+        bool ok = true;
+        ModelShape shape;
+        shape.kind = kind;
+        shape.size = primitiveSize(sized, 1, ok);
+        shape.centre = vec3(1 + sizeArgs, ok);
+        setShapeRotation(shape, argCount() == withoutRotation + 3 ? vec3(4 + sizeArgs, ok) : Vec3{});
+        if (failed(0)) return;
+        const std::string_view text = arg(0);
+        const std::size_t dot = text.find('.');
+        const std::string_view partName = text.substr(0, dot);
+        if (dot == std::string_view::npos || !isValidName(partName) || !isValidName(text.substr(dot + 1))) {
+            error(argPos(0),
+                  noteCharacters("a shape of a model is named '<part>.<shape>', got " + quoteToken(text),
+                                 text, argPos(0)));
+            return;
+        }
+        const std::string_view shapeName = text.substr(dot + 1);
+        shape.part = type.partIndex(partName);
+        if (shape.part < 0) {
+            error(argPos(0), "unknown part " + quoteToken(partName) + " of " + modelText(*building_) +
+                                 (type.parts.empty() ? std::string(" (declare it with '/part' first)")
+                                                     : " (expected " + partList(type) + ")"));
+            return;
+        }
+        if (type.shapeIndex(shape.part, shapeName) >= 0) {
+            error(argPos(0), "duplicate shape " + quoteToken(text) + " in " + modelText(*building_));
+            return;
+        }
+        if (type.shapes.size() >= std::size_t(kMaxModelShapes)) {
+            error(commandPos(),
+                  "too many shapes: at most " + std::to_string(kMaxModelShapes) + " in a model");
+            return;
+        }
+        if (!ok) return;
+        shape.name = std::string(shapeName);
+        type.shapes.push_back(std::move(shape));
+        building_->indexed.shapes.push_back(span(argPos(0), text));
+    }
+
+    /// The `/end` of a `/model` block: the type can be instanced from here on.
+    void closeModel() {
+        ModelBuild build = std::move(*building_);
+        building_.reset();
+        if (argCount() > 0) error(argPos(0), "'/end' takes no arguments");
+        if (build.type->shapes.empty()) {
+            error(build.defined, "model " + modelText(build) +
+                                     " has no shapes (put a '/sphere', '/cylinder' or '/box' named "
+                                     "'<part>.<shape>' on one of its parts)");
+        }
+        if (!build.named) return;
+        // Registered even with an error inside, so its instances do not add
+        // "unknown command" errors.
+        const std::shared_ptr<const ModelType> type = build.type;
+        types_.emplace(type->name, TypeBook{type, build.defined});
+        scene_.models.push_back(type);
+        if (index_) {
+            build.indexed.type = type;
+            index_->models.push_back(std::move(build.indexed));
+        }
     }
 
     void parseAnim() {
@@ -1286,10 +1640,9 @@ class Parser : private ExpansionSink {
         const std::optional<Target> t = target(0, CameraTarget::Accepted, LightTarget::Accepted);
         const std::optional<Easing> mode = easing(1, argCount());
         if (!t || !mode) return;
-        std::optional<Pos>& before = t->camera ? cameraInterp_
-                                     : t->light >= 0
-                                         ? lightBook(*t).interp
-                                         : books_[t->object].interps[static_cast<std::size_t>(t->part + 1)];
+        std::optional<Pos>& before = t->camera       ? cameraInterp_
+                                     : t->light >= 0 ? lightBook(*t).interp
+                                                     : interps_[slotOf(*t)];
         if (before) {
             warning(argPos(0), "interpolation of " + quoteToken(targetName(*t)) +
                                    " is given again; it replaces the one at " + posText(*before));
@@ -1419,7 +1772,8 @@ class Parser : private ExpansionSink {
         }
         bool ok = true;
         const KeyTime time = keyTime(0, ok);
-        const std::optional<Target> t = target(1, CameraTarget::Accepted, LightTarget::Accepted);
+        const std::optional<Target> t =
+            target(1, CameraTarget::Accepted, LightTarget::Accepted, ShapeTarget::Accepted);
         Vec3 values;
         switch (spec->property) {
             case KeyProperty::Colour: {
@@ -1471,8 +1825,8 @@ class Parser : private ExpansionSink {
         addKey(*t, spec->property, time, {time.value, Pose{values, {}}, mode}, argPos(0));
     }
 
-    /// SPEC 10.3's table (and 10.7's `visible`): colour and visible on objects
-    /// and parts, intensity on named lights, d on the camera.
+    /// SPEC 10.3's table (and 10.7's `visible`): colour and visible on objects,
+    /// parts and shapes, intensity on named lights, d on the camera.
     static bool hasProperty(Target t, KeyProperty property) {
         switch (property) {
             case KeyProperty::Colour:
@@ -1490,9 +1844,10 @@ class Parser : private ExpansionSink {
     std::string targetText(Target t) const {
         if (t.camera) return "the camera";
         if (t.light >= 0) return lightText(t.light);
+        if (t.shape >= 0) return "the shape " + quoteToken(targetName(t));
         if (t.part >= 0) return "the part " + quoteToken(targetName(t));
         const SceneObject& o = scene_.objects[t.object];
-        return "the " + std::string(objectKindName(o.kind)) + " " + quoteToken(o.name);
+        return "the " + std::string(typeNameOf(o)) + " " + quoteToken(o.name);
     }
 
     /// Whether argument i is a word that may be a mode (not a number, not an expression).
@@ -1603,7 +1958,7 @@ class Parser : private ExpansionSink {
         if (property == KeyProperty::Visible) return visibilityTrackBooks_[targetTrackIndex(t, *property)];
         if (t.camera) return cameraTrackBook_;
         if (t.light >= 0) return lightBook(t).poseBook;
-        return books_[t.object].tracks[static_cast<std::size_t>(t.part + 1)];
+        return poseTrackBooks_.try_emplace(slotOf(t), -1).first->second;
     }
 
     /// `key.time` is `time.value`: frames, or seconds until convertSecondsToFrames.
@@ -1950,11 +2305,14 @@ class Parser : private ExpansionSink {
         }
     }
 
-    /// Whole objects' colour tracks first, so a part's track, applied later, wins.
+    /// Whole objects' colour tracks first, then parts', then shapes', so that
+    /// the most specific track, applied last, wins.
     void orderColourTracks() {
-        std::stable_partition(scene_.colourTracks.begin(), scene_.colourTracks.end(),
-                              [](const TargetTrack& c) { return c.target.part < 0; });
+        const auto rank = [](const TargetTrack& c) { return c.shape >= 0 ? 2 : c.target.part >= 0 ? 1 : 0; };
+        std::stable_sort(scene_.colourTracks.begin(), scene_.colourTracks.end(),
+                         [&](const TargetTrack& a, const TargetTrack& b) { return rank(a) < rank(b); });
         colourTrackBooks_ = {};  // its indices no longer match
+        colourTrackIndex_ = {};
     }
 
     void sortUnsortedTracks() {
@@ -2031,6 +2389,16 @@ class Parser : private ExpansionSink {
 
     std::unordered_map<std::string, std::size_t, StringHash, std::equal_to<>> names_;
     std::vector<ObjectBook> books_;  ///< parallel to scene_.objects
+    /// By target (slotOf): Parser::trackBooks_ index of its pose track, where
+    /// its /interp was given, and its colour and visible tracks' indices in
+    /// SceneDesc::colourTracks and visibilityTracks.
+    std::unordered_map<std::uint64_t, int> poseTrackBooks_;
+    std::unordered_map<std::uint64_t, std::optional<Pos>> interps_;
+    std::unordered_map<std::uint64_t, std::size_t> colourTrackIndex_, visibilityTrackIndex_;
+    /// Model types by name (SPEC 10.1): the robot, the human, then the file's.
+    std::unordered_map<std::string, TypeBook, StringHash, std::equal_to<>> types_{
+        {"robot", {robotModel(), std::nullopt}}, {"human", {humanModel(), std::nullopt}}};
+    std::optional<ModelBuild> building_;
     std::vector<TrackBook> trackBooks_;
     std::optional<Pos> cameraSeen_, backgroundSeen_, fpsSeen_, lookAtSeen_, cameraAttached_, cameraInterp_;
     std::size_t keyLines_ = 0;

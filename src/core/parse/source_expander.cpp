@@ -11,6 +11,7 @@
 #include <cstring>
 #include <filesystem>
 #include <tuple>
+#include <unordered_set>
 
 #include "core/parse/language.h"
 #include "core/parse/number.h"
@@ -28,6 +29,9 @@ const std::string_view kLet = command(CommandId::Let).name;
 const std::string_view kRepeat = command(CommandId::Repeat).name;
 const std::string_view kEnd = command(CommandId::End).name;
 const std::string_view kInclude = command(CommandId::Include).name;
+/// `/model … /end` (SPEC 10.1) shares `/end` with the loops: the expander pairs
+/// them and hands the block's lines, its `/model` and `/end` included, to the parser.
+const std::string_view kModel = command(CommandId::Model).name;
 
 /// The first token of a line, cheaply (for the scan that pairs /repeat and /end).
 std::string_view firstWord(std::string_view line) {
@@ -169,6 +173,7 @@ struct SourceExpander::SourceFile {
     std::string directory;  ///< relative includes are read from here ("" = current directory)
     std::optional<std::pair<std::uint64_t, std::uint64_t>> identity;
     std::unordered_map<int, LoopInfo> loops;  ///< by the line number of the /repeat
+    std::unordered_set<int> closedModels;     ///< line numbers of the /model blocks that have an /end
 
     /// Pairs each /repeat with its /end (a /repeat left open has no entry).
     /// A line longer than `maxLineBytes` is refused when read, so a loop on it never runs.
@@ -179,6 +184,7 @@ struct SourceExpander::SourceFile {
             double deepLines = 0, deepBytes = 0;
             int innerDepth = 0;
             std::optional<double> passes;  ///< when its bounds are numbers
+            bool model = false;            ///< a `/model` block, not a loop
         };
         std::vector<Open> open;
         LineReader reader(text);
@@ -187,6 +193,21 @@ struct SourceExpander::SourceFile {
             ++lineCount;
             const std::string_view word = firstWord(line.text);
             const std::uint64_t bytes = line.text.size() + 1;
+            if (word == kEnd && !open.empty() && open.back().model) {
+                // A model's block is read once: its lines count in the loop around it.
+                const Open o = open.back();
+                open.pop_back();
+                closedModels.insert(o.line);
+                if (!open.empty()) {
+                    Open& outer = open.back();
+                    outer.lines += o.lines + 1;
+                    outer.bytes += o.bytes + bytes;
+                    outer.deepLines += o.deepLines + 1;
+                    outer.deepBytes += o.deepBytes + static_cast<double>(bytes);
+                    outer.innerDepth = std::max(outer.innerDepth, o.innerDepth);
+                }
+                continue;
+            }
             if (word == kEnd && !open.empty()) {
                 const Open o = open.back();
                 open.pop_back();
@@ -215,6 +236,12 @@ struct SourceExpander::SourceFile {
                 Open o;
                 o.line = line.number;
                 if (line.text.size() <= maxLineBytes) o.passes = literalLoopPasses(line.text);
+                open.push_back(o);
+            }
+            if (word == kModel) {
+                Open o;
+                o.line = line.number;
+                o.model = true;
                 open.push_back(o);
             }
         }
@@ -333,8 +360,21 @@ bool SourceExpander::next(LogicalLine& out) {
         } else if (command == kRepeat) {
             evaluateTokens(out, 2);
             runRepeat(out, line.number);
+        } else if (command == kEnd && endsModel()) {
+            modelBlocks_.pop_back();
+            return true;  // the parser closes the model
         } else if (command == kEnd) {
             runEnd(out);
+        } else if (command == kModel) {
+            if (!frame.source->closedModels.contains(line.number)) {
+                // Nothing after it in this file can be read as it was meant.
+                error(at(out.tokens[0]), "'/model' without '/end' in the same file");
+                frame.reader = LineReader(std::string_view());
+                continue;
+            }
+            evaluateTokens(out, 1);
+            modelBlocks_.push_back({fileStack_.size(), loopStack_.size()});
+            return true;
         } else if (command == kInclude) {
             runInclude(line.text, out);
         } else {
@@ -572,6 +612,11 @@ void SourceExpander::runRepeat(const LogicalLine& line, int lineNumber) {
     loopStack_.push_back({std::string(name.text), variables_.find(name.text), *from, *step,
                           static_cast<std::uint64_t>(passes), 0, frame.reader});
     variables_.set(name.text, *from);
+}
+
+bool SourceExpander::endsModel() const {
+    return !modelBlocks_.empty() && modelBlocks_.back().fileDepth == fileStack_.size() &&
+           modelBlocks_.back().loopDepth == loopStack_.size();
 }
 
 void SourceExpander::runEnd(const LogicalLine& line) {

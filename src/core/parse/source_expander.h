@@ -1,6 +1,7 @@
 #pragma once
 /// The front end of the scene language (SPEC 9.4, 9.5): reads the scene file
 /// and the files it includes, runs `/let`, `/repeat … /end` and `/include`,
+/// pairs `/model` with its `/end` (SPEC 10.1; the parser reads the block),
 /// evaluates `( … )` arguments and `{ … }` in names, and hands the command
 /// parser one logical line at a time. The command parser never sees those
 /// four commands. Lines are produced on demand, so a loop of ten million
@@ -161,6 +162,14 @@ class SourceExpander {
     std::deque<std::unique_ptr<SourceFile>> sources_;
     std::vector<FileFrame> fileStack_;
     std::vector<LoopFrame> loopStack_;
+    /// Open `/model` blocks (SPEC 10.1): the depths of the file and loop
+    /// stacks at their `/model`, so that the `/end` at those depths is theirs.
+    struct ModelBlock {
+        std::size_t fileDepth, loopDepth;
+    };
+    std::vector<ModelBlock> modelBlocks_;
+    /// Whether an `/end` read now closes a model block rather than a loop.
+    bool endsModel() const;
     std::uint64_t linesRead_ = 0, bytesRead_ = 0, linesInFiles_ = 0;
     std::size_t fileBytes_ = 0;
     bool stopped_ = false;

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <array>
 
-#include "core/scene/scene_desc.h"
+#include "core/scene/models.h"
 
 namespace f2 {
 
@@ -16,27 +16,28 @@ bool equalIgnoringCase(std::string_view a, std::string_view b) {
            std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) { return lower(x) == lower(y); });
 }
 
-/// Words people use for the parts (SPEC 5 names them body, head, lhand, rhand).
+/// Words people use for the robot's and the human's parts (SPEC 5 names
+/// them body, head, lhand, rhand), for any model with a part of that name.
 struct PartAlias {
     std::string_view word;
-    PartId part;
+    std::string_view part;
 };
 
 constexpr std::array<PartAlias, 14> kPartAliases = {{
-    {"torso", PartId::Body},
-    {"trunk", PartId::Body},
-    {"left", PartId::LHand},
-    {"larm", PartId::LHand},
-    {"leftarm", PartId::LHand},
-    {"left_arm", PartId::LHand},
-    {"lefthand", PartId::LHand},
-    {"left_hand", PartId::LHand},
-    {"right", PartId::RHand},
-    {"rarm", PartId::RHand},
-    {"rightarm", PartId::RHand},
-    {"right_arm", PartId::RHand},
-    {"righthand", PartId::RHand},
-    {"right_hand", PartId::RHand},
+    {"torso", "body"},
+    {"trunk", "body"},
+    {"left", "lhand"},
+    {"larm", "lhand"},
+    {"leftarm", "lhand"},
+    {"left_arm", "lhand"},
+    {"lefthand", "lhand"},
+    {"left_hand", "lhand"},
+    {"right", "rhand"},
+    {"rarm", "rhand"},
+    {"rightarm", "rhand"},
+    {"right_arm", "rhand"},
+    {"righthand", "rhand"},
+    {"right_hand", "rhand"},
 }};
 
 }  // namespace
@@ -72,12 +73,12 @@ std::size_t ClosestWord::consider(std::string_view candidate) {
     return cost;
 }
 
-std::string_view suggestPart(std::string_view word) {
+std::string_view suggestPart(std::string_view word, const ModelType& model) {
     for (const PartAlias& a : kPartAliases) {
-        if (equalIgnoringCase(word, a.word)) return kPartNames[static_cast<std::size_t>(a.part)];
+        if (equalIgnoringCase(word, a.word) && model.partIndex(a.part) >= 0) return a.part;
     }
     ClosestWord closest(word);
-    for (const char* name : kPartNames) closest.consider(name);
+    for (const ModelPart& part : model.parts) closest.consider(part.name);
     return closest.best();
 }
 

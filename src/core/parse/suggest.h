@@ -5,6 +5,8 @@
 
 namespace f2 {
 
+struct ModelType;  // scene/models.h
+
 /// Only short words get a hint: the edit distance costs O(n·m).
 inline constexpr std::size_t kMaxSuggestLength = 32;
 
@@ -34,6 +36,6 @@ class ClosestWord {
 
 /// The part a mistyped or guessed part name most likely means ("Head" →
 /// "head", "left_arm" → "lhand", "torso" → "body"), or empty.
-std::string_view suggestPart(std::string_view word);
+std::string_view suggestPart(std::string_view word, const ModelType& model);
 
 }  // namespace f2

@@ -3,6 +3,7 @@
 /// parser for tools that work on the source (the language server), filled
 /// even when the scene has errors.
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -42,6 +43,15 @@ struct NameUse {
     bool light = false;      ///< it names a light (SPEC 10.2)
 };
 
+/// A model type of the scene (SPEC 10.1) and where its `/model`, parts and
+/// shapes are written (parallel to the type's parts and shapes).
+struct IndexedModel {
+    std::shared_ptr<const ModelType> type;
+    TokenSpan name;  ///< the type's name after `/model`
+    SourceLoc command;
+    std::vector<TokenSpan> parts, shapes;  ///< a part's name after `/part`; a shape's `part.shape`
+};
+
 /// A command line that tools list as a symbol of the scene: `/camera`, lights.
 struct IndexedCommand {
     std::string command;
@@ -53,6 +63,7 @@ struct SymbolIndex {
     std::vector<IndexedLight> lights;    ///< named lights, in creation order (SceneDesc::lightMotions' order)
     std::vector<NameUse> uses;           ///< in file order
     std::vector<IndexedCommand> commands;
+    std::vector<IndexedModel> models;  ///< the scene's `/model` types, in file order
 
     void clear() { *this = SymbolIndex{}; }
     /// Keeps the commands listed as symbols (the camera and lights), ignores the rest.

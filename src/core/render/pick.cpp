@@ -24,12 +24,10 @@ std::optional<PickHit> pickPoint(const SceneDesc& scene, const FrameScene& frame
     result.object = object;
     result.distance = hit.t;
     result.point = ray.origin + ray.direction * hit.t;
-    const ObjectKind kind = scene.objects[object].kind;
-    if (kind == ObjectKind::Robot || kind == ObjectKind::Human) {
-        const std::size_t shape = hit.primitive - first[object];
-        const auto shapes = modelOf(kind).shapes;
-        if (shape < shapes.size()) result.part = shapes[shape].part;
-    }
+    const std::size_t shape = hit.primitive - first[object];
+    result.shape = int(shape);
+    if (const ModelType* model = scene.objects[object].model.get(); model && shape < model->shapes.size())
+        result.part = model->shapes[shape].part;
     return result;
 }
 
@@ -42,14 +40,13 @@ std::optional<PickHit> pickPixel(const SceneDesc& scene, double t, const Camera&
 }
 
 Bounds selectionBounds(const SceneDesc& scene, const EvaluatedFrame& frame, std::size_t object,
-                       std::optional<PartId> part) {
+                       std::optional<int> part) {
     Bounds bounds;
     if (object + 1 >= frame.firstPrimitive.size() || object >= scene.objects.size()) return bounds;
-    const ObjectKind kind = scene.objects[object].kind;
-    const bool model = kind == ObjectKind::Robot || kind == ObjectKind::Human;
+    const ModelType* model = scene.objects[object].model.get();
     for (std::uint32_t i = frame.firstPrimitive[object]; i < frame.firstPrimitive[object + 1]; ++i) {
         const std::size_t shape = i - frame.firstPrimitive[object];
-        if (part && model && modelOf(kind).shapes[shape].part != *part) continue;
+        if (part && model && model->shapes[shape].part != *part) continue;
         bounds.grow(primitiveBounds(frame.primitives[i]));
     }
     return bounds;

@@ -13,10 +13,11 @@ namespace f2 {
 
 /// A scene-level identity and where the ray met it.
 struct PickHit {
-    std::size_t object = 0;      ///< index into SceneDesc::objects
-    std::optional<PartId> part;  ///< the part of a robot or human (eyes belong to the head)
-    Vec3 point;                  ///< world position of the hit
-    float distance = 0;          ///< along the ray, from the eye
+    std::size_t object = 0;   ///< index into SceneDesc::objects
+    std::optional<int> part;  ///< the part of a model instance (eyes belong to the head)
+    int shape = 0;            ///< the shape among the object's primitives (0 for a primitive)
+    Vec3 point;               ///< world position of the hit
+    float distance = 0;       ///< along the ray, from the eye
 };
 
 /// What image point (px, py) (pixel coordinates as Camera::rayThrough; the
@@ -29,8 +30,8 @@ std::optional<PickHit> pickPoint(const SceneDesc& scene, const FrameScene& frame
 std::optional<PickHit> pickPixel(const SceneDesc& scene, double t, const Camera& camera, int x, int y);
 
 /// World bounds of object `object` of `scene` in `frame` (evaluated from it),
-/// or of one part of a robot or human.
+/// or of one part of a model instance.
 Bounds selectionBounds(const SceneDesc& scene, const EvaluatedFrame& frame, std::size_t object,
-                       std::optional<PartId> part);
+                       std::optional<int> part);
 
 }  // namespace f2

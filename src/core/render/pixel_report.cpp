@@ -78,11 +78,12 @@ std::string primitiveName(const SceneDesc& scene, const EvaluatedFrame& frame, s
     if (object >= scene.objects.size()) return "?";
     const SceneObject& o = scene.objects[object];
     std::string name = o.name;
-    if (isModel(o.kind)) {
-        const ModelDef& model = modelOf(o.kind);
-        std::size_t shape = primitive - frame.firstPrimitive[object];
-        if (shape < model.shapes.size())
-            name += std::string(".") + kPartNames[std::size_t(model.shapes[shape].part)];
+    if (o.model) {
+        const std::size_t shape = primitive - frame.firstPrimitive[object];
+        if (shape < o.model->shapes.size()) {
+            const ModelShape& s = o.model->shapes[shape];
+            name += "." + o.model->parts[std::size_t(s.part)].name + "." + s.name;
+        }
     }
     return name + " (" + std::string(shapeKindName(frame.primitives[primitive].kind)) + ")";
 }

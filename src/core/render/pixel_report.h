@@ -53,7 +53,7 @@ struct PixelReport {
 /// built) by the reference path and reports each step.
 PixelReport tracePixel(const FrameScene& frame, const Camera& camera, int x, int y);
 
-/// "r1.head (box)", "s1 (sphere)": the object (and part) a frame primitive
+/// "r1.head.face (box)", "s1 (sphere)": the object (and part and shape) a frame primitive
 /// belongs to. `frame` must have been evaluated from `scene`.
 std::string primitiveName(const SceneDesc& scene, const EvaluatedFrame& frame, std::uint32_t primitive);
 

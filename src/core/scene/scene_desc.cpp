@@ -57,7 +57,7 @@ int SceneDesc::lastFrame() const {
 
 std::size_t SceneDesc::primitiveCount() const {
     std::size_t n = 0;
-    for (const SceneObject& o : objects) n += primitiveCountOf(o.kind);
+    for (const SceneObject& o : objects) n += primitiveCountOf(o);
     return n;
 }
 

@@ -117,26 +117,25 @@ struct Track {
     const Easing& modeAfter(std::size_t i) const { return keys[i].mode ? *keys[i].mode : interpolation; }
 };
 
-enum class ObjectKind : std::uint8_t { Sphere, Cylinder, Box, Robot, Human };
+/// A primitive, or an instance of a model type (SPEC 10.1: the robot, the
+/// human, or a `/model` of the scene).
+enum class ObjectKind : std::uint8_t { Sphere, Cylinder, Box, Model };
 
-/// "sphere", "cylinder", "box", "robot" or "human", as the creating command.
+/// "sphere", "cylinder", "box" or "model" (a model's own type name: typeNameOf, models.h).
 constexpr std::string_view objectKindName(ObjectKind kind) {
-    constexpr std::string_view kNames[] = {"sphere", "cylinder", "box", "robot", "human"};
+    constexpr std::string_view kNames[] = {"sphere", "cylinder", "box", "model"};
     return kNames[static_cast<int>(kind)];
 }
 
-inline bool isModel(ObjectKind k) { return k == ObjectKind::Robot || k == ObjectKind::Human; }
+inline bool isModel(ObjectKind k) { return k == ObjectKind::Model; }
 
-/// Parts of a model (SPEC 5), in a fixed order used to index arrays.
-enum class PartId : std::uint8_t { Body, Head, LHand, RHand };
-inline constexpr int kPartCount = 4;
-inline constexpr std::array<const char*, kPartCount> kPartNames = {"body", "head", "lhand", "rhand"};
+struct ModelType;  // scene/models.h
 
 /// A frame something can ride on or look at (SPEC 9.1, 9.2): an object's root
 /// frame, or the frame of one of its parts.
 struct FrameRef {
     std::uint32_t object = 0;  ///< index in SceneDesc::objects
-    int part = -1;             ///< PartId index, or -1 for the object itself
+    int part = -1;             ///< index among its model's parts, or -1 for the object itself
     friend bool operator==(const FrameRef&, const FrameRef&) = default;
 };
 
@@ -146,19 +145,23 @@ struct AttachChange {
     std::optional<FrameRef> mount;  ///< none: `world`, the ride ends
 };
 
-/// One named object of the scene: a primitive, a robot or a human.
+/// One named object of the scene: a primitive, or an instance of a model.
 struct SceneObject {
     std::string name;
     ObjectKind kind = ObjectKind::Sphere;
+    /// An instance's type (kind Model); null for a primitive.
+    std::shared_ptr<const ModelType> model;
     /// Sphere: (r, 0, 0); cylinder: (r, h, 0); box: (sx, sy, sz); models: unused.
     Vec3 size;
     Pose rest;
     /// Object's own key frames (absolute pose).
     Track track;
-    /// Primitives use appearance[0]; models one per part (indexed by PartId).
-    std::array<Appearance, kPartCount> appearance{};
-    /// Models only: per-part key frames (offset and rotation about the pivot).
-    std::array<Track, kPartCount> partTracks{};
+    /// One per primitive: a primitive's own, or each shape's of a model, in
+    /// the model's order (SPEC 10.1: looks on the instance, a part or a shape).
+    std::vector<Appearance> appearance = std::vector<Appearance>(1);
+    /// Models only: each part's key frames (offset and rotation about the
+    /// pivot), one per part of the model.
+    std::vector<Track> partTracks;
     /// `/attach` (SPEC 9.2): the frame the object rides on from the start; its
     /// pose is then read in that frame.
     std::optional<FrameRef> attachedTo;
@@ -220,11 +223,12 @@ struct LightMotion {
     Track intensity;  ///< `/key t <name> intensity <i>` (keys' position.x)
 };
 
-/// A property track of an object or a model part: `/key t <target> colour r
-/// g b` (SPEC 10.3; keys' position: r g b, 0..255) or `/key t <target>
-/// visible 0|1` (SPEC 10.7; keys' position.x, always a step).
+/// A property track of an object, a model part or a shape: `/key t <target>
+/// colour r g b` (SPEC 10.3; keys' position: r g b, 0..255) or `/key t
+/// <target> visible 0|1` (SPEC 10.7; keys' position.x, always a step).
 struct TargetTrack {
     FrameRef target;
+    int shape = -1;  ///< a shape of the model (`f2.head.leye`), else -1
     Track track;
 };
 
@@ -269,13 +273,17 @@ struct SceneDesc {
     /// Named lights' names, poses and intensity tracks (SPEC 10.2), in file order.
     std::vector<LightMotion> lightMotions;
     /// Colour keys (SPEC 10.3): every whole object's track before any part's,
-    /// so that applied in order the most specific target wins.
+    /// and those before any shape's, so that applied in order the most
+    /// specific target wins.
     std::vector<TargetTrack> colourTracks;
     /// Visibility keys (SPEC 10.7), in file order of their targets' first key.
     std::vector<TargetTrack> visibilityTracks;
     Color8 background{0, 0, 0};
     int fps = 24;
     std::vector<SceneObject> objects;
+    /// The scene's own model types (`/model`, SPEC 10.1), in file order; the
+    /// robot and the human are not among them (models.h).
+    std::vector<std::shared_ptr<const ModelType>> models;
     /// Indices of the attached objects, each after the object it rides on
     /// when that one is attached too: the order in which to evaluate them.
     /// When `attachmentsChange`, every object that may ride, in index order
@@ -291,7 +299,7 @@ struct SceneDesc {
     /// Last frame of the animation: the smallest whole number at or after the
     /// largest key time of the scene, a caption's times included (0 if none; SPEC 10.4).
     int lastFrame() const;
-    /// Number of primitives after expanding models (robot 6, human 4).
+    /// Number of primitives after expanding models (robot 6, human 4: their shapes).
     std::size_t primitiveCount() const;
 };
 
