@@ -125,9 +125,11 @@ struct ObjectBook {
 /// A `/model` block being read (SPEC 10.1).
 struct ModelBuild {
     std::shared_ptr<ModelType> type;
-    Pos defined;
-    bool named = false;  ///< its name is valid and new: the type is registered at `/end`
-    int nested = 0;      ///< `/model` lines inside it (each an error) whose `/end` is still to come
+    Pos defined;                   ///< its `/model`
+    Pos namePos;                   ///< its type's name there
+    std::size_t errorsBefore = 0;  ///< errors reported before it: one inside makes "no shapes" a follow-on
+    bool named = false;            ///< its name is valid and new: the type is registered at `/end`
+    int nested = 0;                ///< `/model` lines inside it (each an error) whose `/end` is still to come
     IndexedModel indexed;
 };
 
@@ -1385,6 +1387,7 @@ class Parser : private ExpansionSink {
         ModelBuild& build = *building_;
         build.type = std::make_shared<ModelType>();
         build.defined = commandPos();
+        build.errorsBefore = errors_;
         if (!expectArgs({1}) || failed(0)) return;
         const std::string_view name = arg(0);
         const Pos pos = argPos(0);
@@ -1414,6 +1417,7 @@ class Parser : private ExpansionSink {
             return;
         }
         build.type->name = std::string(name);
+        build.namePos = pos;
         build.named = true;
         build.indexed.name = span(pos, name);
         build.indexed.command = sourceLoc(commandPos());
@@ -1500,16 +1504,14 @@ class Parser : private ExpansionSink {
             part.parent = index;
         } else {
             error(argPos(1), "unknown parent " + quoteToken(parent) +
-                                 " (expected 'root' or a part declared "
-                                 "before this one" +
+                                 " (expected 'root' or a part declared before this one" +
                                  (type.parts.empty() ? std::string(")") : ": " + partList(type) + ")"));
-            return;
+            // Still declared (on the root), so that its shapes add no errors.
         }
         if (type.parts.size() >= std::size_t(kMaxModelParts)) {
             error(commandPos(), "too many parts: at most " + std::to_string(kMaxModelParts) + " in a model");
             return;
         }
-        if (!ok) return;
         part.name = std::string(name);
         type.parts.push_back(std::move(part));
         building_->indexed.parts.push_back(span(argPos(0), name));
@@ -1594,7 +1596,7 @@ class Parser : private ExpansionSink {
         ModelBuild build = std::move(*building_);
         building_.reset();
         if (argCount() > 0) error(argPos(0), "'/end' takes no arguments");
-        if (build.type->shapes.empty()) {
+        if (build.type->shapes.empty() && errors_ == build.errorsBefore) {
             error(build.defined, "model " + modelText(build) +
                                      " has no shapes (put a '/sphere', '/cylinder' or '/box' named "
                                      "'<part>.<shape>' on one of its parts)");
@@ -1603,7 +1605,7 @@ class Parser : private ExpansionSink {
         // Registered even with an error inside, so its instances do not add
         // "unknown command" errors.
         const std::shared_ptr<const ModelType> type = build.type;
-        types_.emplace(type->name, TypeBook{type, build.defined});
+        types_.emplace(type->name, TypeBook{type, build.namePos});
         scene_.models.push_back(type);
         if (index_) {
             build.indexed.type = type;
