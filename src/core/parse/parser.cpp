@@ -131,12 +131,25 @@ struct ModelBuild {
     bool named = false;            ///< its name is valid and new: the type is registered at `/end`
     int nested = 0;                ///< `/model` lines inside it (each an error) whose `/end` is still to come
     IndexedModel indexed;
+    /// Read again for an instance (SPEC 10.6): the type whose names it must give; not registered.
+    std::shared_ptr<const ModelType> readFor;
+};
+
+/// What addObject needs of a creating command's line, taken before a model's
+/// block is read again for the instance (SPEC 10.6) and the line is gone.
+struct ObjectLine {
+    std::string name;
+    Pos namePos, command;
+    TokenSpan nameSpan;
+    std::uint32_t loopNote = 0;
 };
 
 /// A model type that instances may use: the robot, the human, or a `/model` of the file.
 struct TypeBook {
     std::shared_ptr<const ModelType> type;
     std::optional<Pos> defined;  ///< none for the robot and the human
+    /// Where its block's lines start, read again for an instance that sets a parameter (SPEC 10.6).
+    SourceExpander::BlockStart start;
 };
 
 /// Parse-time bookkeeping of one named light (SPEC 10.2).
@@ -323,6 +336,7 @@ class Parser : private ExpansionSink {
         } else {
             ++errors_;
         }
+        message += instanceNote_;
         std::string place = std::to_string(pos.file) + ':' + std::to_string(pos.line) + ':' +
                             std::to_string(pos.column) + (severity == Severity::Error ? "e" : "w") + message;
         if (auto it = firstAtPlace_.find(place); it != firstAtPlace_.end()) {
@@ -442,7 +456,7 @@ class Parser : private ExpansionSink {
         }
         if (const TypeBook* type = typeOfCommand(head)) {
             if (index_) index_->noteCommand(head, sourceLoc(commandPos()));
-            return parseObject(ObjectKind::Model, type->type);
+            return parseObject(ObjectKind::Model, type);
         }
         unknownCommand(head);
     }
@@ -481,9 +495,9 @@ class Parser : private ExpansionSink {
             case Paint:
                 return parsePaint();
             case Robot:
-                return parseObject(ObjectKind::Model, robotModel());
+                return parseObject(ObjectKind::Model, &types_.at("robot"));
             case Human:
-                return parseObject(ObjectKind::Model, humanModel());
+                return parseObject(ObjectKind::Model, &types_.at("human"));
             case Anim:
                 return parseAnim();
             case Key:
@@ -1202,18 +1216,29 @@ class Parser : private ExpansionSink {
         return size;
     }
 
-    /// A primitive (`model` null) or an instance of `model` (SPEC 10.1).
-    void parseObject(ObjectKind kind, const std::shared_ptr<const ModelType>& model = nullptr) {
+    /// A primitive (`type` null) or an instance of a model type (SPEC 10.1),
+    /// with its parameters' values after the pose (SPEC 10.6).
+    void parseObject(ObjectKind kind, const TypeBook* type = nullptr) {
         const int sizeArgs = sizeArgCount(kind);
         const int withoutRotation = 1 + sizeArgs + 3;
         SceneObject object;
         object.kind = kind;
-        if (model) makeInstance(object, model);
+        if (type) makeInstance(object, type->type);
+        // An instance's parameters start at the first word after its position.
+        int options = argCount();
+        if (type) {
+            for (int i = withoutRotation; i < std::min(argCount(), kMaxStoredTokens - 1); ++i) {
+                if (isWordArgument(i)) {
+                    options = i;
+                    break;
+                }
+            }
+        }
         // After an error about the whole line, a valid new name is still
         // registered with its kind, so later lines that use it do not add
         // "unknown name" errors. The error count caps how far this goes past
         // the object limit.
-        const bool countOk = expectArgs({withoutRotation, withoutRotation + 3});
+        const bool countOk = expectArgs({withoutRotation, withoutRotation + 3}, argCount() - options);
         const bool roomOk = scene_.objects.size() < limits_.maxObjects;
         if (countOk && !roomOk) {
             error(commandPos(), "too many objects: at most " + std::to_string(limits_.maxObjects) +
@@ -1228,10 +1253,24 @@ class Parser : private ExpansionSink {
 
         bool ok = true;
         object.size = primitiveSize(kind, 1, ok);
-        object.rest = pose(1 + sizeArgs, argCount() == withoutRotation + 3, ok);
+        object.rest = pose(1 + sizeArgs, options == withoutRotation + 3, ok);
+        const std::optional<std::vector<ModelParam>> params =
+            type && options < argCount() ? instanceParams(*type->type, options) : std::nullopt;
         // A valid new name is registered even if other arguments are wrong, so
         // later lines that use it do not add "unknown name" errors.
-        if (newName(0)) addObject(std::move(object));
+        if (!newName(0)) return;
+        ObjectLine line = objectLine();
+        if (ok && params && !sameValues(*params, type->type->params)) {
+            // The block read again with the instance's values; after an error in it, the type as defined.
+            if (std::shared_ptr<const ModelType> own = readBlockFor(*type, *params, line))
+                makeInstance(object, std::move(own));
+        }
+        addObject(std::move(object), std::move(line));
+    }
+
+    static bool sameValues(const std::vector<ModelParam>& a, const std::vector<ModelParam>& b) {
+        return std::equal(a.begin(), a.end(), b.begin(), b.end(),
+                          [](const ModelParam& x, const ModelParam& y) { return x.value == y.value; });
     }
 
     /// The loop values of the line being read ("in /repeat k = 0") as an index
@@ -1245,12 +1284,17 @@ class Parser : private ExpansionSink {
     }
 
     /// Adds the object named by argument 0, which is valid and new.
-    void addObject(SceneObject object) {
-        object.name = std::string(arg(0));
+    void addObject(SceneObject object) { addObject(std::move(object), objectLine()); }
+    void addObject(SceneObject object, ObjectLine line) {
+        object.name = std::move(line.name);
         names_.emplace(object.name, scene_.objects.size());
-        if (index_) index_->objects.push_back({object, span(argPos(0), arg(0)), sourceLoc(commandPos())});
-        books_.push_back({argPos(0), std::nullopt, definitionLoopNote()});
+        if (index_) index_->objects.push_back({object, line.nameSpan, sourceLoc(line.command)});
+        books_.push_back({line.namePos, std::nullopt, line.loopNote});
         scene_.objects.push_back(std::move(object));
+    }
+    /// The creating command's line (its name in argument 0), as addObject needs it.
+    ObjectLine objectLine() {
+        return {std::string(arg(0)), argPos(0), commandPos(), span(argPos(0), arg(0)), definitionLoopNote()};
     }
 
     /// Warnings about a scene that parses but is almost certainly not what was
@@ -1388,7 +1432,20 @@ class Parser : private ExpansionSink {
         build.type = std::make_shared<ModelType>();
         build.defined = commandPos();
         build.errorsBefore = errors_;
-        if (!expectArgs({1}) || failed(0)) return;
+        // `/model <type> [<param> <default>]…` (SPEC 10.6): each default is
+        // the parameter's value while the block is read here.
+        if (argCount() % 2 == 0) {
+            if (argCount() == 0) {
+                expectArgs({1});
+            } else {
+                error(argPos(argCount() - 1),
+                      "the parameter " + quoteToken(arg(argCount() - 1)) +
+                          " needs a default value: '/model <type> [<param> <default>]…'");
+            }
+            return;
+        }
+        build.type->params = modelParams();
+        if (failed(0)) return;
         const std::string_view name = arg(0);
         const Pos pos = argPos(0);
         if (!isValidName(name)) {
@@ -1419,8 +1476,118 @@ class Parser : private ExpansionSink {
         build.type->name = std::string(name);
         build.namePos = pos;
         build.named = true;
+        start_ = expander_.lastModelBlock();
         build.indexed.name = span(pos, name);
         build.indexed.command = sourceLoc(commandPos());
+    }
+
+    /// The `<param> <default>` pairs after a `/model`'s type (SPEC 10.6), each
+    /// set as a variable of the block; a bad one is reported and left out.
+    std::vector<ModelParam> modelParams() {
+        std::vector<ModelParam> params;
+        for (int i = 1; i + 1 < argCount() + 1; i += 2) {
+            if (failed(i)) continue;
+            const std::string_view name = arg(i);
+            bool ok = true;
+            const double value = real(i + 1, ok);
+            if (!isValidName(name) || Variables::isPredefined(name)) {
+                error(argPos(i),
+                      noteCharacters(Variables::isPredefined(name)
+                                         ? quoteToken(name) + " is a constant; a parameter cannot take "
+                                                              "its name"
+                                         : "invalid parameter name " + quoteToken(name) +
+                                               " (expected a letter or '_', then letters, digits or "
+                                               "'_')",
+                                     name, argPos(i)));
+                continue;
+            }
+            if (std::any_of(params.begin(), params.end(),
+                            [&](const ModelParam& p) { return p.name == name; })) {
+                error(argPos(i), "the parameter " + quoteToken(name) + " is given twice");
+                continue;
+            }
+            if (!ok) continue;
+            params.push_back({std::string(name), value});
+            expander_.setVariable(name, value);
+        }
+        return params;
+    }
+
+    /// The instance's values of its type's parameters (SPEC 10.6): the option
+    /// words from argument `first` on, any order, each once; nullopt after an error.
+    std::optional<std::vector<ModelParam>> instanceParams(const ModelType& type, int first) {
+        std::vector<ModelParam> values = type.params;
+        std::vector<bool> given(values.size(), false);
+        bool ok = true;
+        for (int i = first; i < argCount(); i += 2) {
+            if (failed(i)) {
+                ok = false;
+                continue;
+            }
+            const std::string_view word = arg(i);
+            const auto it = std::find_if(values.begin(), values.end(),
+                                         [&](const ModelParam& p) { return p.name == word; });
+            if (it == values.end()) {
+                std::string names;
+                for (std::size_t k = 0; k < type.params.size(); ++k)
+                    names +=
+                        (k > 0 ? (k + 1 == type.params.size() ? " and " : ", ") : "") + type.params[k].name;
+                error(argPos(i), "unknown parameter " + quoteToken(word) + " of '" + type.name + "' (" +
+                                     (names.empty() ? "it has no parameters" : "its parameters: " + names) +
+                                     ")");
+                ok = false;
+                continue;
+            }
+            const std::size_t k = std::size_t(it - values.begin());
+            if (given[k]) {
+                error(argPos(i), "the parameter " + quoteToken(word) + " is given twice");
+                ok = false;
+                continue;
+            }
+            given[k] = true;
+            if (i + 1 >= argCount()) {
+                error(argPos(i), "the parameter " + quoteToken(word) + " needs a value");
+                ok = false;
+                continue;
+            }
+            it->value = real(i + 1, ok);
+        }
+        if (!ok) return std::nullopt;
+        return values;
+    }
+
+    /// Reads `book`'s block again with an instance's parameter values (SPEC
+    /// 10.6): the instance's own type, or null after an error in it.
+    std::shared_ptr<const ModelType> readBlockFor(const TypeBook& book, const std::vector<ModelParam>& values,
+                                                  const ObjectLine& line) {
+        expander_.replayModelBlock(book.start);
+        for (const ModelParam& p : values) expander_.setVariable(p.name, p.value);
+        building_.emplace();
+        ModelBuild& build = *building_;
+        build.type = std::make_shared<ModelType>();
+        build.type->name = book.type->name;
+        build.type->params = values;
+        build.defined = build.namePos = *book.defined;
+        build.errorsBefore = errors_;
+        build.named = true;
+        build.readFor = book.type;
+        const std::string outerNote = std::move(instanceNote_);
+        instanceNote_ = " (in /" + book.type->name + " " + line.name + ")";
+        std::shared_ptr<const ModelType> read = build.type;
+        const std::size_t errorsBefore = errors_;
+        while (!stopped_ && building_ && expander_.next(tokens_)) parseLine();
+        instanceNote_ = outerNote;
+        return errors_ == errorsBefore ? read : nullptr;
+    }
+
+    /// Part and shape names of a block read again for an instance must be its type's (SPEC 10.6).
+    bool sameNames(const ModelType& a, const ModelType& b) {
+        if (a.parts.size() != b.parts.size() || a.shapes.size() != b.shapes.size()) return false;
+        for (std::size_t k = 0; k < a.parts.size(); ++k)
+            if (a.parts[k].name != b.parts[k].name || a.parts[k].parent != b.parts[k].parent) return false;
+        for (std::size_t k = 0; k < a.shapes.size(); ++k)
+            if (a.shapes[k].name != b.shapes[k].name || a.shapes[k].part != b.shapes[k].part) return false;
+        return true;
     }
 
     /// A line inside a `/model` block.
@@ -1596,6 +1763,15 @@ class Parser : private ExpansionSink {
         ModelBuild build = std::move(*building_);
         building_.reset();
         if (argCount() > 0) error(argPos(0), "'/end' takes no arguments");
+        if (build.readFor) {
+            // (A line that failed already names fewer shapes: not said twice.)
+            if (errors_ == build.errorsBefore && !sameNames(*build.type, *build.readFor)) {
+                error(build.defined, "the parts and shapes of '" + build.type->name +
+                                         "' must not depend on its parameters: with these values the "
+                                         "block names other parts or shapes than with its defaults");
+            }
+            return;
+        }
         if (build.type->shapes.empty() && errors_ == build.errorsBefore) {
             error(build.defined, "model " + modelText(build) +
                                      " has no shapes (put a '/sphere', '/cylinder' or '/box' named "
@@ -1605,7 +1781,7 @@ class Parser : private ExpansionSink {
         // Registered even with an error inside, so its instances do not add
         // "unknown command" errors.
         const std::shared_ptr<const ModelType> type = build.type;
-        types_.emplace(type->name, TypeBook{type, build.namePos});
+        types_.emplace(type->name, TypeBook{type, build.namePos, start_});
         scene_.models.push_back(type);
         if (index_) {
             build.indexed.type = type;
@@ -2399,8 +2575,11 @@ class Parser : private ExpansionSink {
     std::unordered_map<std::uint64_t, std::size_t> colourTrackIndex_, visibilityTrackIndex_;
     /// Model types by name (SPEC 10.1): the robot, the human, then the file's.
     std::unordered_map<std::string, TypeBook, StringHash, std::equal_to<>> types_{
-        {"robot", {robotModel(), std::nullopt}}, {"human", {humanModel(), std::nullopt}}};
+        {"robot", {robotModel(), std::nullopt, {}}}, {"human", {humanModel(), std::nullopt, {}}}};
     std::optional<ModelBuild> building_;
+    SourceExpander::BlockStart start_;  ///< of the last `/model` block opened
+    /// " (in /lamp L1)" while a block is read again for an instance (SPEC 10.6).
+    std::string instanceNote_;
     std::vector<TrackBook> trackBooks_;
     std::optional<Pos> cameraSeen_, backgroundSeen_, fpsSeen_, lookAtSeen_, cameraAttached_, cameraInterp_;
     std::size_t keyLines_ = 0;

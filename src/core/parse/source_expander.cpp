@@ -361,6 +361,9 @@ bool SourceExpander::next(LogicalLine& out) {
             evaluateTokens(out, 2);
             runRepeat(out, line.number);
         } else if (command == kEnd && endsModel()) {
+            ModelBlock& block = modelBlocks_.back();
+            variables_ = std::move(block.outside);
+            if (block.replay) fileStack_.pop_back();
             modelBlocks_.pop_back();
             return true;  // the parser closes the model
         } else if (command == kEnd) {
@@ -373,7 +376,8 @@ bool SourceExpander::next(LogicalLine& out) {
                 continue;
             }
             evaluateTokens(out, 1);
-            modelBlocks_.push_back({fileStack_.size(), loopStack_.size()});
+            modelBlocks_.push_back({fileStack_.size(), loopStack_.size(), variables_, false});
+            lastModelBlock_ = {frame.source, frame.reader, frame.nameIndex};
             return true;
         } else if (command == kInclude) {
             runInclude(line.text, out);
@@ -612,6 +616,12 @@ void SourceExpander::runRepeat(const LogicalLine& line, int lineNumber) {
     loopStack_.push_back({std::string(name.text), variables_.find(name.text), *from, *step,
                           static_cast<std::uint64_t>(passes), 0, frame.reader});
     variables_.set(name.text, *from);
+}
+
+void SourceExpander::replayModelBlock(const BlockStart& start) {
+    fileStack_.push_back(
+        {static_cast<const SourceFile*>(start.source), start.reader, start.nameIndex, loopStack_.size()});
+    modelBlocks_.push_back({fileStack_.size(), loopStack_.size(), variables_, true});
 }
 
 bool SourceExpander::endsModel() const {

@@ -129,6 +129,22 @@ class SourceExpander {
     /// Lines in the files themselves, each file counted once.
     std::uint64_t linesInFiles() const { return linesInFiles_; }
 
+    /// Where a `/model` block's lines start, to read them again (SPEC 10.6).
+    struct BlockStart {
+        const void* source = nullptr;           ///< the SourceFile, kept by the expander
+        LineReader reader{std::string_view()};  ///< just after the `/model` line
+        int nameIndex = 0;
+    };
+    /// The block whose `/model` line `next` returned last. Each block is a
+    /// scope of variables: its `/let`s and loop variables, and the values
+    /// setVariable gives before its first line, are gone after its `/end`.
+    const BlockStart& lastModelBlock() const { return lastModelBlock_; }
+    /// Sets a variable (a model's parameter, SPEC 10.6) in the current scope.
+    void setVariable(std::string_view name, double value) { variables_.set(name, value); }
+    /// Reads the lines of the block at `start` again, up to its `/end`
+    /// (which `next` returns), in a scope of variables of their own.
+    void replayModelBlock(const BlockStart& start);
+
    private:
     struct SourceFile;
     struct LoopInfo;
@@ -166,7 +182,10 @@ class SourceExpander {
     /// stacks at their `/model`, so that the `/end` at those depths is theirs.
     struct ModelBlock {
         std::size_t fileDepth, loopDepth;
+        Variables outside;    ///< the variables before the block, back after its `/end`
+        bool replay = false;  ///< read again for an instance: its file frame ends at the `/end`
     };
+    BlockStart lastModelBlock_;
     std::vector<ModelBlock> modelBlocks_;
     /// Whether an `/end` read now closes a model block rather than a loop.
     bool endsModel() const;

@@ -48,8 +48,15 @@ struct ModelShape {
     bool ownColor = false;
 };
 
+/// A numeric parameter of a model type (SPEC 10.6) and its default.
+struct ModelParam {
+    std::string name;
+    double value = 0;
+};
+
 struct ModelType {
     std::string name;
+    std::vector<ModelParam> params;  ///< `/model <type> [<param> <default>]…`, in that order
     std::vector<ModelPart> parts;    ///< parents before children
     std::vector<ModelShape> shapes;  ///< the instance's primitives, in this order
 
