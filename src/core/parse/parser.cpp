@@ -1434,15 +1434,14 @@ class Parser : private ExpansionSink {
         build.errorsBefore = errors_;
         // `/model <type> [<param> <default>]…` (SPEC 10.6): each default is
         // the parameter's value while the block is read here.
-        if (argCount() % 2 == 0) {
-            if (argCount() == 0) {
-                expectArgs({1});
-            } else {
-                error(argPos(argCount() - 1),
-                      "the parameter " + quoteToken(arg(argCount() - 1)) +
-                          " needs a default value: '/model <type> [<param> <default>]…'");
-            }
+        if (argCount() == 0) {
+            expectArgs({1});
             return;
+        }
+        // A parameter without its default is left out; the type is still defined.
+        if (argCount() % 2 == 0) {
+            error(argPos(argCount() - 1), "the parameter " + quoteToken(arg(argCount() - 1)) +
+                                              " needs a default value: '/model <type> [<param> <default>]…'");
         }
         build.type->params = modelParams();
         if (failed(0)) return;
@@ -1485,7 +1484,7 @@ class Parser : private ExpansionSink {
     /// set as a variable of the block; a bad one is reported and left out.
     std::vector<ModelParam> modelParams() {
         std::vector<ModelParam> params;
-        for (int i = 1; i + 1 < argCount() + 1; i += 2) {
+        for (int i = 1; i + 1 < argCount(); i += 2) {
             if (failed(i)) continue;
             const std::string_view name = arg(i);
             bool ok = true;
