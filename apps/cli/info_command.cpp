@@ -52,7 +52,8 @@ std::string refName(const SceneDesc& s, FrameRef ref, int shape = -1) {
     return name;
 }
 
-/// The scene's own model types (SPEC 10.1): "lamp: 3 parts (base, arm <- base, …), 4 shapes".
+/// The scene's own model types (SPEC 10.1, 10.6): "model lamp: 3 parts (base,
+/// arm on base, …), 4 shapes; parameters arm 120, shade 20".
 void printModels(const SceneDesc& s) {
     for (const std::shared_ptr<const ModelType>& model : s.models) {
         std::cout << "  model " << model->name << ": " << model->parts.size()
@@ -62,7 +63,11 @@ void printModels(const SceneDesc& s) {
             std::cout << (p > 0 ? ", " : "") << part.name;
             if (part.parent >= 0) std::cout << " on " << model->parts[std::size_t(part.parent)].name;
         }
-        std::cout << "), " << model->shapes.size() << (model->shapes.size() == 1 ? " shape\n" : " shapes\n");
+        std::cout << "), " << model->shapes.size() << (model->shapes.size() == 1 ? " shape" : " shapes");
+        for (std::size_t k = 0; k < model->params.size(); ++k)
+            std::cout << (k == 0 ? "; parameters " : ", ") << model->params[k].name << ' '
+                      << formatNumber(model->params[k].value);
+        std::cout << '\n';
     }
 }
 
