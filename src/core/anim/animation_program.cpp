@@ -90,6 +90,13 @@ class Compiler {
         return it->second;
     }
 
+    /// kDriven | index of a track with drives (SPEC 10.7), whose rest pose is `rest`.
+    std::uint32_t drivenTrack(const Track& track, const Pose& rest) {
+        const auto index = std::uint32_t(p_.drivenTracks.size());
+        p_.drivenTracks.push_back({track, rest});
+        return AnimationProgram::kDriven | index;
+    }
+
     /// First index in `surfaces` of an object's surfaces (equal runs stored once).
     std::uint32_t surfaces(const SceneObject& object) {
         Surface run[6];
@@ -155,6 +162,8 @@ std::shared_ptr<const AnimationProgram> AnimationProgram::compile(const SceneDes
         primitives += std::uint32_t(primitiveCountOf(object.kind));
         if (object.mayRide()) {
             p.rootSource[i] = kAttached;
+        } else if (object.track.drives) {
+            p.rootSource[i] = compiler.drivenTrack(object.track, object.rest);
         } else if (const std::uint32_t track = compiler.animatedTrack(object.track)) {
             p.rootSource[i] = track;
         } else {
@@ -167,7 +176,8 @@ std::shared_ptr<const AnimationProgram> AnimationProgram::compile(const SceneDes
         if (isModel(object.kind)) {
             for (int part = 0; part < kPartCount; ++part) {
                 const Track& track = object.partTracks[std::size_t(part)];
-                std::uint32_t animated = compiler.turnTrack(track);
+                std::uint32_t animated = track.drives ? compiler.drivenTrack(track, Pose{}) : 0;
+                if (!animated) animated = compiler.turnTrack(track);
                 if (!animated) animated = compiler.animatedTrack(track);
                 p.partSource[i][std::size_t(part)] = animated ? animated : compiler.constantMotion(track);
                 still = still && !animated;
@@ -208,13 +218,16 @@ void AnimationProgram::segmentsAt(double t, std::vector<TrackSegment>& segments)
 
 // Inlined into both loops below: a call per object measured slower.
 [[gnu::always_inline]] inline AnimationProgram::ObjectFrames AnimationProgram::objectFrames(
-    std::size_t i, const TrackSegment* segments, const std::vector<Transform>& attachedRoots) const {
+    std::size_t i, const TrackSegment* segments, const EvaluatedFrame& frame) const {
     ObjectFrames out;
     const std::uint32_t root = rootSource[i];
     if (root == kConstantRoot) {
         out.root = constantRoots[i];
     } else if (root == kAttached) {
-        out.root = attachedRoots[i];
+        out.root = frame.attachedRoots[i];
+    } else if (root & kDriven) {
+        const Pose pose = drivenPose(root & ~kDriven, frame.time);
+        out.root = Transform::fromPose(pose.position, pose.rotation);
     } else {
         const Pose pose = trackPose(root & ~kAnimated, segments);
         out.root = Transform::fromPose(pose.position, pose.rotation);
@@ -231,6 +244,9 @@ void AnimationProgram::segmentsAt(double t, std::vector<TrackSegment>& segments)
             const TurnTrack& turn = turnTracks[source & ~kTurning];
             out.parts[index] = childFrameTurned(worldFromParent, part.pivot + turn.offset,
                                                 turnAngle(source & ~kTurning, segments), turn.axis);
+        } else if (source & kDriven) {
+            const Pose motion = drivenPose(source & ~kDriven, frame.time);
+            out.parts[index] = childFrame(worldFromParent, part.pivot + motion.position, motion.rotation);
         } else if (source & kAnimated) {
             const Pose motion = trackPose(source & ~kAnimated, segments);
             out.parts[index] = childFrame(worldFromParent, part.pivot + motion.position, motion.rotation);
@@ -247,7 +263,7 @@ void AnimationProgram::evaluateObjects(std::size_t begin, std::size_t end, const
                                        bool refill, EvaluatedFrame& frame) const {
     for (std::size_t i = begin; i < end; ++i) {
         if (refill && still[i]) continue;
-        const ObjectFrames frames = objectFrames(i, segments, frame.attachedRoots);
+        const ObjectFrames frames = objectFrames(i, segments, frame);
         const std::uint32_t first = firstPrimitive[i];
         Primitive* prims = &frame.primitives[first];
         const Surface* look = &surfaces[firstSurface[i]];
@@ -273,7 +289,7 @@ void AnimationProgram::evaluateObjectsIntoLeaves(std::size_t begin, std::size_t 
     // them, without first reading each line from memory.
     for (std::size_t i = begin; i < end; ++i) {
         if (still[i]) continue;
-        const ObjectFrames frames = objectFrames(i, segments, frame.attachedRoots);
+        const ObjectFrames frames = objectFrames(i, segments, frame);
         const std::uint32_t first = firstPrimitive[i];
         const std::uint32_t count = firstPrimitive[i + 1] - first;
         for (std::uint32_t shape = 0; shape < count; ++shape) {

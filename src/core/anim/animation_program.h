@@ -53,6 +53,12 @@ struct AnimationProgram {
         std::uint32_t axis;        ///< 0: x, 1: y, 2: z
         Vec3 offset;               ///< every key's position
     };
+    /// A track with drives (SPEC 10.7), evaluated as evaluateTrack does it:
+    /// its keys and its drives, at the frame's time.
+    struct DrivenTrack {
+        Track track;
+        Pose rest;
+    };
     /// A part's constant motion (no keys: rest, or one key): offset and rotation.
     struct ConstantMotion {
         Vec3 offset;
@@ -65,6 +71,8 @@ struct AnimationProgram {
     static constexpr std::uint32_t kAnimated = 0x8000'0000u;
     /// Where a part gets its pose: `kTurning | index in turnTracks`.
     static constexpr std::uint32_t kTurning = 0x4000'0000u;
+    /// Where a root or a part gets its pose: `kDriven | index in drivenTracks`.
+    static constexpr std::uint32_t kDriven = 0x2000'0000u;
     /// A root frame taken from `EvaluatedFrame::attachedRoots` (SPEC 9.2).
     static constexpr std::uint32_t kAttached = 0x7fff'ffffu;
     /// A root frame that does not move: `constantRoots[object]`.
@@ -90,6 +98,7 @@ struct AnimationProgram {
     std::vector<TurnTrack> turnTracks;
     std::vector<float> angles;  ///< keys' angles of the turn tracks, track after track
     std::vector<ConstantMotion> constantMotions;
+    std::vector<DrivenTrack> drivenTracks;
     std::vector<Surface> surfaces;
     /// Per primitive (frame order), ray_mask::kCastsNoShadow where `/no_shadow`
     /// (SPEC 10.8) reached it; empty when nothing in the scene uses it.
@@ -126,9 +135,13 @@ struct AnimationProgram {
         std::array<Transform, kPartCount> parts;
     };
     /// The frames of object i with this frame's `segments` and, if it is
-    /// attached, `attachedRoots[i]`.
-    ObjectFrames objectFrames(std::size_t i, const TrackSegment* segments,
-                              const std::vector<Transform>& attachedRoots) const;
+    /// attached, `frame.attachedRoots[i]`; driven tracks at `frame.time`.
+    ObjectFrames objectFrames(std::size_t i, const TrackSegment* segments, const EvaluatedFrame& frame) const;
+    /// Pose of driven track `track` at time t.
+    Pose drivenPose(std::uint32_t track, double t) const {
+        const DrivenTrack& driven = drivenTracks[track];
+        return evaluateTrack(driven.track, t, driven.rest);
+    }
     /// Primitive `shape` (0 for a primitive object; a model's shapes in
     /// order) of object i whose frames are `frames`.
     Primitive objectPrimitive(std::size_t i, std::uint32_t shape, const ObjectFrames& frames) const {

@@ -22,11 +22,12 @@ constexpr std::array kInclude = {Path};
 constexpr std::array kLookAt = {PointOrTarget, Number};
 constexpr std::array kAttach = {Object, Target};
 constexpr std::array kCaption = {Number, Number, Number, Number, Number, Text, Number};
+constexpr std::array kDrive = {Target, Channel, Number};
 constexpr std::array<ArgKind, 0> kNone = {};
 
 // Rows in CommandId order (checked below). The syntax and meaning are what
 // hover shows; docs/scene-language.md has each command's full story.
-constexpr std::array<CommandSpec, 26> kCommands = {{
+constexpr std::array<CommandSpec, 27> kCommands = {{
     {CommandId::Camera, "/camera", Edition::First, CommandGroup::Setting, kNumbers,
      "/camera <w> <h> <d> [<px> <py> <pz> [<rx> <ry> <rz>]]",
      "/camera ${1:800} ${2:600} ${3:0.5} ${4:0} ${5:0} ${6:0} ${7:0} ${8:0} ${9:0}",
@@ -162,6 +163,13 @@ constexpr std::array<CommandSpec, 26> kCommands = {{
      "The target (an object or a part) casts no shadow; it is still seen and reflected, as POV-Ray's "
      "`no_shadow`.",
      false},
+    {CommandId::Drive, "/drive", Edition::Third, CommandGroup::Motion, kDrive,
+     "/drive <target> <channel> (<expression>)", "/drive ${1:target} ${2|px,py,pz,rx,ry,rz|} (${3:frame})",
+     "Every frame, one channel of the target is the expression's value, in place of its keys: "
+     "`px py pz rx ry rz` (the six numbers of a key), `intensity` (a named light), `d` (the camera), "
+     "`r g b` (a colour channel 0..255). In it, `frame` is the frame drawn (fractional in motion "
+     "blur) and `time` is `frame / fps`; other variables keep their value at this line.",
+     true},
 }};
 
 constexpr bool inIdOrder() {
