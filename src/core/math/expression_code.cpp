@@ -70,7 +70,7 @@ constexpr ExprStep kUndefined{0, ExprProblem::Undefined};
 
 }  // namespace
 
-std::string formatNumber(double value) {
+std::string shortestDecimal(double value) {
     std::array<char, 32> buffer{};
     const auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
     if (ec != std::errc()) return "?";
@@ -192,7 +192,7 @@ std::string operatorProblemText(ExprOp op, ExprProblem problem) {
 }
 
 std::string functionProblemText(ExprFunction f, double x, ExprProblem problem) {
-    const std::string call = std::string(kFunctions[std::size_t(f)].name) + "(" + formatNumber(x) + ")";
+    const std::string call = std::string(kFunctions[std::size_t(f)].name) + "(" + shortestDecimal(x) + ")";
     if (problem != ExprProblem::Undefined) return "the result of " + call + " is not finite";
     switch (f) {
         case ExprFunction::Tan:

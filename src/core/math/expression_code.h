@@ -14,8 +14,9 @@
 
 namespace f2 {
 
-/// `value` in the shortest decimal form that reads back as the same double.
-std::string formatNumber(double value);
+/// `value` in the shortest decimal form that reads back as the same double
+/// (parse/expression.h's formatNumber).
+std::string shortestDecimal(double value);
 
 /// The functions of expressions, in their table's order (expressionFunctions).
 enum class ExprFunction : std::uint8_t {

@@ -216,11 +216,15 @@ class ExpressionParser {
         }
         if (skipping_ > 0) return {};  // not evaluated: its value is never used
         const ExprStep s = applyOperator(op, a.number, b.number);
-        if (s.problem != ExprProblem::None) {
-            fail(at, operatorProblemText(op, s.problem));
-            return {};
+        if (s.problem == ExprProblem::None) return {s.value, {}};
+        // Where a condition known only per evaluation decides whether this
+        // runs, its problem is one of the evaluations that run it.
+        if (conditional_ > 0) {
+            const ExprInstruction push{ExprOp::Push, ExprFunction::Sin, 0, std::uint32_t(at), a.number};
+            return binary(op, Value{0, {push}}, std::move(b), at);
         }
-        return {s.value, {}};
+        fail(at, operatorProblemText(op, s.problem));
+        return {};
     }
 
     /// 1 if `v` is not 0, else 0.
@@ -231,7 +235,9 @@ class ExpressionParser {
 
     /// `a && b` or `a || b` whose left side is code: `jump` skips b when a decides.
     Value shortCircuit(Value a, ExprOp jump, std::size_t at) {
+        ++conditional_;
         Value b = jump == ExprOp::AndJump ? equality() : logicalAnd();
+        --conditional_;
         if (failed_) return {};
         Code tail;
         appendCode(tail, std::move(b));
@@ -492,8 +498,12 @@ class ExpressionParser {
                 const bool skip =
                     isIf && !args.empty() &&
                     (args.size() > 2 || (!args[0].dynamic() && (args[0].number != 0) != (args.size() == 1)));
+                // Its branches, when c is known only per evaluation, may not run.
+                const bool conditional = isIf && !args.empty() && args[0].dynamic();
                 if (skip) ++skipping_;
+                if (conditional) ++conditional_;
                 args.push_back(expression());
+                if (conditional) --conditional_;
                 if (skip) --skipping_;
                 if (failed_) return {};
                 if (peek() != ',') break;
@@ -514,22 +524,25 @@ class ExpressionParser {
         }
         if (skipping_ > 0) return {};  // not evaluated: no domain errors
         if (isIf) return choice(std::move(args), at);
-        if (std::any_of(args.begin(), args.end(), [](const Value& a) { return a.dynamic(); })) {
-            Value out;
-            for (Value& a : args) appendCode(out.code, std::move(a));
-            ExprInstruction i = instruction(ExprOp::Call, at, std::uint32_t(n));
-            i.function = f.function;
-            out.code.push_back(i);
-            return out;
-        }
+        if (std::any_of(args.begin(), args.end(), [](const Value& a) { return a.dynamic(); }))
+            return compiledCall(f, std::move(args), at);
         std::vector<double> numbers;
         for (const Value& a : args) numbers.push_back(a.number);
         const ExprStep s = applyFunction(f.function, numbers);
-        if (s.problem != ExprProblem::None) {
-            fail(at, functionProblemText(f.function, numbers[0], s.problem));
-            return {};
-        }
-        return {s.value, {}};
+        if (s.problem == ExprProblem::None) return {s.value, {}};
+        if (conditional_ > 0) return compiledCall(f, std::move(args), at);  // as in binary()
+        fail(at, functionProblemText(f.function, numbers[0], s.problem));
+        return {};
+    }
+
+    /// The code of a call of `f` on `args`.
+    static Value compiledCall(const ExprFunctionInfo& f, std::vector<Value> args, std::size_t at) {
+        Value out;
+        for (Value& a : args) appendCode(out.code, std::move(a));
+        ExprInstruction i = instruction(ExprOp::Call, at, std::uint32_t(args.size()));
+        i.function = f.function;
+        out.code.push_back(i);
+        return out;
     }
 
     /// if(c, a, b): the branch c gives now, or code that takes it per evaluation.
@@ -554,6 +567,8 @@ class ExpressionParser {
     int depth_ = 0;
     /// > 0 while reading what is not evaluated (SPEC 10.7).
     int skipping_ = 0;
+    /// > 0 while compiling what a condition known only per evaluation may skip.
+    int conditional_ = 0;
     bool failed_ = false;
     bool followOn_ = false;
     std::size_t errorOffset_ = 0;

@@ -94,6 +94,9 @@ CompiledExpression compileParenthesized(std::string_view text, const Variables& 
 /// completion and the generated grammar list these.
 std::vector<std::string_view> expressionFunctionNames();
 
+/// `value` in the shortest decimal form that reads back as the same double.
+inline std::string formatNumber(double value) { return shortestDecimal(value); }
+
 /// A whole number within 1e-6 of `value` (SPEC 9.4 integer fields), or nullopt.
 std::optional<double> nearWhole(double value);
 

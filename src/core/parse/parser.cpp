@@ -1515,8 +1515,8 @@ class Parser : private ExpansionSink {
                                                                      : std::nullopt;
         Track& track = trackOf(*t, property);
         const auto slot = static_cast<std::size_t>(driveSlot(*channel));
-        if (track.drives && track.drives->slots[slot]) {
-            const f2::Drive& first = *track.drives->slots[slot];
+        if (track.drives && track.drives->bySlot[slot]) {
+            const f2::Drive& first = *track.drives->bySlot[slot];
             const std::string where = first.file == expander_.fileName(tokens_.pos.file)
                                           ? std::to_string(first.line) + ":" + std::to_string(first.column)
                                           : first.place();
@@ -1533,7 +1533,7 @@ class Parser : private ExpansionSink {
         drive->column = commandPos().column;
         drive->code = tokens_.compiled;
         auto drives = std::make_shared<TrackDrives>(track.drives ? *track.drives : TrackDrives{});
-        drives->slots[slot] = drive;
+        drives->bySlot[slot] = drive;
         track.drives = std::move(drives);
         drives_.push_back(std::move(drive));
     }

@@ -10,8 +10,8 @@ namespace {
 /// A value a scene number can take: finite, within the float range.
 bool usable(double v) { return std::fabs(v) <= 3.4028234663852886e38; }
 
-constexpr std::array<std::string_view, kDriveChannelCount> kNames = {"px", "py", "pz",        "rx", "ry", "rz",
-                                                                     "intensity", "d", "r",  "g",  "b"};
+constexpr std::array<std::string_view, kDriveChannelCount> kNames = {
+    "px", "py", "pz", "rx", "ry", "rz", "intensity", "d", "r", "g", "b"};
 }  // namespace
 
 std::string_view driveChannelName(DriveChannel channel) { return kNames[std::size_t(channel)]; }
@@ -40,13 +40,11 @@ int driveSlot(DriveChannel channel) {
     }
 }
 
-std::string Drive::place() const {
-    return file + ":" + std::to_string(line) + ":" + std::to_string(column);
-}
+std::string Drive::place() const { return file + ":" + std::to_string(line) + ":" + std::to_string(column); }
 
 void applyDrives(const TrackDrives& drives, double t, Pose& pose) {
     for (int slot = 0; slot < 6; ++slot) {
-        const Drive* drive = drives.slots[std::size_t(slot)].get();
+        const Drive* drive = drives.bySlot[std::size_t(slot)].get();
         if (!drive) continue;
         const double v = drive->valueAt(t);
         if (!usable(v)) continue;
@@ -62,8 +60,8 @@ std::optional<std::string> firstDriveProblem(const SceneDesc& scene, double t) {
         if (usable(v)) continue;
         // Past the float range a scene number would be infinite too.
         const std::string why = std::isfinite(v) ? "beyond the largest number (3.4e38)" : failure.message;
-        return drive->place() + ": at frame " + formatNumber(t) + ", '/drive " + drive->target + " " +
-               std::string(driveChannelName(drive->channel)) + " " + drive->expression +
+        return drive->place() + ": error: at frame " + shortestDecimal(t) + ", '/drive " + drive->target +
+               " " + std::string(driveChannelName(drive->channel)) + " " + drive->expression +
                "' has no finite value: " + why;
     }
     return std::nullopt;

@@ -39,7 +39,7 @@ int driveSlot(DriveChannel channel);
 inline constexpr std::array<std::string_view, 2> kDriveInputs = {"frame", "time"};
 
 struct Drive {
-    std::string target;      ///< as written after `{ … }`: "ball", "f2.head", "camera", "lamp"
+    std::string target;  ///< as written after `{ … }`: "ball", "f2.head", "camera", "lamp"
     DriveChannel channel = DriveChannel::Px;
     std::string expression;  ///< the `( … )` as written
     std::string file;        ///< where the `/drive` stands, for the errors of a frame
@@ -59,7 +59,7 @@ struct Drive {
 
 /// The drives of one track, by slot (driveSlot).
 struct TrackDrives {
-    std::array<std::shared_ptr<const Drive>, 6> slots{};
+    std::array<std::shared_ptr<const Drive>, 6> bySlot{};
 };
 
 /// `pose` with its driven numbers replaced by the drives' values at frame t.
@@ -68,8 +68,8 @@ struct TrackDrives {
 void applyDrives(const TrackDrives& drives, double t, Pose& pose);
 
 /// The error of frame t if a drive of the scene has no finite value there:
-/// "FILE:LINE:COL: at frame 12, /drive ball px (…) is not finite: division
-/// by zero". Nothing when every drive has one.
+/// "FILE:LINE:COL: error: at frame 12, '/drive ball px (…)' has no finite
+/// value: division by zero". Nothing when every drive has one.
 std::optional<std::string> firstDriveProblem(const SceneDesc& scene, double t);
 
 /// The same for each of `times` (a motion-blurred frame's sub-frames).
