@@ -139,6 +139,13 @@ std::optional<double> definedValue(const Analysis& a, const VariableOccurrence& 
 
 std::string variableHover(const Analysis& a, const std::string& name, int line) {
     const auto def = definitionOf(a.sources.variables, name, a.sources.orderOf(a.self, line));
+    // In a /drive's expression, frame and time are the drive's inputs (SPEC 10.7).
+    if (!def && (name == kDriveInputs[0] || name == kDriveInputs[1]) &&
+        a.document.line(line).find(command(CommandId::Drive).name) != std::string_view::npos) {
+        return "**" + name + "** in a `/drive`: " +
+               (name == kDriveInputs[0] ? "the frame drawn (fractional in motion blur and playback)"
+                                        : "the time in seconds, frame / fps");
+    }
     if (!def) return "**variable** `" + name + "`: not defined in this scene";
     const SceneFile& file = a.sources.files[static_cast<std::size_t>(def->file)];
     const SourceLoc loc{file.path, def->line + 1, 1};
