@@ -6,9 +6,10 @@
 
 #include <array>
 #include <bit>
-#include <cstring>
 #include <cmath>
+#include <cstring>
 #include <numbers>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -78,8 +79,9 @@ TEST(DriveExpressions, CompiledCodeGivesTheTextEvaluatorsBits) {
 TEST(DriveExpressions, ConstantExpressionsAreFoldedToTheEvaluatorsValue) {
     Variables variables;
     variables.set("k", 7);
-    for (const std::string text : {"(sin(37) * 3 + 2^0.5)", "(k % -3 + atan2(1, k))", "(if(k > 3, exp(1), 1/0))",
-                                   "(-0)", "(min(k, 2, 9) * max(1, 2) - round(-2.5))"}) {
+    for (const std::string text :
+         {"(sin(37) * 3 + 2^0.5)", "(k % -3 + atan2(1, k))", "(if(k > 3, exp(1), 1/0))", "(-0)",
+          "(min(k, 2, 9) * max(1, 2) - round(-2.5))"}) {
         const CompiledExpression compiled = compileParenthesized(text, variables, kDriveInputs);
         const ExpressionResult want = evaluateParenthesized(text, variables);
         ASSERT_TRUE(compiled.result.ok && want.ok) << text;
@@ -95,6 +97,28 @@ TEST(DriveExpressions, ConstantExpressionsAreFoldedToTheEvaluatorsValue) {
     EXPECT_EQ(broken.result.errorOffset, 10u);
 }
 
+TEST(DriveExpressions, TheFastRemainderIsFmodBitForBit) {
+    // sin, cos and tan reduce their degrees with it every frame of a drive.
+    std::mt19937_64 random(test::testSeed(7));
+    std::vector<double> xs = {0.0,   -0.0,  359.99999999999994, 360.0,  -360.0, 719.9999999999999, 720.0,
+                              1e15,  -1e15, 1e15 - 0.5,         9.5e14, 1e300,  -1e-300,           180.0,
+                              540.0, -900.0};
+    for (int k = 0; k < 200000; ++k) {
+        const double scale = std::ldexp(1.0, int(random() % 60) - 10);
+        const double x = (double(random() % 2000001) / 1000000.0 - 1.0) * scale;
+        xs.push_back(x);
+        xs.push_back(std::nextafter(std::round(x / 360) * 360, x));  // just beside a multiple
+        xs.push_back(std::nextafter(std::round(x / 180) * 180, -x));
+    }
+    for (double x : xs) {
+        for (double period : {360.0, 180.0}) {
+            const double want = std::fmod(x, period), got = wholeRemainder(x, period);
+            ASSERT_EQ(std::bit_cast<std::uint64_t>(got), std::bit_cast<std::uint64_t>(want))
+                << std::hexfloat << x << " % " << period;
+        }
+    }
+}
+
 TEST(DriveErrors, EachAtItsPlace) {
     const std::string ball = "/sphere ball 1 0 0 0\n";
     // frame and time are variables of a drive's expression only.
@@ -105,8 +129,9 @@ TEST(DriveErrors, EachAtItsPlace) {
                           "intensity d r g b");
     test::expectOnlyError(ball + "/drive ball pos (frame)\n", 2, 13,
                           "unknown channel 'pos'; the channels are px py pz rx ry rz intensity d r g b");
-    test::expectOnlyError(ball + "/drive ball intensity (frame)\n", 2, 13,
-                          "'intensity' is not a channel of the sphere 'ball' ('intensity' drives a named light)");
+    test::expectOnlyError(
+        ball + "/drive ball intensity (frame)\n", 2, 13,
+        "'intensity' is not a channel of the sphere 'ball' ('intensity' drives a named light)");
     test::expectOnlyError("/point_light 1 0 0 0 name lamp\n/drive lamp r (frame)\n", 2, 13,
                           "'r' is not a channel of the light 'lamp'");
     test::expectOnlyError("/amb_light 1 name sky\n/drive sky px (frame)\n", 2, 12,
@@ -120,7 +145,8 @@ TEST(DriveErrors, EachAtItsPlace) {
     test::expectOnlyError(ball + "/drive ball px\n", 2, 1, "'/drive' takes 3 arguments, got 2");
     test::expectOnlyError(ball + "/drive ball px (frame*)\n", 2, 23, "unexpected ')' in the expression");
     test::expectOnlyError(ball + "/drive ball px (frme)\n", 2, 17, "unknown variable 'frme'");
-    test::expectOnlyError(ball + "/drive bal px (frame)\n", 2, 8, "unknown name 'bal' (did you mean 'ball'?)");
+    test::expectOnlyError(ball + "/drive bal px (frame)\n", 2, 8,
+                          "unknown name 'bal' (did you mean 'ball'?)");
     test::expectOnlyError("/robot f2 0 0 0\n/drive f2.hed rx (frame)\n", 2, 11, "unknown part 'hed'");
 }
 
@@ -189,7 +215,8 @@ TEST(Drives, AFrameWithoutAFiniteValueIsAnErrorNamingItAndTheDrive) {
     const std::optional<std::string> problem = firstDriveProblem(scene, 12.0);
     ASSERT_TRUE(problem);
     EXPECT_EQ(*problem,
-              "test.f2:3:3: error: at frame 12, '/drive ball py (100/(frame - 12))' has no finite value: division by "
+              "test.f2:3:3: error: at frame 12, '/drive ball py (100/(frame - 12))' has no finite value: "
+              "division by "
               "zero");
     // A motion-blurred frame's sub-frames: the one that fails is named.
     const std::array<double, 3> times = {11.5, 12.0, 12.5};
