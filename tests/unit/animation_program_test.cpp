@@ -30,8 +30,10 @@ Vec3 unitColor(Color8 c) { return Vec3{float(c.r), float(c.g), float(c.b)} / 255
 EvaluatedFrame referenceFrame(const SceneDesc& scene, double t) {
     EvaluatedFrame frame;
     attachedRootFrames(scene, t, frame.attachedRoots);
+    std::vector<std::size_t> firstPrimitive;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
+        firstPrimitive.push_back(frame.primitives.size());
         const Transform root = worldFromRoot(scene, i, t, frame.attachedRoots);
         if (!object.model) {
             frame.primitives.push_back(makePrimitive(shapeKindOf(object.kind), object.size, root));
@@ -50,6 +52,10 @@ EvaluatedFrame referenceFrame(const SceneDesc& scene, double t) {
                 {unitColor(look.color), look.material, unitColor(look.checker.color), look.checker.size});
         }
     }
+    // Colour keys and drives (SPEC 10.3, 10.7) over `/paint`, the last call for a shape winning.
+    forEachKeyedColour(scene, t, [&](std::size_t object, std::size_t shape, Vec3 rgb) {
+        frame.surfaces[firstPrimitive[object] + shape].color = rgb / 255.0f;
+    });
     return frame;
 }
 
@@ -101,8 +107,9 @@ void expectProgramMatchesReference(const SceneDesc& scene, const std::string& na
 }
 
 TEST(AnimationProgram, RepositoryScenesMatchTheirSceneDescBitForBit) {
-    for (const char* name : {"demo.f2", "seed_example.f2", "gallery/catch.f2", "gallery/dance.f2",
-                             "gallery/easing.f2", "gallery/flyaround.f2", "gallery/pov.f2"}) {
+    for (const char* name :
+         {"demo.f2", "seed_example.f2", "gallery/catch.f2", "gallery/dance.f2", "gallery/easing.f2",
+          "gallery/flyaround.f2", "gallery/pov.f2", "gallery/pendulum.f2"}) {
         expectProgramMatchesReference(test::sceneFromRepo(name), name);
     }
 }
@@ -110,7 +117,8 @@ TEST(AnimationProgram, RepositoryScenesMatchTheirSceneDescBitForBit) {
 TEST(AnimationProgram, BenchScenesMatchTheirSceneDescBitForBit) {
     for (BenchSceneSpec spec :
          {BenchSceneSpec{BenchShape::Robots, 1}, BenchSceneSpec{BenchShape::Robots, 300},
-          BenchSceneSpec{BenchShape::Spheres, 300}}) {
+          BenchSceneSpec{BenchShape::Spheres, 300}, BenchSceneSpec{BenchShape::Drives, 300},
+          BenchSceneSpec{BenchShape::DriveKeys, 300}}) {
         expectProgramMatchesReference(test::sceneFromText(benchSceneText(spec)), benchSceneName(spec));
     }
 }

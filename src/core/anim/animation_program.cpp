@@ -91,7 +91,24 @@ class Compiler {
     /// kDriven | index of a track with drives (SPEC 10.7), whose rest pose is `rest`.
     std::uint32_t drivenTrack(const Track& track, const Pose& rest) {
         const auto index = std::uint32_t(p_.drivenTracks.size());
-        p_.drivenTracks.push_back({track, rest});
+        AnimationProgram::DrivenTrack driven{track, rest, std::uint32_t(p_.drives.size()), 0};
+        driven.track.drives = nullptr;
+        for (std::size_t slot = 0; slot < track.drives->bySlot.size(); ++slot) {
+            const Drive* drive = track.drives->bySlot[slot].get();
+            if (!drive) continue;
+            const auto first = std::uint32_t(p_.driveCode.size());
+            const std::span<const ExprInstruction> code = drive->code.instructions();
+            if (code.empty()) {
+                p_.driveCode.push_back({ExprOp::Push, ExprFunction::Sin, 0, 0, drive->code.evaluate({})});
+            } else {
+                p_.driveCode.insert(p_.driveCode.end(), code.begin(), code.end());
+            }
+            p_.drives.push_back({std::uint32_t(slot), first, std::uint32_t(p_.driveCode.size()) - first,
+                                 std::uint32_t(std::max<std::size_t>(drive->code.stackSize(), 1)),
+                                 double(drive->fps)});
+            ++driven.driveCount;
+        }
+        p_.drivenTracks.push_back(std::move(driven));
         return AnimationProgram::kDriven | index;
     }
 
@@ -199,6 +216,18 @@ std::shared_ptr<const AnimationProgram> AnimationProgram::compile(const SceneDes
         }
     }
     return program;
+}
+
+Pose AnimationProgram::drivenPose(std::uint32_t track, double t) const {
+    const DrivenTrack& driven = drivenTracks[track];
+    Pose pose = evaluateTrack(driven.track, t, driven.rest);
+    for (std::uint32_t k = 0; k < driven.driveCount; ++k) {
+        const ProgramDrive& drive = drives[driven.firstDrive + k];
+        const std::array<double, 2> inputs = {t, t / drive.fps};
+        const std::span<const ExprInstruction> code(&driveCode[drive.first], drive.count);
+        setDrivenNumber(pose, int(drive.slot), ExpressionCode::run(code, drive.stackSize, inputs, nullptr));
+    }
+    return pose;
 }
 
 void AnimationProgram::segmentsAt(double t, std::vector<TrackSegment>& segments) const {

@@ -54,10 +54,19 @@ struct AnimationProgram {
         Vec3 offset;               ///< every key's position
     };
     /// A track with drives (SPEC 10.7), evaluated as evaluateTrack does it:
-    /// its keys and its drives, at the frame's time.
+    /// its keys (`track`, without its drives), then its drives
+    /// `[firstDrive, firstDrive + driveCount)` of `drives`, at the frame's time.
     struct DrivenTrack {
         Track track;
         Pose rest;
+        std::uint32_t firstDrive, driveCount;
+    };
+    /// One drive: the slot it replaces and its code, `[first, first + count)`
+    /// of `driveCode`, which streams through the cache as `poses` does (a
+    /// drive's code on the heap costs a cache miss or more per object).
+    struct ProgramDrive {
+        std::uint32_t slot, first, count, stackSize;
+        double fps;
     };
     /// A part's constant motion (no keys: rest, or one key): offset and rotation.
     struct ConstantMotion {
@@ -102,6 +111,8 @@ struct AnimationProgram {
     std::vector<float> angles;  ///< keys' angles of the turn tracks, track after track
     std::vector<ConstantMotion> constantMotions;
     std::vector<DrivenTrack> drivenTracks;
+    std::vector<ProgramDrive> drives;
+    std::vector<ExprInstruction> driveCode;
     std::vector<Surface> surfaces;
     /// The model types of the instances, so that `models` stay valid as long as the program.
     std::vector<std::shared_ptr<const ModelType>> types;
@@ -145,11 +156,8 @@ struct AnimationProgram {
     /// parts' into `parts`.
     ObjectFrames objectFrames(std::size_t i, const TrackSegment* segments, const EvaluatedFrame& frame,
                               Transform* parts) const;
-    /// Pose of driven track `track` at time t.
-    Pose drivenPose(std::uint32_t track, double t) const {
-        const DrivenTrack& driven = drivenTracks[track];
-        return evaluateTrack(driven.track, t, driven.rest);
-    }
+    /// Pose of driven track `track` at time t: evaluateTrack's, bit for bit.
+    Pose drivenPose(std::uint32_t track, double t) const;
     /// Primitive `shape` (0 for a primitive object; a model's shapes in
     /// order) of object i whose frames are `frames`.
     Primitive objectPrimitive(std::size_t i, std::uint32_t shape, const ObjectFrames& frames) const {

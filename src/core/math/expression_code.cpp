@@ -15,10 +15,33 @@ namespace {
 constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
 constexpr double kRadiansPerDegree = std::numbers::pi / 180.0;
 
+}  // namespace
+
+/// std::fmod(x, period) for a whole `period`, bit for bit, without its
+/// general (and slow) loop where the quotient is small: x − period·n with
+/// n = ⌊|x| / period⌋ is exact (period·n is a whole number, and by Sterbenz's
+/// lemma so is the difference, period·n ≤ |x| < 2·period·n); a quotient
+/// rounded up or down by one is put right. A drive's sin(time*90) runs it
+/// every frame (docs/performance.md).
+double wholeRemainder(double x, double period) {
+    const double a = std::fabs(x);
+    if (a < period) return x;  // -0 stays -0, as with fmod
+    if (!(a < 1e15)) return std::fmod(x, period);
+    double n = std::floor(a / period);
+    double r = a - period * n;
+    if (r < 0)
+        r = a - period * (n - 1);
+    else if (r >= period)
+        r = a - period * (n + 1);
+    return std::copysign(r, x);
+}
+
+namespace {
+
 // Trigonometry in degrees. The angle is first reduced exactly (fmod is exact),
 // so that the multiples of 90 give exact 0 and ±1: cos(90) is 0, not 6e-17.
 double sinDegrees(double degrees) {
-    const double r = std::fmod(degrees, 360.0);
+    const double r = wholeRemainder(degrees, 360.0);
     if (r == 0 || r == 180 || r == -180) return 0;
     if (r == 90 || r == -270) return 1;
     if (r == 270 || r == -90) return -1;
@@ -26,7 +49,7 @@ double sinDegrees(double degrees) {
 }
 
 double cosDegrees(double degrees) {
-    const double r = std::fmod(degrees, 360.0);
+    const double r = wholeRemainder(degrees, 360.0);
     if (r == 0) return 1;
     if (r == 180 || r == -180) return -1;
     if (r == 90 || r == -90 || r == 270 || r == -270) return 0;
@@ -35,7 +58,7 @@ double cosDegrees(double degrees) {
 
 /// tan of an odd multiple of 90 has no value; the caller reports it.
 std::optional<double> tanDegrees(double degrees) {
-    const double r = std::fmod(degrees, 180.0);
+    const double r = wholeRemainder(degrees, 180.0);
     if (r == 90 || r == -90) return std::nullopt;
     if (r == 0) return 0.0;
     if (r == 45 || r == -135) return 1.0;
@@ -86,7 +109,9 @@ const ExprFunctionInfo* findExpressionFunction(std::string_view name) {
     return nullptr;
 }
 
-ExprStep applyOperator(ExprOp op, double a, double b) {
+namespace {
+// Inlined into ExpressionCode::run: a call per operation measured slower.
+[[gnu::always_inline]] inline ExprStep operate(ExprOp op, double a, double b) {
     switch (op) {
         case ExprOp::Add:
             return finite(a + b);
@@ -124,8 +149,13 @@ ExprStep applyOperator(ExprOp op, double a, double b) {
             return {};
     }
 }
+}  // namespace
 
-ExprStep applyFunction(ExprFunction f, std::span<const double> args) {
+ExprStep applyOperator(ExprOp op, double a, double b) { return operate(op, a, b); }
+
+namespace {
+// Inlined into ExpressionCode::run, as operate().
+[[gnu::always_inline]] inline ExprStep call(ExprFunction f, std::span<const double> args) {
     const double x = args[0];
     switch (f) {
         case ExprFunction::Sin:
@@ -171,6 +201,9 @@ ExprStep applyFunction(ExprFunction f, std::span<const double> args) {
     }
     return {};
 }
+}  // namespace
+
+ExprStep applyFunction(ExprFunction f, std::span<const double> args) { return call(f, args); }
 
 std::string operatorProblemText(ExprOp op, ExprProblem problem) {
     switch (problem) {
@@ -237,7 +270,7 @@ ExpressionCode::ExpressionCode(std::vector<ExprInstruction> code) : code_(std::m
             case ExprOp::Jump:
                 break;
             default:
-                --depth;  // a binary operator
+                depth -= i.index == 0;  // a binary operator: two values to one, or one and its constant
         }
         stackSize_ = std::max(stackSize_, depth + 1);
     }
@@ -245,13 +278,18 @@ ExpressionCode::ExpressionCode(std::vector<ExprInstruction> code) : code_(std::m
 
 double ExpressionCode::evaluate(std::span<const double> inputs, ExpressionFailure* failure) const {
     if (code_.empty()) return constant_;
+    return run(code_, stackSize_, inputs, failure);
+}
+
+double ExpressionCode::run(std::span<const ExprInstruction> code, std::size_t stackSize,
+                           std::span<const double> inputs, ExpressionFailure* failure) {
     // Most expressions need a few slots: no allocation then.
     constexpr std::size_t kLocal = 32;
     std::array<double, kLocal> local;
     std::vector<double> heap;
     double* stack = local.data();
-    if (stackSize_ > kLocal) {
-        heap.resize(stackSize_);
+    if (stackSize > kLocal) {
+        heap.resize(stackSize);
         stack = heap.data();
     }
     std::size_t top = 0;  // values on the stack
@@ -259,9 +297,9 @@ double ExpressionCode::evaluate(std::span<const double> inputs, ExpressionFailur
         if (failure) *failure = {i.offset, std::move(message)};
         return std::numeric_limits<double>::quiet_NaN();
     };
-    const std::size_t size = code_.size();
+    const std::size_t size = code.size();
     for (std::size_t pc = 0; pc < size; ++pc) {
-        const ExprInstruction& i = code_[pc];
+        const ExprInstruction& i = code[pc];
         switch (i.op) {
             case ExprOp::Push:
                 stack[top++] = i.number;
@@ -280,7 +318,7 @@ double ExpressionCode::evaluate(std::span<const double> inputs, ExpressionFailur
                 break;
             case ExprOp::Call: {
                 top -= i.index;
-                const ExprStep s = applyFunction(i.function, {stack + top, i.index});
+                const ExprStep s = call(i.function, {stack + top, i.index});
                 if (s.problem != ExprProblem::None)
                     return fail(i, functionProblemText(i.function, stack[top], s.problem));
                 stack[top++] = s.value;
@@ -308,15 +346,15 @@ double ExpressionCode::evaluate(std::span<const double> inputs, ExpressionFailur
                 pc += i.index;
                 break;
             default: {
-                --top;
-                const ExprStep s = applyOperator(i.op, stack[top - 1], stack[top]);
+                const double b = i.index ? i.number : stack[--top];
+                const ExprStep s = operate(i.op, stack[top - 1], b);
                 if (s.problem != ExprProblem::None) return fail(i, operatorProblemText(i.op, s.problem));
                 stack[top - 1] = s.value;
             }
         }
     }
     const double v = stack[0];
-    if (!std::isfinite(v)) return fail(code_.back(), "the value is not finite");
+    if (!std::isfinite(v)) return fail(code.back(), "the value is not finite");
     return v == 0 ? 0.0 : v;
 }
 

@@ -18,6 +18,10 @@ namespace f2 {
 /// (parse/expression.h's formatNumber).
 std::string shortestDecimal(double value);
 
+/// std::fmod(x, period) for a whole `period`, bit for bit, and faster where
+/// x / period is below 1e15 (the degrees of sin, cos and tan are reduced so).
+double wholeRemainder(double x, double period);
+
 /// The functions of expressions, in their table's order (expressionFunctions).
 enum class ExprFunction : std::uint8_t {
     Sin,
@@ -108,9 +112,11 @@ std::string functionProblemText(ExprFunction f, double x, ExprProblem problem);
 struct ExprInstruction {
     ExprOp op = ExprOp::Push;
     ExprFunction function = ExprFunction::Sin;  ///< Call
-    std::uint32_t index = 0;                    ///< Load: input; Call: argument count; jumps: how far
-    std::uint32_t offset = 0;                   ///< where in the text, for a problem's message
-    double number = 0;                          ///< Push
+    /// Load: input; Call: argument count; jumps: how far; a binary operator:
+    /// 1 when its right operand is `number` (not on the stack).
+    std::uint32_t index = 0;
+    std::uint32_t offset = 0;  ///< where in the text, for a problem's message
+    double number = 0;         ///< Push, and a binary operator's constant
 };
 
 /// Where and why an evaluation failed.
@@ -132,6 +138,10 @@ class ExpressionCode {
     /// is given, what failed. -0 gives 0, as the text evaluator does.
     double evaluate(std::span<const double> inputs, ExpressionFailure* failure = nullptr) const;
     std::span<const ExprInstruction> instructions() const { return code_; }
+    std::size_t stackSize() const { return stackSize_; }
+    /// evaluate() for `code` (not empty) that needs `stackSize` values of stack.
+    static double run(std::span<const ExprInstruction> code, std::size_t stackSize,
+                      std::span<const double> inputs, ExpressionFailure* failure);
 
    private:
     std::vector<ExprInstruction> code_;

@@ -207,13 +207,7 @@ class ExpressionParser {
     /// (an error at the operator if it fails), else code.
     Value binary(ExprOp op, Value a, Value b, std::size_t at) {
         if (failed_) return {};
-        if (a.dynamic() || b.dynamic()) {
-            Value out;
-            appendCode(out.code, std::move(a));
-            appendCode(out.code, std::move(b));
-            out.code.push_back(instruction(op, at));
-            return out;
-        }
+        if (a.dynamic() || b.dynamic()) return compiledBinary(op, std::move(a), std::move(b), at);
         if (skipping_ > 0) return {};  // not evaluated: its value is never used
         const ExprStep s = applyOperator(op, a.number, b.number);
         if (s.problem == ExprProblem::None) return {s.value, {}};
@@ -225,6 +219,50 @@ class ExpressionParser {
         }
         fail(at, operatorProblemText(op, s.problem));
         return {};
+    }
+
+    /// The code of `a op b`. A number on one side goes into the operator's
+    /// instruction (half the instructions of `20*sin(x) + 1`): on the right
+    /// as it is, on the left by the mirror operator, to the same bits (a + b
+    /// is b + a, a < b is b > a).
+    static Value compiledBinary(ExprOp op, Value a, Value b, std::size_t at) {
+        if (!a.dynamic() && b.dynamic()) {
+            if (const std::optional<ExprOp> mirror = mirrored(op)) {
+                std::swap(a, b);
+                op = *mirror;
+            }
+        }
+        if (!b.dynamic()) {
+            ExprInstruction i = instruction(op, at, 1);
+            i.number = b.number;
+            return followedBy(std::move(a), i);
+        }
+        Value out;
+        appendCode(out.code, std::move(a));
+        appendCode(out.code, std::move(b));
+        out.code.push_back(instruction(op, at));
+        return out;
+    }
+
+    /// The operator that gives `b op a` from `a` and `b`, if there is one.
+    static std::optional<ExprOp> mirrored(ExprOp op) {
+        switch (op) {
+            case ExprOp::Add:
+            case ExprOp::Mul:
+            case ExprOp::Eq:
+            case ExprOp::Ne:
+                return op;
+            case ExprOp::Lt:
+                return ExprOp::Gt;
+            case ExprOp::Le:
+                return ExprOp::Ge;
+            case ExprOp::Gt:
+                return ExprOp::Lt;
+            case ExprOp::Ge:
+                return ExprOp::Le;
+            default:
+                return std::nullopt;
+        }
     }
 
     /// 1 if `v` is not 0, else 0.

@@ -42,14 +42,16 @@ int driveSlot(DriveChannel channel) {
 
 std::string Drive::place() const { return file + ":" + std::to_string(line) + ":" + std::to_string(column); }
 
+void setDrivenNumber(Pose& pose, int slot, double v) {
+    if (!usable(v)) return;
+    float& number = slot < 3 ? pose.position[slot] : pose.rotation[slot - 3];
+    number = float(v);
+}
+
 void applyDrives(const TrackDrives& drives, double t, Pose& pose) {
     for (int slot = 0; slot < 6; ++slot) {
         const Drive* drive = drives.bySlot[std::size_t(slot)].get();
-        if (!drive) continue;
-        const double v = drive->valueAt(t);
-        if (!usable(v)) continue;
-        float& number = slot < 3 ? pose.position[slot] : pose.rotation[slot - 3];
-        number = float(v);
+        if (drive) setDrivenNumber(pose, slot, drive->valueAt(t));
     }
 }
 

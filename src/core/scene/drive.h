@@ -50,7 +50,7 @@ struct Drive {
     /// The value at frame t (frames, may be fractional), or NaN and, when
     /// `failure` is given, why.
     double valueAt(double frame, ExpressionFailure* failure = nullptr) const {
-        const std::array<double, 2> inputs = {frame, frame / double(fps)};
+        const std::array<double, 2> inputs = {frame, frame / double(fps)};  // as AnimationProgram::drivenPose
         return code.evaluate(inputs, failure);
     }
     /// "FILE:LINE:COL".
@@ -61,6 +61,10 @@ struct Drive {
 struct TrackDrives {
     std::array<std::shared_ptr<const Drive>, 6> bySlot{};
 };
+
+/// Number `slot` (driveSlot) of `pose` set to a drive's value `v`, when it
+/// is a scene number (finite, within the float range); else left as it is.
+void setDrivenNumber(Pose& pose, int slot, double v);
 
 /// `pose` with its driven numbers replaced by the drives' values at frame t.
 /// A value that is not finite leaves the number as it was: the frame is an
