@@ -5,6 +5,7 @@
 #include "core/parse/language.h"
 #include "core/parse/lexer.h"
 #include "core/scene/models.h"
+#include "lsp/model_types.h"
 
 namespace f2::lsp {
 
@@ -156,7 +157,17 @@ std::optional<PartSuffix> partAfter(const Analysis& a, const TokenSpan& name, st
     const std::string_view word = line.substr(dot + 1, end - dot - 1);
     const int part = model->partIndex(word);
     if (part < 0) return std::nullopt;
-    return PartSuffix{part, dot + 1, end};
+    PartSuffix suffix{part, dot + 1, end};
+    if (end < line.size() && line[end] == '.') {
+        std::size_t shapeEnd = end + 1;
+        while (shapeEnd < line.size() && isNameChar(line[shapeEnd])) ++shapeEnd;
+        suffix.shape = model->shapeIndex(part, line.substr(end + 1, shapeEnd - end - 1));
+        if (suffix.shape >= 0) {
+            suffix.shapeBegin = end + 1;
+            suffix.shapeEnd = shapeEnd;
+        }
+    }
+    return suffix;
 }
 
 SymbolAt symbolAt(const Analysis& a, Position p) {
@@ -167,20 +178,33 @@ SymbolAt symbolAt(const Analysis& a, Position p) {
     const auto lineIndex = static_cast<std::size_t>(p.line);
     const std::size_t bom = p.line == 0 && a.document.text().starts_with("\xEF\xBB\xBF") ? 3 : 0;
 
+    const std::string_view lineText = a.document.line(p.line);
+    auto rangeInLine = [&](std::size_t begin, std::size_t end) {
+        return Range{{p.line, utf16Length(lineText.substr(0, begin))},
+                     {p.line, utf16Length(lineText.substr(0, end))}};
+    };
     auto onName = [&](const TokenSpan& span, std::size_t object) {
         if (!a.inDocument(span.loc) || !contains(span, lineIndex, byte, bom)) {
             // The part after `name.` belongs to the same object.
             if (a.inDocument(span.loc) && span.loc.line == p.line + 1) {
-                if (const auto suffix = partAfter(a, span, object);
-                    suffix && byte >= suffix->begin && byte <= suffix->end) {
-                    const std::string_view line = a.document.line(p.line);
+                const auto suffix = partAfter(a, span, object);
+                if (suffix && byte >= suffix->begin && byte <= suffix->end) {
                     at = {SymbolAt::Kind::Part,
                           object,
                           suffix->part,
                           {},
-                          {{p.line, utf16Length(line.substr(0, suffix->begin))},
-                           {p.line, utf16Length(line.substr(0, suffix->end))}},
+                          rangeInLine(suffix->begin, suffix->end),
                           {}};
+                    return true;
+                }
+                if (suffix && suffix->shape >= 0 && byte >= suffix->shapeBegin && byte <= suffix->shapeEnd) {
+                    at = {SymbolAt::Kind::Shape,
+                          object,
+                          suffix->part,
+                          {},
+                          rangeInLine(suffix->shapeBegin, suffix->shapeEnd),
+                          {},
+                          suffix->shape};
                     return true;
                 }
             }
@@ -190,11 +214,6 @@ SymbolAt symbolAt(const Analysis& a, Position p) {
         return true;
     };
     // A variable (also inside the braces of a name such as s{i}), or the path of an /include.
-    const std::string_view lineText = a.document.line(p.line);
-    auto rangeInLine = [&](std::size_t begin, std::size_t end) {
-        return Range{{p.line, utf16Length(lineText.substr(0, begin))},
-                     {p.line, utf16Length(lineText.substr(0, end))}};
-    };
     for (const VariableOccurrence* v : a.ownVariables()) {
         if (v->line == p.line && byte >= v->begin && byte <= v->end) {
             at.kind = SymbolAt::Kind::Variable;
@@ -243,11 +262,26 @@ SymbolAt symbolAt(const Analysis& a, Position p) {
         const Token& first = tokens.tokens[0];
         const std::size_t begin = static_cast<std::size_t>(first.column - 1);
         if (first.text.starts_with('/') && byte >= begin && byte <= begin + first.text.size()) {
-            const std::string_view line = a.document.line(p.line);
-            at.kind = SymbolAt::Kind::Command;
-            at.command = first.text;
-            at.range = {{p.line, utf16Length(line.substr(0, begin))},
-                        {p.line, utf16Length(line.substr(0, begin + first.text.size()))}};
+            at.range = rangeInLine(begin, begin + first.text.size());
+            // `/lamp l1 …`: an instance of a model type the scene defines (SPEC 10.1).
+            if (!findCommand(first.text) && findModel(a, first.text.substr(1))) {
+                at.kind = SymbolAt::Kind::Model;
+                at.text = first.text.substr(1);
+            } else {
+                at.kind = SymbolAt::Kind::Command;
+                at.command = first.text;
+            }
+            return at;
+        }
+        // The type's name after `/model`.
+        if (first.text == "/model" && tokens.count > 1) {
+            const Token& type = tokens.tokens[1];
+            const auto typeBegin = static_cast<std::size_t>(type.column - 1);
+            if (byte >= typeBegin && byte <= typeBegin + type.text.size()) {
+                at.kind = SymbolAt::Kind::Model;
+                at.text = type.text;
+                at.range = rangeInLine(typeBegin, typeBegin + type.text.size());
+            }
         }
     }
     return at;

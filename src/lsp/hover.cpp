@@ -1,8 +1,8 @@
 // textDocument/hover: a command's syntax and meaning; an object's kind, where
-// it is created, its parts and keys and its pose at frame 0; a part's shape and
-// pivot; the camera's line, keys, look-at, attachment and pose at frame 0; a
-// named light's line, mount, keys and place at frame 0; a variable's
-// definition; an include's file.
+// it is created, its keys, its model's part tree and its pose at frame 0; a
+// part's shapes and pivot; a shape; a model type's part tree; the camera's line, keys, look-at, attachment
+// and pose at frame 0; a named light's line, mount, keys and place at frame 0; a variable's definition; an
+// include's file.
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -16,6 +16,7 @@
 #include "core/parse/lexer.h"
 #include "core/scene/models.h"
 #include "lsp/features.h"
+#include "lsp/model_types.h"
 
 namespace f2::lsp {
 
@@ -40,6 +41,32 @@ std::string shapeText(ShapeKind kind, const Vec3& size) {
             return "box " + number(size.x) + " × " + number(size.y) + " × " + number(size.z);
     }
     return {};
+}
+
+/// "cylinder r 4, h 120 centred at (0, 60, 0)", its turn and whether it keeps its colour.
+std::string shapeLine(const ModelShape& s) {
+    std::string text = shapeText(s.kind, s.size) + " centred at " + vec(s.centre);
+    if (s.turn) text += ", turned " + vec(s.rotation);
+    return s.ownColor ? text + " (keeps its colour)" : text;
+}
+
+/// A model's parts as a Markdown tree: each part with its pivot and rest
+/// rotation, then its shapes and its children, `indent` spaces in.
+void addPartTree(std::string& text, const ModelType& model, int parent, std::size_t indent) {
+    for (std::size_t i = 0; i < model.parts.size(); ++i) {
+        const ModelPart& part = model.parts[i];
+        if (part.parent != parent) continue;
+        text += std::string(indent, ' ') + "- `" + part.name + "`" + (parent < 0 ? " on the root" : "") +
+                ", pivot " + vec(part.pivot);
+        if (part.rest) text += ", rest rotation " + vec(part.restRotation);
+        text += "\n";
+        for (const ModelShape& s : model.shapes) {
+            if (s.part != static_cast<int>(i)) continue;
+            text +=
+                std::string(indent + 2, ' ') + "- `" + part.name + "." + s.name + "`: " + shapeLine(s) + "\n";
+        }
+        addPartTree(text, model, static_cast<int>(i), indent + 2);
+    }
 }
 
 std::string placeText(const Analysis& a, const SourceLoc& loc) {
@@ -67,14 +94,14 @@ std::string objectHover(const Analysis& a, std::size_t index) {
     text += "- keys: " + std::to_string(keys[0]);
     if (o.model) {
         text += " (own)";
-        std::string parts;
-        for (std::size_t i = 0; i < o.model->parts.size(); ++i) {
+        for (std::size_t i = 0; i < o.model->parts.size(); ++i)
             text += ", " + o.model->parts[i].name + " " + std::to_string(keys[i + 1]);
-            parts += (i > 0 ? ", " : "") + o.model->parts[i].name;
-        }
-        text += "\n- parts: " + parts;
     }
     text += "\n";
+    if (o.model) {
+        text += "- parts of " + o.model->name + ":\n";
+        addPartTree(text, *o.model, -1, 2);
+    }
     // The pose at frame 0 needs the keys, which only a scene without errors has.
     if (a.result.ok() && index < a.result.scene->objects.size()) {
         const SceneObject& parsed = a.result.scene->objects[index];
@@ -99,12 +126,38 @@ std::string partHover(const Analysis& a, std::size_t index, int part) {
     if (mp.rest) text += ", rest rotation " + vec(mp.restRotation);
     text += "\n";
     for (const ModelShape& s : model.shapes) {
-        if (s.part != part) continue;
-        text += "- `" + s.name + "`: " + shapeText(s.kind, s.size) + " centred at " + vec(s.centre) +
-                (s.ownColor ? " (keeps its colour)" : "") + "\n";
+        if (s.part == part) text += "- `" + s.name + "`: " + shapeLine(s) + "\n";
     }
     const auto keys = keyCounts(a, index);
     text += "- keys: " + std::to_string(keys[static_cast<std::size_t>(part + 1)]) + "\n";
+    if (const IndexedModel* m = indexedModelOf(a, &model); m && std::size_t(part) < m->parts.size())
+        text += "- declared at " + placeText(a, m->parts[std::size_t(part)].loc) + "\n";
+    return text;
+}
+
+/// `name.part.shape` (SPEC 10.1): its kind, size and place on its part.
+std::string shapeHover(const Analysis& a, std::size_t index, int shape) {
+    const SceneObject& o = a.index.objects[index].object;
+    const ModelType& model = *o.model;
+    const ModelShape& s = model.shapes[static_cast<std::size_t>(shape)];
+    const std::string& part = model.parts[static_cast<std::size_t>(s.part)].name;
+    std::string text = "**shape** `" + o.name + "." + part + "." + s.name + "` of " + model.name + " `" +
+                       o.name + "`\n- " + shapeLine(s) + " in " + part + "'s frame\n";
+    if (const IndexedModel* m = indexedModelOf(a, &model); m && std::size_t(shape) < m->shapes.size())
+        text += "- created at " + placeText(a, m->shapes[std::size_t(shape)].loc) + "\n";
+    return text;
+}
+
+/// A model type (SPEC 10.1): where it is defined and its part tree.
+std::string modelHover(const Analysis& a, const std::string& name) {
+    const auto known = findModel(a, name);
+    if (!known) return "**model** `" + name + "`: its block has no `/end` yet, or errors\n";
+    std::string text = "**model** `" + name + "`";
+    text += known->indexed ? ", defined at " + placeText(a, known->indexed->command) + "\n"
+                           : ", built in (SPEC 5)\n";
+    text += "- " + std::to_string(known->type->parts.size()) + " parts, " +
+            std::to_string(known->type->shapes.size()) + " shapes:\n";
+    addPartTree(text, *known->type, -1, 2);
     return text;
 }
 
@@ -286,6 +339,10 @@ Json hover(const Analysis& a, Position p) {
             return markdown(objectHover(a, at.object), at.range);
         case SymbolAt::Kind::Part:
             return markdown(partHover(a, at.object, at.part), at.range);
+        case SymbolAt::Kind::Shape:
+            return markdown(shapeHover(a, at.object, at.shape), at.range);
+        case SymbolAt::Kind::Model:
+            return markdown(modelHover(a, at.text), at.range);
         case SymbolAt::Kind::Variable:
             return markdown(variableHover(a, at.text, p.line), at.range);
         case SymbolAt::Kind::Include:
