@@ -5,6 +5,7 @@
 /// which a search of the text cannot do.
 #include <string>
 #include <unordered_map>
+#include <vector>
 
 #include "core/parse/diagnostic.h"
 
@@ -30,9 +31,14 @@ class SceneLocations {
     /// Where object `name` was created, if the scene has it.
     const CreatedAt* object(const std::string& name) const;
     std::size_t size() const { return objects_.size(); }
+    /// Where shape `shape` of the model type `type` is created in its `/model`
+    /// block (SPEC 10.1): its `part.shape` argument. Nothing for the robot
+    /// and the human, which no line defines.
+    const SourceLoc* shape(const std::string& type, int shape) const;
 
    private:
     std::unordered_map<std::string, CreatedAt> objects_;
+    std::unordered_map<std::string, std::vector<SourceLoc>> shapes_;  // by model type
 };
 
 }  // namespace f2::viewer
