@@ -24,6 +24,58 @@ bool contains(const TokenSpan& span, std::size_t lineIndex, std::size_t byte, st
     return byte >= begin && byte <= begin + static_cast<std::size_t>(span.length);
 }
 
+/// A part or a shape named inside the `/model` block around `p`, once the
+/// parser has indexed that block (SPEC 10.1): a `/part`'s name or parent, or
+/// either half of a `part.shape` argument.
+template <typename RangeInLine>
+bool modelMemberAt(const Analysis& a, Position p, std::size_t byte, const RangeInLine& rangeInLine,
+                   SymbolAt& at) {
+    const std::string_view line = a.document.line(p.line);
+    LineTokens tokens;
+    tokenizeLine(line, tokens);
+    if (tokens.count < 2) return false;
+    const std::string_view command = tokens.tokens[0].text;
+    const bool isPart = command == "/part";
+    const bool namesShape = command == "/sphere" || command == "/cylinder" || command == "/box" ||
+                            command == "/paint" || command == "/material" || command == "/checker";
+    if (!isPart && !namesShape) return false;
+    const auto block = modelBlockAt(a.document, p.line);
+    if (!block) return false;
+    const auto known = findModel(a, block->type);
+    if (!known || !known->indexed || !a.inDocument(known->indexed->command) ||
+        known->indexed->command.line != block->line + 1)
+        return false;
+    const ModelType& model = *known->type;
+    auto on = [&](int token, std::size_t from, std::size_t length) {
+        const auto begin = static_cast<std::size_t>(tokens.tokens[std::size_t(token)].column - 1) + from;
+        return byte >= begin && byte <= begin + length ? std::optional(begin) : std::nullopt;
+    };
+    auto set = [&](SymbolAt::Kind kind, int part, int shape, std::size_t begin, std::size_t length) {
+        at = {kind, 0, part, {}, rangeInLine(begin, begin + length), block->type, shape};
+        return true;
+    };
+    if (isPart) {
+        for (int token = 1; token <= 2 && token < tokens.count; ++token) {
+            const std::string_view word = tokens.tokens[std::size_t(token)].text;
+            const int part = model.partIndex(word);
+            if (const auto begin = on(token, 0, word.size()); begin && part >= 0)
+                return set(SymbolAt::Kind::ModelPart, part, -1, *begin, word.size());
+        }
+        return false;
+    }
+    const std::string_view word = tokens.tokens[1].text;
+    const std::size_t dot = word.find('.');
+    if (dot == std::string_view::npos) return false;
+    const int part = model.partIndex(word.substr(0, dot));
+    if (part < 0) return false;
+    if (const auto begin = on(1, 0, dot)) return set(SymbolAt::Kind::ModelPart, part, -1, *begin, dot);
+    const std::string_view shapeName = word.substr(dot + 1);
+    const int shape = model.shapeIndex(part, shapeName);
+    if (const auto begin = on(1, dot + 1, shapeName.size()); begin && shape >= 0)
+        return set(SymbolAt::Kind::ModelShape, part, shape, *begin, shapeName.size());
+    return false;
+}
+
 }  // namespace
 
 std::string pathFromUri(std::string_view uri) {
@@ -245,6 +297,8 @@ SymbolAt symbolAt(const Analysis& a, Position p) {
     for (const NameUse& use : a.index.uses) {
         if (use.light ? onLight(use.name, use.object) : onName(use.name, use.object)) return at;
     }
+
+    if (modelMemberAt(a, p, byte, rangeInLine, at)) return at;
 
     // A command word, or `camera` as an argument (SPEC 9.1: no object has that name).
     LineTokens tokens;

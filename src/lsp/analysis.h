@@ -85,7 +85,8 @@ Analysis analyze(std::string uri, TextDocument document, const SourceOverlay& op
 /// What is under a position.
 struct SymbolAt {
     /// Shape: `name.part.shape` (SPEC 10.1); Model: a model type's name, after
-    /// `/model` or as an instance's command word (`/lamp`).
+    /// `/model` or as an instance's command word (`/lamp`); ModelPart and
+    /// ModelShape: a part or shape named inside its indexed `/model` block.
     enum class Kind {
         None,
         Command,
@@ -96,14 +97,16 @@ struct SymbolAt {
         Include,
         Camera,
         Light,
-        Model
+        Model,
+        ModelPart,
+        ModelShape
     } kind = Kind::None;
     std::size_t object = 0;    ///< Object, Part and Shape: index into index.objects; Light: into index.lights
-    int part = -1;             ///< Part and Shape: index among the model's parts
+    int part = -1;             ///< Part, Shape and ModelPart: index among the model's parts
     std::string_view command;  ///< Command: its name
     Range range;               ///< the token (or the name, part or shape within it)
-    std::string text;          ///< Variable: its name; Include: the path as written; Model: the type
-    int shape = -1;            ///< Shape: index among the model's shapes
+    std::string text;  ///< Variable: its name; Include: the path as written; Model and members: the type
+    int shape = -1;    ///< Shape and ModelShape: index among the model's shapes
 };
 
 SymbolAt symbolAt(const Analysis& a, Position p);

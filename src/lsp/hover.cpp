@@ -114,25 +114,39 @@ std::string objectHover(const Analysis& a, std::size_t index) {
     return text;
 }
 
+/// A part of a model: its pivot and rest rotation, its shapes.
+std::string partFacts(const ModelType& model, int part) {
+    const ModelPart& mp = model.parts[static_cast<std::size_t>(part)];
+    const std::string parent =
+        mp.parent < 0 ? "the root" : model.parts[static_cast<std::size_t>(mp.parent)].name;
+    std::string text = "- pivot " + vec(mp.pivot) + " in " + parent + "'s frame";
+    if (mp.rest) text += ", rest rotation " + vec(mp.restRotation);
+    text += "\n";
+    for (const ModelShape& s : model.shapes) {
+        if (s.part == part) text += "- `" + s.name + "`: " + shapeLine(s) + "\n";
+    }
+    return text;
+}
+
+/// Where a part (or, with `shape`, a shape) of a model the scene defines is written.
+std::string memberPlace(const Analysis& a, const ModelType& model, int member, bool shape) {
+    const IndexedModel* m = indexedModelOf(a, &model);
+    if (!m) return {};
+    const auto& spans = shape ? m->shapes : m->parts;
+    if (member < 0 || std::size_t(member) >= spans.size()) return {};
+    return (shape ? "- created at " : "- declared at ") + placeText(a, spans[std::size_t(member)].loc) + "\n";
+}
+
 std::string partHover(const Analysis& a, std::size_t index, int part) {
     const SceneObject& o = a.index.objects[index].object;
     if (!o.model) return "**part** of `" + o.name + "`\n";
     const ModelType& model = *o.model;
     const ModelPart& mp = model.parts[static_cast<std::size_t>(part)];
     std::string text = "**part** `" + o.name + "." + mp.name + "` of " + model.name + " `" + o.name + "`\n";
-    const std::string parent =
-        mp.parent < 0 ? "the root" : model.parts[static_cast<std::size_t>(mp.parent)].name;
-    text += "- pivot " + vec(mp.pivot) + " in " + parent + "'s frame";
-    if (mp.rest) text += ", rest rotation " + vec(mp.restRotation);
-    text += "\n";
-    for (const ModelShape& s : model.shapes) {
-        if (s.part == part) text += "- `" + s.name + "`: " + shapeLine(s) + "\n";
-    }
+    text += partFacts(model, part);
     const auto keys = keyCounts(a, index);
     text += "- keys: " + std::to_string(keys[static_cast<std::size_t>(part + 1)]) + "\n";
-    if (const IndexedModel* m = indexedModelOf(a, &model); m && std::size_t(part) < m->parts.size())
-        text += "- declared at " + placeText(a, m->parts[std::size_t(part)].loc) + "\n";
-    return text;
+    return text + memberPlace(a, model, part, false);
 }
 
 /// `name.part.shape` (SPEC 10.1): its kind, size and place on its part.
@@ -141,11 +155,23 @@ std::string shapeHover(const Analysis& a, std::size_t index, int shape) {
     const ModelType& model = *o.model;
     const ModelShape& s = model.shapes[static_cast<std::size_t>(shape)];
     const std::string& part = model.parts[static_cast<std::size_t>(s.part)].name;
-    std::string text = "**shape** `" + o.name + "." + part + "." + s.name + "` of " + model.name + " `" +
-                       o.name + "`\n- " + shapeLine(s) + " in " + part + "'s frame\n";
-    if (const IndexedModel* m = indexedModelOf(a, &model); m && std::size_t(shape) < m->shapes.size())
-        text += "- created at " + placeText(a, m->shapes[std::size_t(shape)].loc) + "\n";
-    return text;
+    return "**shape** `" + o.name + "." + part + "." + s.name + "` of " + model.name + " `" + o.name +
+           "`\n- " + shapeLine(s) + " in " + part + "'s frame\n" + memberPlace(a, model, shape, true);
+}
+
+/// A part or a shape named inside its `/model` block.
+std::string modelMemberHover(const Analysis& a, const SymbolAt& at) {
+    const auto known = findModel(a, at.text);
+    if (!known) return {};
+    const ModelType& model = *known->type;
+    if (at.kind == SymbolAt::Kind::ModelPart) {
+        return "**part** `" + model.parts[std::size_t(at.part)].name + "` of the model `" + model.name +
+               "`\n" + partFacts(model, at.part) + memberPlace(a, model, at.part, false);
+    }
+    const ModelShape& s = model.shapes[std::size_t(at.shape)];
+    const std::string& part = model.parts[std::size_t(s.part)].name;
+    return "**shape** `" + part + "." + s.name + "` of the model `" + model.name + "`\n- " + shapeLine(s) +
+           " in " + part + "'s frame\n" + memberPlace(a, model, at.shape, true);
 }
 
 /// A model type (SPEC 10.1): where it is defined and its part tree.
@@ -343,6 +369,9 @@ Json hover(const Analysis& a, Position p) {
             return markdown(shapeHover(a, at.object, at.shape), at.range);
         case SymbolAt::Kind::Model:
             return markdown(modelHover(a, at.text), at.range);
+        case SymbolAt::Kind::ModelPart:
+        case SymbolAt::Kind::ModelShape:
+            return markdown(modelMemberHover(a, at), at.range);
         case SymbolAt::Kind::Variable:
             return markdown(variableHover(a, at.text, p.line), at.range);
         case SymbolAt::Kind::Include:

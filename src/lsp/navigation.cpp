@@ -134,13 +134,19 @@ std::vector<TokenSpan> modelOccurrences(const Analysis& a, const std::string& ty
     return out;
 }
 
-/// A `/part` or a shape of a model the scene defines, or nothing for the robot's and the human's.
+/// A `/part` or a shape of a model the scene defines, from a target
+/// (`name.part`, `name.part.shape`) or from inside its block; nothing for the
+/// robot's and the human's.
 std::optional<TokenSpan> modelMemberDefinition(const Analysis& a, const SymbolAt& at) {
-    const ModelType* model = a.index.objects[at.object].object.model.get();
-    const IndexedModel* m = indexedModelOf(a, model);
+    const bool onTarget = at.kind == SymbolAt::Kind::Part || at.kind == SymbolAt::Kind::Shape;
+    const auto known = onTarget ? std::nullopt : findModel(a, at.text);
+    const IndexedModel* m = onTarget ? indexedModelOf(a, a.index.objects[at.object].object.model.get())
+                            : known  ? known->indexed
+                                     : nullptr;
     if (!m) return std::nullopt;
-    const auto& spans = at.kind == SymbolAt::Kind::Shape ? m->shapes : m->parts;
-    const int member = at.kind == SymbolAt::Kind::Shape ? at.shape : at.part;
+    const bool shape = at.kind == SymbolAt::Kind::Shape || at.kind == SymbolAt::Kind::ModelShape;
+    const auto& spans = shape ? m->shapes : m->parts;
+    const int member = shape ? at.shape : at.part;
     if (member < 0 || std::size_t(member) >= spans.size()) return std::nullopt;
     return spans[std::size_t(member)];
 }
@@ -176,7 +182,8 @@ Json definition(const Analysis& a, Position p) {
         const auto known = findModel(a, at.text);
         return known && known->indexed ? locationOf(a, known->indexed->name) : Json();
     }
-    if (at.kind == SymbolAt::Kind::Part || at.kind == SymbolAt::Kind::Shape) {
+    if (at.kind == SymbolAt::Kind::Part || at.kind == SymbolAt::Kind::Shape ||
+        at.kind == SymbolAt::Kind::ModelPart || at.kind == SymbolAt::Kind::ModelShape) {
         const auto member = modelMemberDefinition(a, at);
         return member ? locationOf(a, *member) : Json();
     }

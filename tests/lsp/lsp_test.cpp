@@ -992,6 +992,27 @@ TEST(Models, DefinitionReferencesAndRenameOfTypes) {
     EXPECT_TRUE(prepareRename(a, {10, 2}).is_null());        // `/robot` is a command
 }
 
+TEST(Models, PartsAndShapesInsideTheirBlock) {
+    const Analysis a = analysed(kLamp);
+    // A parent, the part of `part.shape` and its shape lead to their lines.
+    EXPECT_EQ(definition(a, {2, 11}), location(a.uri, Range{{1, 6}, {1, 10}}));
+    EXPECT_EQ(definition(a, {5, 8}), location(a.uri, Range{{2, 6}, {2, 9}}));
+    EXPECT_EQ(definition(a, {5, 12}), location(a.uri, Range{{4, 8}, {4, 16}}));
+    EXPECT_EQ(definition(a, {4, 13}), location(a.uri, Range{{4, 8}, {4, 16}}));
+    const Json part = hover(a, {2, 7});
+    EXPECT_EQ(part["contents"]["value"],
+              "**part** `arm` of the model `lamp`\n- pivot (0, 10, 0) in base's frame, rest rotation (0, 0, "
+              "30)\n- `bulb`: sphere r 8 centred at (0, -5, 0) (keeps its colour)\n- declared at line 3\n");
+    EXPECT_EQ(part["range"], toJson(Range{{2, 6}, {2, 9}}));
+    const Json shape = hover(a, {5, 12});
+    EXPECT_EQ(
+        shape["contents"]["value"],
+        "**shape** `arm.bulb` of the model `lamp`\n- sphere r 8 centred at (0, -5, 0) (keeps its colour) "
+        "in arm's frame\n- created at line 5\n");
+    EXPECT_EQ(shape["range"], toJson(Range{{5, 11}, {5, 15}}));
+    EXPECT_TRUE(hover(a, {1, 11}).is_null());  // `root` is no part
+}
+
 TEST(Models, OutlineAndFolding) {
     const Analysis a = analysed(kLamp);
     const Json symbols = documentSymbols(a);
