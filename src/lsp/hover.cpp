@@ -358,8 +358,11 @@ Json hover(const Analysis& a, Position p) {
         case SymbolAt::Kind::Command: {
             const CommandSpec* doc = findCommand(at.command);
             if (!doc) return nullptr;
-            return markdown("```f2\n" + std::string(doc->syntax) + "\n```\n" + std::string(doc->meaning),
-                            at.range);
+            std::string text = "```f2\n" + std::string(doc->syntax) + "\n```\n" + std::string(doc->meaning);
+            // The robot and the human are models too (SPEC 10.1): their trees.
+            if (doc->id == CommandId::Robot || doc->id == CommandId::Human)
+                text += "\n\n" + modelHover(a, std::string(doc->name.substr(1)));
+            return markdown(std::move(text), at.range);
         }
         case SymbolAt::Kind::Object:
             return markdown(objectHover(a, at.object), at.range);

@@ -967,6 +967,11 @@ TEST(Models, HoverShowsThePartTree) {
     const std::string robot = hover(a, {11, 9})["contents"]["value"];
     EXPECT_EQ(robot.rfind("**part** `r.head` of robot `r`\n", 0), 0u) << robot;
     EXPECT_EQ(robot.find("declared at"), std::string::npos) << robot;
+    const std::string robotCommand = hover(a, {10, 2})["contents"]["value"];
+    EXPECT_NE(robotCommand.find("\n\n**model** `robot`, built in (SPEC 5)\n- 4 parts, 6 shapes:\n"
+                                "  - `body` on the root, pivot (0, -105, 0)\n"),
+              std::string::npos)
+        << robotCommand;
 }
 
 TEST(Models, DefinitionReferencesAndRenameOfTypes) {
