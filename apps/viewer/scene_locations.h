@@ -1,8 +1,9 @@
 #pragma once
-/// Where the objects of a parsed scene are created in its source, from the
-/// parser's own symbol index (core/parse/symbol_index.h): names made by
-/// `/repeat` loops, `{ }` expressions and `/include`d files are found too,
-/// which a search of the text cannot do.
+/// Where the objects of a parsed scene and the shapes of its `/model` types
+/// are created in its source, from the parser's own symbol index
+/// (core/parse/symbol_index.h): names made by `/repeat` loops, `{ }`
+/// expressions and `/include`d files are found too, which a search of the
+/// text cannot do.
 #include <string>
 #include <unordered_map>
 #include <vector>
