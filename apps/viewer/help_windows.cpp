@@ -65,7 +65,8 @@ void showShortcuts(QWidget* parent, const QMenuBar* menus) {
         QObject::tr(
             "\n\nSpace, Left, Right, Home, End and C act while the picture or the timeline has the "
             "focus (click the picture); in the editor they type.\n"
-            "In the picture: drag to orbit, wheel to zoom.");
+            "In the picture: drag to orbit, wheel to zoom, click to select an object or part (its "
+            "line in the editor), Ctrl+click to go to the clicked shape's line in its /model block.");
     showText(parent, QObject::tr("Keyboard Shortcuts"), text, false);
 }
 

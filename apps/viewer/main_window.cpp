@@ -73,7 +73,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(session_, &StudioSession::frameShown, this, &MainWindow::onFrameShown);
     connect(session_, &StudioSession::selectionChanged, this, &MainWindow::showSelection);
     connect(viewport_, &ViewportWidget::viewChanged, this, &MainWindow::scheduleFrame);
-    connect(viewport_, &ViewportWidget::clicked, this, &MainWindow::selectAt);
+    connect(viewport_, &ViewportWidget::clicked, this,
+            [this](QPointF point, Qt::KeyboardModifiers modifiers) {
+                selectAt(point, modifiers.testFlag(Qt::ControlModifier));
+            });
     connect(playback_, &Playback::timeChanged, timeline_, &TimelineWidget::setTime);
     connect(playback_, &Playback::playingChanged, timeline_, &TimelineWidget::setPlaying);
     connect(timeline_, &TimelineWidget::playToggled, playback_, &Playback::togglePlaying);
@@ -310,12 +313,14 @@ void MainWindow::onFrameShown(const QImage& image, const FrameInfo& info) {
     }
 }
 
-void MainWindow::selectAt(QPointF imagePoint) {
+void MainWindow::selectAt(QPointF imagePoint, bool toShape) {
     const QImage& image = viewport_->image();
     if (image.isNull()) return;
     // The view at the size of the frame on screen, so the pick names what the user sees.
     if (!session_->pick(imagePoint, viewport_->viewCamera(image.size()))) return;
-    const StudioSession::CreatingLine found = session_->creatingLine(editor()->toPlainText());
+    const QString text = editor()->toPlainText();
+    const StudioSession::CreatingLine found =
+        toShape ? session_->shapeLine(text) : session_->creatingLine(text);
     if (found.line) {
         QTextCursor cursor(editor()->document()->findBlockByNumber(found.line - 1));
         cursor.movePosition(QTextCursor::EndOfBlock, QTextCursor::KeepAnchor);

@@ -85,8 +85,9 @@ class MainWindow : public QMainWindow {
     /// Selects what image point `imagePoint` (pixels of the picture on
     /// screen) shows in the frame on screen, or clears the selection on the
     /// background: outlined in the picture, named in the status bar, its
-    /// creating line selected in the editor.
-    void selectAt(QPointF imagePoint);
+    /// creating line selected in the editor. `toShape` (Ctrl+click): the line
+    /// of the shape clicked in its `/model` block instead (SPEC 10.1).
+    void selectAt(QPointF imagePoint, bool toShape = false);
     void setSelection(std::optional<Selection> selection) { session_->setSelection(std::move(selection)); }
     const std::optional<Selection>& selection() const { return session_->selection(); }
     /// Writes the view (the look-around, else the scene camera) into the

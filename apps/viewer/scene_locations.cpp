@@ -4,6 +4,7 @@
 #include <tuple>
 
 #include "core/parse/symbol_index.h"
+#include "core/scene/models.h"
 
 namespace f2::viewer {
 
@@ -18,7 +19,18 @@ SceneLocations SceneLocations::fromIndex(const SymbolIndex& index) {
         const std::pair<std::string_view, int> line{o.command.file, o.command.line};
         locations.objects_.try_emplace(o.object.name, CreatedAt{o.command, perLine[line], before[line]++});
     }
+    for (const IndexedModel& m : index.models) {
+        if (!m.type) continue;
+        std::vector<SourceLoc>& shapes = locations.shapes_[m.type->name];
+        for (const TokenSpan& s : m.shapes) shapes.push_back(s.loc);
+    }
     return locations;
+}
+
+const SourceLoc* SceneLocations::shape(const std::string& type, int shape) const {
+    const auto it = shapes_.find(type);
+    if (it == shapes_.end() || shape < 0 || std::size_t(shape) >= it->second.size()) return nullptr;
+    return &it->second[std::size_t(shape)];
 }
 
 const CreatedAt* SceneLocations::object(const std::string& name) const {

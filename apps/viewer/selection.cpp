@@ -15,12 +15,19 @@ QString Selection::target() const {
 Selection selectionOf(const SceneDesc& scene, const PickHit& hit) {
     const SceneObject& object = scene.objects[hit.object];
     return {object.name, hit.part,
-            hit.part ? object.model->parts[std::size_t(*hit.part)].name : std::string()};
+            hit.part ? object.model->parts[std::size_t(*hit.part)].name : std::string(),
+            hit.part ? std::optional(hit.shape) : std::nullopt};
 }
 
 std::optional<std::size_t> findObject(const SceneDesc& scene, const Selection& selection) {
-    for (std::size_t i = 0; i < scene.objects.size(); ++i)
-        if (scene.objects[i].name == selection.object) return i;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        if (scene.objects[i].name != selection.object) continue;
+        // A part is known by its name too: an edit of its model may move or drop it (SPEC 10.1).
+        const ModelType* model = scene.objects[i].model.get();
+        if (selection.part && (!model || model->partIndex(selection.partName) != *selection.part))
+            return std::nullopt;
+        return i;
+    }
     return std::nullopt;
 }
 

@@ -15,6 +15,10 @@ struct Selection {
     std::string object;       ///< the object's name
     std::optional<int> part;  ///< a part of a model instance: its index among the model's parts
     std::string partName;     ///< that part's name
+    /// The shape clicked on that part: its index among the model's shapes
+    /// (Ctrl+click goes to its line in the `/model` block; the outline and
+    /// the keys stay the part's, as a shape takes no pose).
+    std::optional<int> shape = std::nullopt;
 
     /// `name` or `name.part`, as the scene language writes the target.
     QString target() const;
@@ -23,7 +27,7 @@ struct Selection {
 
 /// The selection a pick names.
 Selection selectionOf(const SceneDesc& scene, const PickHit& hit);
-/// Index of the selected object in `scene`, if it still exists.
+/// Index of the selected object in `scene`, if it (and its selected part) still exists.
 std::optional<std::size_t> findObject(const SceneDesc& scene, const Selection& selection);
 
 /// The image rectangle (pixels of `camera`'s image) that holds the projection

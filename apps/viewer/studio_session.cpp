@@ -8,6 +8,7 @@
 #include "core/anim/frame_time.h"
 #include "core/render/pick.h"
 #include "core/render/renderer.h"
+#include "core/scene/models.h"
 #include "include_origin.h"
 #include "playback.h"
 #include "scene_document.h"
@@ -193,13 +194,12 @@ std::optional<BoundsOf> StudioSession::selectionIn(const SceneDesc& scene) const
     return object ? std::optional(BoundsOf{*object, selection_->part}) : std::nullopt;
 }
 
-int StudioSession::lineOf(const QString& text, const CreatedAt& created, ObjectKind kind) const {
+int StudioSession::lineOf(const QString& text, const CreatedAt& created, std::string_view type) const {
     if (created.loc.file != document_->sourceName()) return 0;
     const auto line = lineOfText(text, created.loc.line);
     if (!line) return 0;
     // The text may have changed since the scene parsed: the line must still hold the command.
-    const std::string_view name = objectKindName(kind);
-    const QString command = u'/' + QString::fromLatin1(name.data(), qsizetype(name.size()));
+    const QString command = u'/' + QString::fromUtf8(type.data(), qsizetype(type.size()));
     return line->mid(created.loc.column - 1).startsWith(command) ? created.loc.line : 0;
 }
 
@@ -212,7 +212,7 @@ StudioSession::CreatingLine StudioSession::creatingLine(const QString& text) con
     // Several objects from one line: a loop made them (or an include read more than once).
     const QString loop =
         created->sameLine > 1 ? tr(", one of %1 objects that line makes").arg(created->sameLine) : QString();
-    if (const int line = lineOf(text, *created, scene->objects[*object].kind))
+    if (const int line = lineOf(text, *created, typeNameOf(scene->objects[*object])))
         return {line,
                 loop.isEmpty() ? QString() : tr("%1 is made by line %2%3").arg(target).arg(line).arg(loop)};
     const QString place = QStringLiteral("%1:%2")
@@ -232,6 +232,38 @@ StudioSession::CreatingLine StudioSession::creatingLine(const QString& text) con
                    : tr("%1 is made in an included file, %2%3").arg(target, place, loop)};
 }
 
+StudioSession::CreatingLine StudioSession::shapeLine(const QString& text) const {
+    const auto scene = document_->scene();
+    const auto object = selection_ && scene ? findObject(*scene, *selection_) : std::nullopt;
+    if (!object || !selection_->part || !selection_->shape) return creatingLine(text);
+    const ModelType& model = *scene->objects[*object].model;
+    const auto index = std::size_t(*selection_->shape);
+    if (index >= model.shapes.size() || model.shapes[index].part != *selection_->part)
+        return creatingLine(text);
+    const QString shapeName = QString::fromStdString(model.shapes[index].name);
+    const QString target = selection_->target() + u'.' + shapeName;
+    const SourceLoc* loc = document_->locations()->shape(model.name, *selection_->shape);
+    const QString type = QString::fromStdString(model.name);
+    if (!loc) {
+        return {creatingLine(text).line,
+                tr("%1 is built into the %2 model: no line of the scene defines it").arg(target, type)};
+    }
+    // The text may have changed since the scene parsed: the line must still name the shape.
+    const QString written = QString::fromStdString(selection_->partName) + u'.' + shapeName;
+    if (loc->file == document_->sourceName()) {
+        if (const auto line = lineOfText(text, loc->line);
+            line && line->mid(loc->column - 1).startsWith(written)) {
+            return {loc->line,
+                    tr("%1: line %2, in the /model %3 block").arg(target).arg(loc->line).arg(type)};
+        }
+        return {0, tr("%1 was made by line %2 before the latest edits").arg(target).arg(loc->line)};
+    }
+    return {0, tr("%1 is made in %2:%3, in the /model %4 block")
+                   .arg(target, includedFileName(loc->file, document_->path()))
+                   .arg(loc->line)
+                   .arg(type)};
+}
+
 StudioSession::Capture StudioSession::cameraFromView(const QString& text,
                                                      const std::optional<Pose>& lookAround) const {
     const auto scene = document_->scene();
@@ -249,7 +281,7 @@ StudioSession::Capture StudioSession::keySelectionHere(const QString& text) cons
     // another file: then at the end.
     const CreatedAt* created = document_->locations()->object(selection_->object);
     const int createdAt =
-        created && created->sameLine == 1 ? lineOf(text, *created, scene->objects[*object].kind) : 0;
+        created && created->sameLine == 1 ? lineOf(text, *created, typeNameOf(scene->objects[*object])) : 0;
     return {{keyEdit(text, selection_->target(), frame, pose, createdAt)}, {}, 0};
 }
 

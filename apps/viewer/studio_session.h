@@ -89,6 +89,10 @@ class StudioSession : public QObject {
         QString message;
     };
     CreatingLine creatingLine(const QString& text) const;
+    /// The editor line of the selected shape in its model's `/model` block
+    /// (Ctrl+click), or the creating line for a primitive; the robot's and the
+    /// human's shapes have no line, which the message says.
+    CreatingLine shapeLine(const QString& text) const;
 
     /// The edits of one capture command (one undo step) and the status
     /// bar's note about them (shown for noteMs; empty: none).
@@ -132,9 +136,10 @@ class StudioSession : public QObject {
     void updateSelectionView();
     /// What a request for `scene` asks the bounds of: the selection, if `scene` has it.
     std::optional<BoundsOf> selectionIn(const SceneDesc& scene) const;
-    /// The line of `text` holding `created` (an object of `kind`), or 0 when
-    /// it is in another file or the text has changed there since the scene parsed.
-    int lineOf(const QString& text, const CreatedAt& created, ObjectKind kind) const;
+    /// The line of `text` holding `created` (an object of type `type`: "sphere",
+    /// "robot", "lamp"), or 0 when it is in another file or the text has
+    /// changed there since the scene parsed.
+    int lineOf(const QString& text, const CreatedAt& created, std::string_view type) const;
 
     SceneDocument* document_ = nullptr;
     Playback* playback_ = nullptr;

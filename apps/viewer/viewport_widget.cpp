@@ -146,7 +146,7 @@ void ViewportWidget::mouseReleaseEvent(QMouseEvent* event) {
     dragFrom_.reset();
     setCursor(Qt::OpenHandCursor);
     if (click)
-        if (const auto point = imagePointAt(event->position())) emit clicked(*point);
+        if (const auto point = imagePointAt(event->position())) emit clicked(*point, event->modifiers());
 }
 
 void ViewportWidget::wheelEvent(QWheelEvent* event) {

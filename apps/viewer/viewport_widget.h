@@ -63,8 +63,9 @@ class ViewportWidget : public QWidget {
    signals:
     /// The render size or the view camera changed: render again.
     void viewChanged();
-    /// A click (not a drag) on the picture at `imagePoint` (pixels of image()).
-    void clicked(QPointF imagePoint);
+    /// A click (not a drag) on the picture at `imagePoint` (pixels of image()),
+    /// with the keyboard modifiers held at its release.
+    void clicked(QPointF imagePoint, Qt::KeyboardModifiers modifiers);
 
    protected:
     void paintEvent(QPaintEvent* event) override;

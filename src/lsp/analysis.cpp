@@ -5,6 +5,7 @@
 #include "core/parse/language.h"
 #include "core/parse/lexer.h"
 #include "core/scene/models.h"
+#include "lsp/model_types.h"
 
 namespace f2::lsp {
 
@@ -21,6 +22,58 @@ bool contains(const TokenSpan& span, std::size_t lineIndex, std::size_t byte, st
     if (span.loc.line != static_cast<int>(lineIndex) + 1) return false;
     const std::size_t begin = bomBytes + static_cast<std::size_t>(span.loc.column - 1);
     return byte >= begin && byte <= begin + static_cast<std::size_t>(span.length);
+}
+
+/// A part or a shape named inside the `/model` block around `p`, once the
+/// parser has indexed that block (SPEC 10.1): a `/part`'s name or parent, or
+/// either half of a `part.shape` argument.
+template <typename RangeInLine>
+bool modelMemberAt(const Analysis& a, Position p, std::size_t byte, const RangeInLine& rangeInLine,
+                   SymbolAt& at) {
+    const std::string_view line = a.document.line(p.line);
+    LineTokens tokens;
+    tokenizeLine(line, tokens);
+    if (tokens.count < 2) return false;
+    const std::string_view command = tokens.tokens[0].text;
+    const bool isPart = command == "/part";
+    const bool namesShape = command == "/sphere" || command == "/cylinder" || command == "/box" ||
+                            command == "/paint" || command == "/material" || command == "/checker";
+    if (!isPart && !namesShape) return false;
+    const auto block = modelBlockAt(a.document, p.line);
+    if (!block) return false;
+    const auto known = findModel(a, block->type);
+    if (!known || !known->indexed || !a.inDocument(known->indexed->command) ||
+        known->indexed->command.line != block->line + 1)
+        return false;
+    const ModelType& model = *known->type;
+    auto on = [&](int token, std::size_t from, std::size_t length) {
+        const auto begin = static_cast<std::size_t>(tokens.tokens[std::size_t(token)].column - 1) + from;
+        return byte >= begin && byte <= begin + length ? std::optional(begin) : std::nullopt;
+    };
+    auto set = [&](SymbolAt::Kind kind, int part, int shape, std::size_t begin, std::size_t length) {
+        at = {kind, 0, part, {}, rangeInLine(begin, begin + length), block->type, shape};
+        return true;
+    };
+    if (isPart) {
+        for (int token = 1; token <= 2 && token < tokens.count; ++token) {
+            const std::string_view word = tokens.tokens[std::size_t(token)].text;
+            const int part = model.partIndex(word);
+            if (const auto begin = on(token, 0, word.size()); begin && part >= 0)
+                return set(SymbolAt::Kind::ModelPart, part, -1, *begin, word.size());
+        }
+        return false;
+    }
+    const std::string_view word = tokens.tokens[1].text;
+    const std::size_t dot = word.find('.');
+    if (dot == std::string_view::npos) return false;
+    const int part = model.partIndex(word.substr(0, dot));
+    if (part < 0) return false;
+    if (const auto begin = on(1, 0, dot)) return set(SymbolAt::Kind::ModelPart, part, -1, *begin, dot);
+    const std::string_view shapeName = word.substr(dot + 1);
+    const int shape = model.shapeIndex(part, shapeName);
+    if (const auto begin = on(1, dot + 1, shapeName.size()); begin && shape >= 0)
+        return set(SymbolAt::Kind::ModelShape, part, shape, *begin, shapeName.size());
+    return false;
 }
 
 }  // namespace
@@ -156,7 +209,17 @@ std::optional<PartSuffix> partAfter(const Analysis& a, const TokenSpan& name, st
     const std::string_view word = line.substr(dot + 1, end - dot - 1);
     const int part = model->partIndex(word);
     if (part < 0) return std::nullopt;
-    return PartSuffix{part, dot + 1, end};
+    PartSuffix suffix{part, dot + 1, end};
+    if (end < line.size() && line[end] == '.') {
+        std::size_t shapeEnd = end + 1;
+        while (shapeEnd < line.size() && isNameChar(line[shapeEnd])) ++shapeEnd;
+        suffix.shape = model->shapeIndex(part, line.substr(end + 1, shapeEnd - end - 1));
+        if (suffix.shape >= 0) {
+            suffix.shapeBegin = end + 1;
+            suffix.shapeEnd = shapeEnd;
+        }
+    }
+    return suffix;
 }
 
 SymbolAt symbolAt(const Analysis& a, Position p) {
@@ -167,20 +230,33 @@ SymbolAt symbolAt(const Analysis& a, Position p) {
     const auto lineIndex = static_cast<std::size_t>(p.line);
     const std::size_t bom = p.line == 0 && a.document.text().starts_with("\xEF\xBB\xBF") ? 3 : 0;
 
+    const std::string_view lineText = a.document.line(p.line);
+    auto rangeInLine = [&](std::size_t begin, std::size_t end) {
+        return Range{{p.line, utf16Length(lineText.substr(0, begin))},
+                     {p.line, utf16Length(lineText.substr(0, end))}};
+    };
     auto onName = [&](const TokenSpan& span, std::size_t object) {
         if (!a.inDocument(span.loc) || !contains(span, lineIndex, byte, bom)) {
             // The part after `name.` belongs to the same object.
             if (a.inDocument(span.loc) && span.loc.line == p.line + 1) {
-                if (const auto suffix = partAfter(a, span, object);
-                    suffix && byte >= suffix->begin && byte <= suffix->end) {
-                    const std::string_view line = a.document.line(p.line);
+                const auto suffix = partAfter(a, span, object);
+                if (suffix && byte >= suffix->begin && byte <= suffix->end) {
                     at = {SymbolAt::Kind::Part,
                           object,
                           suffix->part,
                           {},
-                          {{p.line, utf16Length(line.substr(0, suffix->begin))},
-                           {p.line, utf16Length(line.substr(0, suffix->end))}},
+                          rangeInLine(suffix->begin, suffix->end),
                           {}};
+                    return true;
+                }
+                if (suffix && suffix->shape >= 0 && byte >= suffix->shapeBegin && byte <= suffix->shapeEnd) {
+                    at = {SymbolAt::Kind::Shape,
+                          object,
+                          suffix->part,
+                          {},
+                          rangeInLine(suffix->shapeBegin, suffix->shapeEnd),
+                          {},
+                          suffix->shape};
                     return true;
                 }
             }
@@ -190,11 +266,6 @@ SymbolAt symbolAt(const Analysis& a, Position p) {
         return true;
     };
     // A variable (also inside the braces of a name such as s{i}), or the path of an /include.
-    const std::string_view lineText = a.document.line(p.line);
-    auto rangeInLine = [&](std::size_t begin, std::size_t end) {
-        return Range{{p.line, utf16Length(lineText.substr(0, begin))},
-                     {p.line, utf16Length(lineText.substr(0, end))}};
-    };
     for (const VariableOccurrence* v : a.ownVariables()) {
         if (v->line == p.line && byte >= v->begin && byte <= v->end) {
             at.kind = SymbolAt::Kind::Variable;
@@ -227,6 +298,8 @@ SymbolAt symbolAt(const Analysis& a, Position p) {
         if (use.light ? onLight(use.name, use.object) : onName(use.name, use.object)) return at;
     }
 
+    if (modelMemberAt(a, p, byte, rangeInLine, at)) return at;
+
     // A command word, or `camera` as an argument (SPEC 9.1: no object has that name).
     LineTokens tokens;
     tokenizeLine(a.document.line(p.line), tokens);
@@ -243,11 +316,26 @@ SymbolAt symbolAt(const Analysis& a, Position p) {
         const Token& first = tokens.tokens[0];
         const std::size_t begin = static_cast<std::size_t>(first.column - 1);
         if (first.text.starts_with('/') && byte >= begin && byte <= begin + first.text.size()) {
-            const std::string_view line = a.document.line(p.line);
-            at.kind = SymbolAt::Kind::Command;
-            at.command = first.text;
-            at.range = {{p.line, utf16Length(line.substr(0, begin))},
-                        {p.line, utf16Length(line.substr(0, begin + first.text.size()))}};
+            at.range = rangeInLine(begin, begin + first.text.size());
+            // `/lamp l1 …`: an instance of a model type the scene defines (SPEC 10.1).
+            if (!findCommand(first.text) && findModel(a, first.text.substr(1))) {
+                at.kind = SymbolAt::Kind::Model;
+                at.text = first.text.substr(1);
+            } else {
+                at.kind = SymbolAt::Kind::Command;
+                at.command = first.text;
+            }
+            return at;
+        }
+        // The type's name after `/model`.
+        if (first.text == "/model" && tokens.count > 1) {
+            const Token& type = tokens.tokens[1];
+            const auto typeBegin = static_cast<std::size_t>(type.column - 1);
+            if (byte >= typeBegin && byte <= typeBegin + type.text.size()) {
+                at.kind = SymbolAt::Kind::Model;
+                at.text = type.text;
+                at.range = rangeInLine(typeBegin, typeBegin + type.text.size());
+            }
         }
     }
     return at;

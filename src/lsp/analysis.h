@@ -84,12 +84,29 @@ Analysis analyze(std::string uri, TextDocument document, const SourceOverlay& op
 
 /// What is under a position.
 struct SymbolAt {
-    enum class Kind { None, Command, Object, Part, Variable, Include, Camera, Light } kind = Kind::None;
-    std::size_t object = 0;    ///< Object and Part: index into index.objects; Light: into index.lights
-    int part = -1;             ///< Part: index among the model's parts
+    /// Shape: `name.part.shape` (SPEC 10.1); Model: a model type's name, after
+    /// `/model` or as an instance's command word (`/lamp`); ModelPart and
+    /// ModelShape: a part or shape named inside its indexed `/model` block.
+    enum class Kind {
+        None,
+        Command,
+        Object,
+        Part,
+        Shape,
+        Variable,
+        Include,
+        Camera,
+        Light,
+        Model,
+        ModelPart,
+        ModelShape
+    } kind = Kind::None;
+    std::size_t object = 0;    ///< Object, Part and Shape: index into index.objects; Light: into index.lights
+    int part = -1;             ///< Part, Shape and ModelPart: index among the model's parts
     std::string_view command;  ///< Command: its name
-    Range range;               ///< the token (or the name or part within it)
-    std::string text;          ///< Variable: its name; Include: the path as written
+    Range range;               ///< the token (or the name, part or shape within it)
+    std::string text;  ///< Variable: its name; Include: the path as written; Model and members: the type
+    int shape = -1;    ///< Shape and ModelShape: index among the model's shapes
 };
 
 SymbolAt symbolAt(const Analysis& a, Position p);
@@ -104,10 +121,13 @@ std::optional<std::size_t> findLight(const SymbolIndex& index, std::string_view 
 std::vector<std::size_t> keyCounts(const Analysis& a, std::size_t object);
 
 /// A part name of object `object`'s model right after `name` at a use or
-/// definition in this document: its index among the parts and byte range in the line.
+/// definition in this document: its index among the parts and byte range in
+/// the line, and the shape after it (`name.part.shape`) if one is named.
 struct PartSuffix {
     int part = -1;
     std::size_t begin = 0, end = 0;  ///< bytes in the line
+    int shape = -1;
+    std::size_t shapeBegin = 0, shapeEnd = 0;
 };
 std::optional<PartSuffix> partAfter(const Analysis& a, const TokenSpan& name, std::size_t object);
 

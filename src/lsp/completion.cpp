@@ -1,5 +1,8 @@
-// textDocument/completion: commands (as snippets), object names, parts after
-// `name.`, interpolation modes, `camera` — what fits the argument under the cursor.
+// textDocument/completion: commands (as snippets) and the scene's model types
+// as commands, object names, parts after `name.` and shapes after
+// `name.part.`, interpolation modes and key properties, `camera`; inside a
+// `/model` block its commands, parts and shapes — what fits the argument
+// under the cursor.
 #include <algorithm>
 #include <filesystem>
 
@@ -9,6 +12,7 @@
 #include "core/scene/models.h"
 #include "core/scene/scene_desc.h"
 #include "lsp/features.h"
+#include "lsp/model_types.h"
 
 namespace f2::lsp {
 
@@ -65,9 +69,19 @@ std::vector<const IndexedObject*> visibleObjects(const Analysis& a, int beforeLi
     return out;
 }
 
-/// `colour ${1:255} ${2:255} ${3:255}`, `intensity …`, `d …`: the key properties.
-void addKeyProperties(Json& items, const Range& replace) {
+/// The key properties (SPEC 10.3) a `/key` target has, judged from its text:
+/// the camera its zoom, a named light its intensity, a shape (`name.part.shape`)
+/// and anything else its colour and visibility.
+bool hasProperty(const Analysis& a, std::string_view target, KeyProperty property) {
+    if (target == kCameraName) return property == KeyProperty::Zoom;
+    if (findLight(a.index, target)) return property == KeyProperty::Intensity;
+    return property == KeyProperty::Colour || property == KeyProperty::Visible;
+}
+
+/// `colour ${1:255} ${2:255} ${3:255}`, `intensity …`, `d …`: the key properties of `target`.
+void addKeyProperties(Json& items, const Analysis& a, std::string_view target, const Range& replace) {
     for (const KeyPropertySpec& p : keyProperties()) {
+        if (!hasProperty(a, target, p.property)) continue;
         std::string snippet(p.word);
         for (int k = 0; k < p.numbers; ++k)
             snippet += " ${" + std::to_string(k + 1) + ":" + (p.numbers == 3 ? "255" : "1") + "}";
@@ -126,6 +140,96 @@ void addChannels(Json& items, const Analysis& a, std::string_view target, const 
                                    : c == DriveChannel::Intensity ? "drive the light's intensity"
                                                                   : "drive a colour channel (0..255)";
         items.push_back(item(word, kCompletionField, detail, replace, word));
+    }
+}
+
+/// After `name.part.`: the shapes of that part (SPEC 10.1), which take looks and colour keys.
+void addShapes(Json& items, const Analysis& a, std::string_view objectName, std::string_view partName,
+               const Range& replace, std::string_view prefix, int beforeLine) {
+    for (const IndexedObject* o : visibleObjects(a, beforeLine)) {
+        if (o->object.name != objectName || !o->object.model) continue;
+        const ModelType& model = *o->object.model;
+        const int part = model.partIndex(partName);
+        for (const ModelShape& shape : model.shapes) {
+            if (part < 0 || shape.part != part) continue;
+            const std::string text = std::string(prefix) + shape.name;
+            items.push_back(
+                item(text, kCompletionField,
+                     std::string(shapeKindName(shape.kind)) + " of " + model.name + " " + o->object.name,
+                     replace, text));
+        }
+        return;
+    }
+}
+
+/// After `/`: the scene's model types defined above (or in other files), as
+/// commands that make an instance.
+void addModelCommands(Json& items, const Analysis& a, const Range& replace, int beforeLine) {
+    for (const IndexedModel& m : a.index.models) {
+        if (!m.type || (a.inDocument(m.command) && m.command.line >= beforeLine)) continue;
+        const std::string word = "/" + m.type->name;
+        Json j = item(word, kCompletionClass, word + " <name> <px> <py> <pz> [<rx> <ry> <rz>]", replace,
+                      word + " ${1:name} ${2:0} ${3:0} ${4:0}", true);
+        std::string parts;
+        for (const ModelPart& part : m.type->parts) parts += (parts.empty() ? "" : ", ") + part.name;
+        j["documentation"] = {
+            {"kind", "markdown"},
+            {"value", "An instance of the model `" + m.type->name + "` (parts " + parts + ")."}};
+        items.push_back(std::move(j));
+    }
+}
+
+/// The commands that may stand inside a `/model` block (SPEC 10.1), their
+/// first argument a shape of the model.
+Json blockCommandItems(const Range& replace) {
+    using enum CommandId;
+    static constexpr CommandId kInBlock[] = {Part,    Sphere, Cylinder, Box,    Paint,  Material,
+                                             Checker, End,    Let,      Repeat, Include};
+    Json items = Json::array();
+    for (CommandId id : kInBlock) {
+        const CommandSpec& doc = command(id);
+        std::string snippet(doc.snippet);
+        for (std::string_view placeholder : {"${1:name}", "${1:target}"}) {
+            if (const std::size_t at = snippet.find(placeholder); at != std::string::npos)
+                snippet.replace(at, placeholder.size(), "${1:part.shape}");
+        }
+        Json j = item(doc.name, kCompletionKeyword, doc.syntax, replace, snippet, true);
+        j["documentation"] = {{"kind", "markdown"}, {"value", std::string(doc.meaning)}};
+        items.push_back(std::move(j));
+    }
+    return items;
+}
+
+/// An argument inside a `/model` block: a `/part`'s parent, a shape's
+/// `part.` and the shapes that looks name. Nothing when another kind of
+/// argument is typed (the caller goes on).
+std::optional<Json> blockArgumentItems(const ModelBlock& block, const CommandSpec& doc, int arg,
+                                       const Range& replace) {
+    Json items = Json::array();
+    auto add = [&](const std::string& text, std::string_view detail) {
+        items.push_back(item(text, kCompletionField, detail, replace, text));
+    };
+    const std::string of = " of " + block.type;
+    switch (doc.id) {
+        case CommandId::Part:
+            if (arg != 1) return std::nullopt;
+            add(std::string(kRootName), "the model's own frame");
+            for (const std::string& part : block.parts) add(part, "part" + of);
+            return items;
+        case CommandId::Sphere:
+        case CommandId::Cylinder:
+        case CommandId::Box:
+            if (arg != 0) return std::nullopt;
+            for (const std::string& part : block.parts) add(part + ".", "a shape on the part " + part + of);
+            return items;
+        case CommandId::Paint:
+        case CommandId::Material:
+        case CommandId::Checker:
+            if (arg != 0) return std::nullopt;
+            for (const std::string& shape : block.shapes) add(shape, "shape" + of);
+            return items;
+        default:
+            return std::nullopt;
     }
 }
 
@@ -212,25 +316,36 @@ Json completion(const Analysis& a, Position p) {
         return expressionItems(a, p, line, static_cast<std::size_t>(byteLong), drive);
     }
 
+    const int lineNumber = p.line + 1;
+    const std::optional<ModelBlock> block = modelBlockAt(a.document, p.line);
     if (typing->index == 0) {
+        if (block) return blockCommandItems(replace);
         for (const CommandSpec& doc : commands()) {
             Json j = item(doc.name, kCompletionKeyword, doc.syntax, replace, doc.snippet, true);
             j["documentation"] = {{"kind", "markdown"}, {"value", std::string(doc.meaning)}};
             items.push_back(std::move(j));
         }
+        addModelCommands(items, a, replace, lineNumber);
         return items;
     }
     const CommandSpec* doc = findCommand(typing->command);
     if (!doc) return items;
     const int arg = typing->index - 1;
     const ArgKind kind = doc->argumentKind(arg);
-    const int lineNumber = p.line + 1;
+    if (block) {
+        if (auto inBlock = blockArgumentItems(*block, *doc, arg, replace)) return std::move(*inBlock);
+    }
 
-    // After `name.`: the parts of that model.
+    // After `name.`: the parts of that model; after `name.part.`: that part's shapes.
     const std::size_t dot = typing->partial.find('.');
     if (dot != std::string_view::npos && (kind == ArgKind::Target || kind == ArgKind::PointOrTarget)) {
         const std::string_view name = typing->partial.substr(0, dot);
-        addParts(items, a, name, replace, typing->partial.substr(0, dot + 1), lineNumber);
+        if (const std::size_t second = typing->partial.find('.', dot + 1); second != std::string_view::npos) {
+            addShapes(items, a, name, typing->partial.substr(dot + 1, second - dot - 1), replace,
+                      typing->partial.substr(0, second + 1), lineNumber);
+        } else {
+            addParts(items, a, name, replace, typing->partial.substr(0, dot + 1), lineNumber);
+        }
         return items;
     }
     switch (kind) {
@@ -261,7 +376,7 @@ Json completion(const Analysis& a, Position p) {
             }
             break;
         case ArgKind::Part:
-            if (arg == 1) {
+            if (arg == 1 && doc->id == CommandId::Anim) {
                 LineTokens tokens;
                 tokenizeLine(line, tokens);
                 if (tokens.count > 1) addParts(items, a, tokens.tokens[1].text, replace, "", lineNumber);
@@ -273,9 +388,13 @@ Json completion(const Analysis& a, Position p) {
         case ArgKind::Number:
             // A /key may end with a mode after the target or after the six numbers.
             // …or a property word (SPEC 10.3) and its values.
+            // A shape takes no pose, so no mode after it (SPEC 10.1).
             if (doc->id == CommandId::Key && arg == 2) {
-                addModes(items, replace);
-                addKeyProperties(items, replace);
+                LineTokens tokens;
+                tokenizeLine(line, tokens);
+                const std::string_view target = tokens.tokens[2].text;
+                if (std::count(target.begin(), target.end(), '.') < 2) addModes(items, replace);
+                addKeyProperties(items, a, target, replace);
             }
             break;
         case ArgKind::Path:

@@ -1,9 +1,9 @@
 // textDocument/hover: a command's syntax and meaning; an object's kind, where
-// it is created, its parts and keys and its pose at frame 0; a part's shape and
-// pivot; the camera's line, keys, look-at, attachment and pose at frame 0; a
-// named light's line, mount, keys and place at frame 0; a `/drive`'s value at
-// frame 0; a variable's
-// definition; an include's file.
+// it is created, its keys, its model's part tree and its pose at frame 0; a
+// part's shapes and pivot; a shape; a model type's part tree; the camera's
+// line, keys, look-at, attachment and pose at frame 0; a named light's line,
+// mount, keys and place at frame 0; a `/drive`'s value at frame 0; a
+// variable's definition; an include's file.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -18,6 +18,7 @@
 #include "core/parse/lexer.h"
 #include "core/scene/models.h"
 #include "lsp/features.h"
+#include "lsp/model_types.h"
 
 namespace f2::lsp {
 
@@ -42,6 +43,32 @@ std::string shapeText(ShapeKind kind, const Vec3& size) {
             return "box " + number(size.x) + " × " + number(size.y) + " × " + number(size.z);
     }
     return {};
+}
+
+/// "cylinder r 4, h 120 centred at (0, 60, 0)", its turn and whether it keeps its colour.
+std::string shapeLine(const ModelShape& s) {
+    std::string text = shapeText(s.kind, s.size) + " centred at " + vec(s.centre);
+    if (s.turn) text += ", turned " + vec(s.rotation);
+    return s.ownColor ? text + " (keeps its colour)" : text;
+}
+
+/// A model's parts as a Markdown tree: each part with its pivot and rest
+/// rotation, then its shapes and its children, `indent` spaces in.
+void addPartTree(std::string& text, const ModelType& model, int parent, std::size_t indent) {
+    for (std::size_t i = 0; i < model.parts.size(); ++i) {
+        const ModelPart& part = model.parts[i];
+        if (part.parent != parent) continue;
+        text += std::string(indent, ' ') + "- `" + part.name + "`" + (parent < 0 ? " on the root" : "") +
+                ", pivot " + vec(part.pivot);
+        if (part.rest) text += ", rest rotation " + vec(part.restRotation);
+        text += "\n";
+        for (const ModelShape& s : model.shapes) {
+            if (s.part != static_cast<int>(i)) continue;
+            text +=
+                std::string(indent + 2, ' ') + "- `" + part.name + "." + s.name + "`: " + shapeLine(s) + "\n";
+        }
+        addPartTree(text, model, static_cast<int>(i), indent + 2);
+    }
 }
 
 std::string placeText(const Analysis& a, const SourceLoc& loc) {
@@ -69,14 +96,14 @@ std::string objectHover(const Analysis& a, std::size_t index) {
     text += "- keys: " + std::to_string(keys[0]);
     if (o.model) {
         text += " (own)";
-        std::string parts;
-        for (std::size_t i = 0; i < o.model->parts.size(); ++i) {
+        for (std::size_t i = 0; i < o.model->parts.size(); ++i)
             text += ", " + o.model->parts[i].name + " " + std::to_string(keys[i + 1]);
-            parts += (i > 0 ? ", " : "") + o.model->parts[i].name;
-        }
-        text += "\n- parts: " + parts;
     }
     text += "\n";
+    if (o.model) {
+        text += "- parts of " + o.model->name + ":\n";
+        addPartTree(text, *o.model, -1, 2);
+    }
     // The pose at frame 0 needs the keys, which only a scene without errors has.
     if (a.result.ok() && index < a.result.scene->objects.size()) {
         const SceneObject& parsed = a.result.scene->objects[index];
@@ -89,24 +116,76 @@ std::string objectHover(const Analysis& a, std::size_t index) {
     return text;
 }
 
+/// A part of a model: its pivot and rest rotation, its shapes.
+std::string partFacts(const ModelType& model, int part) {
+    const ModelPart& mp = model.parts[static_cast<std::size_t>(part)];
+    const std::string parent =
+        mp.parent < 0 ? "the root" : model.parts[static_cast<std::size_t>(mp.parent)].name;
+    std::string text = "- pivot " + vec(mp.pivot) + " in " + parent + "'s frame";
+    if (mp.rest) text += ", rest rotation " + vec(mp.restRotation);
+    text += "\n";
+    for (const ModelShape& s : model.shapes) {
+        if (s.part == part) text += "- `" + s.name + "`: " + shapeLine(s) + "\n";
+    }
+    return text;
+}
+
+/// Where a part (or, with `shape`, a shape) of a model the scene defines is written.
+std::string memberPlace(const Analysis& a, const ModelType& model, int member, bool shape) {
+    const IndexedModel* m = indexedModelOf(a, &model);
+    if (!m) return {};
+    const auto& spans = shape ? m->shapes : m->parts;
+    if (member < 0 || std::size_t(member) >= spans.size()) return {};
+    return (shape ? "- created at " : "- declared at ") + placeText(a, spans[std::size_t(member)].loc) + "\n";
+}
+
 std::string partHover(const Analysis& a, std::size_t index, int part) {
     const SceneObject& o = a.index.objects[index].object;
     if (!o.model) return "**part** of `" + o.name + "`\n";
     const ModelType& model = *o.model;
     const ModelPart& mp = model.parts[static_cast<std::size_t>(part)];
     std::string text = "**part** `" + o.name + "." + mp.name + "` of " + model.name + " `" + o.name + "`\n";
-    const std::string parent =
-        mp.parent < 0 ? "the root" : model.parts[static_cast<std::size_t>(mp.parent)].name;
-    text += "- pivot " + vec(mp.pivot) + " in " + parent + "'s frame";
-    if (mp.rest) text += ", rest rotation " + vec(mp.restRotation);
-    text += "\n";
-    for (const ModelShape& s : model.shapes) {
-        if (s.part != part) continue;
-        text += "- `" + s.name + "`: " + shapeText(s.kind, s.size) + " centred at " + vec(s.centre) +
-                (s.ownColor ? " (keeps its colour)" : "") + "\n";
-    }
+    text += partFacts(model, part);
     const auto keys = keyCounts(a, index);
     text += "- keys: " + std::to_string(keys[static_cast<std::size_t>(part + 1)]) + "\n";
+    return text + memberPlace(a, model, part, false);
+}
+
+/// `name.part.shape` (SPEC 10.1): its kind, size and place on its part.
+std::string shapeHover(const Analysis& a, std::size_t index, int shape) {
+    const SceneObject& o = a.index.objects[index].object;
+    const ModelType& model = *o.model;
+    const ModelShape& s = model.shapes[static_cast<std::size_t>(shape)];
+    const std::string& part = model.parts[static_cast<std::size_t>(s.part)].name;
+    return "**shape** `" + o.name + "." + part + "." + s.name + "` of " + model.name + " `" + o.name +
+           "`\n- " + shapeLine(s) + " in " + part + "'s frame\n" + memberPlace(a, model, shape, true);
+}
+
+/// A part or a shape named inside its `/model` block.
+std::string modelMemberHover(const Analysis& a, const SymbolAt& at) {
+    const auto known = findModel(a, at.text);
+    if (!known) return {};
+    const ModelType& model = *known->type;
+    if (at.kind == SymbolAt::Kind::ModelPart) {
+        return "**part** `" + model.parts[std::size_t(at.part)].name + "` of the model `" + model.name +
+               "`\n" + partFacts(model, at.part) + memberPlace(a, model, at.part, false);
+    }
+    const ModelShape& s = model.shapes[std::size_t(at.shape)];
+    const std::string& part = model.parts[std::size_t(s.part)].name;
+    return "**shape** `" + part + "." + s.name + "` of the model `" + model.name + "`\n- " + shapeLine(s) +
+           " in " + part + "'s frame\n" + memberPlace(a, model, at.shape, true);
+}
+
+/// A model type (SPEC 10.1): where it is defined and its part tree.
+std::string modelHover(const Analysis& a, const std::string& name) {
+    const auto known = findModel(a, name);
+    if (!known) return "**model** `" + name + "`: its block has no `/end` yet, or errors\n";
+    std::string text = "**model** `" + name + "`";
+    text += known->indexed ? ", defined at " + placeText(a, known->indexed->command) + "\n"
+                           : ", built in (SPEC 5)\n";
+    text += "- " + std::to_string(known->type->parts.size()) + " parts, " +
+            std::to_string(known->type->shapes.size()) + " shapes:\n";
+    addPartTree(text, *known->type, -1, 2);
     return text;
 }
 
@@ -303,14 +382,24 @@ Json hover(const Analysis& a, Position p) {
         case SymbolAt::Kind::Command: {
             const CommandSpec* doc = findCommand(at.command);
             if (!doc) return nullptr;
-            return markdown("```f2\n" + std::string(doc->syntax) + "\n```\n" + std::string(doc->meaning) +
-                                (doc->id == CommandId::Drive ? driveHover(a, p.line + 1) : ""),
-                            at.range);
+            std::string text = "```f2\n" + std::string(doc->syntax) + "\n```\n" + std::string(doc->meaning);
+            if (doc->id == CommandId::Drive) text += driveHover(a, p.line + 1);
+            // The robot and the human are models too (SPEC 10.1): their trees.
+            if (doc->id == CommandId::Robot || doc->id == CommandId::Human)
+                text += "\n\n" + modelHover(a, std::string(doc->name.substr(1)));
+            return markdown(std::move(text), at.range);
         }
         case SymbolAt::Kind::Object:
             return markdown(objectHover(a, at.object), at.range);
         case SymbolAt::Kind::Part:
             return markdown(partHover(a, at.object, at.part), at.range);
+        case SymbolAt::Kind::Shape:
+            return markdown(shapeHover(a, at.object, at.shape), at.range);
+        case SymbolAt::Kind::Model:
+            return markdown(modelHover(a, at.text), at.range);
+        case SymbolAt::Kind::ModelPart:
+        case SymbolAt::Kind::ModelShape:
+            return markdown(modelMemberHover(a, at), at.range);
         case SymbolAt::Kind::Variable:
             return markdown(variableHover(a, at.text, p.line), at.range);
         case SymbolAt::Kind::Include:

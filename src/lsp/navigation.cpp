@@ -1,6 +1,8 @@
 // Go to definition, find references and rename of object names (every place
-// the parser saw the name) and of variables (every place the text has it), in
-// this document, the files it includes and an open file that includes it.
+// the parser saw the name), of model types (their `/model` and instances) and
+// of variables (every place the text has it), in this document, the files it
+// includes and an open file that includes it; definition of a model's parts
+// and shapes (`name.part`, `name.part.shape`).
 #include <cstdint>
 #include <map>
 #include <set>
@@ -8,6 +10,7 @@
 
 #include "core/parse/language.h"
 #include "lsp/features.h"
+#include "lsp/model_types.h"
 
 namespace f2::lsp {
 
@@ -110,6 +113,60 @@ Json renameVariable(const Analysis& a, const std::string& name, const std::strin
     return workspaceEdit(places, newName);
 }
 
+/// The definitions of a model type's name (the word after `/model`) and its
+/// uses (`lamp` in each instance's `/lamp`), each place once; none for the
+/// robot and the human, which no line defines.
+std::vector<TokenSpan> modelOccurrences(const Analysis& a, const std::string& type, bool includeDefinition) {
+    std::vector<TokenSpan> out;
+    const auto known = findModel(a, type);
+    if (!known || !known->indexed) return out;
+    std::set<Place> seen;
+    auto add = [&](const TokenSpan& s) {
+        if (seen.insert(placeOf(s)).second) out.push_back(s);
+    };
+    if (includeDefinition) add(known->indexed->name);
+    for (const IndexedObject& o : a.index.objects) {
+        if (o.object.model.get() != known->type) continue;
+        SourceLoc word = o.command;
+        word.column += 1;  // after the '/'
+        add({word, static_cast<int>(type.size())});
+    }
+    return out;
+}
+
+/// A `/part` or a shape of a model the scene defines, from a target
+/// (`name.part`, `name.part.shape`) or from inside its block; nothing for the
+/// robot's and the human's.
+std::optional<TokenSpan> modelMemberDefinition(const Analysis& a, const SymbolAt& at) {
+    const bool onTarget = at.kind == SymbolAt::Kind::Part || at.kind == SymbolAt::Kind::Shape;
+    const auto known = onTarget ? std::nullopt : findModel(a, at.text);
+    const IndexedModel* m = onTarget ? indexedModelOf(a, a.index.objects[at.object].object.model.get())
+                            : known  ? known->indexed
+                                     : nullptr;
+    if (!m) return std::nullopt;
+    const bool shape = at.kind == SymbolAt::Kind::Shape || at.kind == SymbolAt::Kind::ModelShape;
+    const auto& spans = shape ? m->shapes : m->parts;
+    const int member = shape ? at.shape : at.part;
+    if (member < 0 || std::size_t(member) >= spans.size()) return std::nullopt;
+    return spans[std::size_t(member)];
+}
+
+Json renameModel(const Analysis& a, const std::string& type, const std::string& newName) {
+    if (findCommand("/" + newName) || newName == kRootName || newName == kCameraName) {
+        throw RequestError(kRequestFailed,
+                           "'" + newName + "' is a word of the language and cannot name a model");
+    }
+    if (newName != type && findModel(a, newName)) {
+        throw RequestError(kRequestFailed, "a model named '" + newName + "' already exists");
+    }
+    const auto places = modelOccurrences(a, type, true);
+    if (places.empty())
+        throw RequestError(kRequestFailed, "'" + type + "' is built in and cannot be renamed");
+    std::vector<Json> locations;
+    for (const TokenSpan& s : places) locations.push_back(locationOf(a, s));
+    return workspaceEdit(locations, newName);
+}
+
 }  // namespace
 
 Json definition(const Analysis& a, Position p) {
@@ -121,14 +178,28 @@ Json definition(const Analysis& a, Position p) {
     if (at.kind == SymbolAt::Kind::Include) {
         return location(uriFromPath(resolveInclude(a.path, at.text)), Range{});
     }
+    if (at.kind == SymbolAt::Kind::Model) {
+        const auto known = findModel(a, at.text);
+        return known && known->indexed ? locationOf(a, known->indexed->name) : Json();
+    }
+    if (at.kind == SymbolAt::Kind::Part || at.kind == SymbolAt::Kind::Shape ||
+        at.kind == SymbolAt::Kind::ModelPart || at.kind == SymbolAt::Kind::ModelShape) {
+        const auto member = modelMemberDefinition(a, at);
+        return member ? locationOf(a, *member) : Json();
+    }
     const auto named = namedAt(a, p);
     if (!named) return nullptr;
     return locationOf(a, definitionOf(a, *named));
 }
 
 Json references(const Analysis& a, Position p, bool includeDeclaration) {
-    if (const SymbolAt at = symbolAt(a, p); at.kind == SymbolAt::Kind::Variable) {
-        return variableReferences(a, at.text, includeDeclaration);
+    const SymbolAt at = symbolAt(a, p);
+    if (at.kind == SymbolAt::Kind::Variable) return variableReferences(a, at.text, includeDeclaration);
+    if (at.kind == SymbolAt::Kind::Model) {
+        Json out = Json::array();
+        for (const TokenSpan& s : modelOccurrences(a, at.text, includeDeclaration))
+            out.push_back(locationOf(a, s));
+        return out;
     }
     const auto named = namedAt(a, p);
     if (!named) return nullptr;
@@ -140,6 +211,14 @@ Json references(const Analysis& a, Position p, bool includeDeclaration) {
 Json prepareRename(const Analysis& a, Position p) {
     const SymbolAt at = symbolAt(a, p);
     if (at.kind == SymbolAt::Kind::Variable) return {{"range", toJson(at.range)}, {"placeholder", at.text}};
+    if (at.kind == SymbolAt::Kind::Model) {
+        if (const auto known = findModel(a, at.text); !known || !known->indexed) return nullptr;
+        // On `/lamp` the name is the word without its '/'.
+        Range range = at.range;
+        if (range.end.character - range.start.character > static_cast<int>(at.text.size()))
+            ++range.start.character;
+        return {{"range", toJson(range)}, {"placeholder", at.text}};
+    }
     const auto named = namedAt(a, p);
     if (!named) return nullptr;
     return {{"range", toJson(at.range)}, {"placeholder", nameOf(a, *named)}};
@@ -153,10 +232,13 @@ Json rename(const Analysis& a, Position p, const std::string& newName) {
     }
     if (const SymbolAt at = symbolAt(a, p); at.kind == SymbolAt::Kind::Variable) {
         return renameVariable(a, at.text, newName);
+    } else if (at.kind == SymbolAt::Kind::Model) {
+        return renameModel(a, at.text, newName);
     }
     const auto named = namedAt(a, p);
     if (!named)
-        throw RequestError(kRequestFailed, "there is no object, light or variable name here to rename");
+        throw RequestError(kRequestFailed,
+                           "there is no object, light, model or variable name here to rename");
     const std::string& oldName = nameOf(a, *named);
     if (newName == "camera") {
         throw RequestError(kRequestFailed, "'camera' names the scene camera and cannot be an object's name");

@@ -1,5 +1,6 @@
-// textDocument/documentSymbol (objects with their parts and key counts, the
-// camera, lights) and textDocument/foldingRange (`/repeat` … `/end` blocks).
+// textDocument/documentSymbol (objects with their parts and key counts, model
+// types with their parts, the camera, lights) and textDocument/foldingRange
+// (`/repeat` and `/model` blocks).
 #include <algorithm>
 
 #include "core/parse/lexer.h"
@@ -59,6 +60,40 @@ Json documentSymbols(const Analysis& a) {
         }
         entries.push_back({entry.command.line - 1, std::move(symbol)});
     }
+    const std::vector<BlockLines> blocks = blocksOf(a.document);
+    for (const IndexedModel& m : a.index.models) {
+        if (!m.type || !a.inDocument(m.command)) continue;
+        const int line = m.command.line - 1;
+        // The whole block, so that its parts' lines are inside it.
+        Range whole = a.document.lineRange(line);
+        for (const BlockLines& b : blocks) {
+            if (b.model && b.start == line) whole.end = a.document.lineRange(b.end).end;
+        }
+        Json parts = Json::array();
+        for (std::size_t p = 0; p < m.type->parts.size() && p < m.parts.size(); ++p) {
+            if (!a.inDocument(m.parts[p].loc)) continue;  // from an `/include` inside the block
+            const ModelPart& part = m.type->parts[p];
+            std::string detail = part.parent < 0 ? std::string("on root")
+                                                 : "on " + m.type->parts[std::size_t(part.parent)].name;
+            for (const ModelShape& shape : m.type->shapes) {
+                if (shape.part == static_cast<int>(p)) detail += ", " + shape.name;
+            }
+            const Range selection = a.rangeOf(m.parts[p]);
+            parts.push_back({{"name", part.name},
+                             {"detail", std::move(detail)},
+                             {"kind", kSymbolField},
+                             {"range", toJson(a.document.lineRange(selection.start.line))},
+                             {"selectionRange", toJson(selection)}});
+        }
+        entries.push_back({line,
+                           {{"name", m.type->name},
+                            {"detail", "model, " + std::to_string(m.type->parts.size()) + " parts, " +
+                                           std::to_string(m.type->shapes.size()) + " shapes"},
+                            {"kind", kSymbolClass},
+                            {"range", toJson(whole)},
+                            {"selectionRange", toJson(a.rangeOf(m.name))},
+                            {"children", std::move(parts)}}});
+    }
     for (const IndexedCommand& c : a.index.commands) {
         if (!a.inDocument(c.loc)) continue;
         const int line = c.loc.line - 1;
@@ -80,20 +115,10 @@ Json documentSymbols(const Analysis& a) {
 
 Json foldingRanges(const Analysis& a) {
     Json out = Json::array();
-    std::vector<int> open;  // lines of the `/repeat`s not closed yet
-    LineTokens tokens;
-    for (int i = 0; i < a.document.lineCount(); ++i) {
-        tokenizeLine(a.document.line(i), tokens);
-        if (tokens.count == 0) continue;
-        const std::string_view command = tokens.tokens[0].text;
-        if (command == "/repeat") {
-            open.push_back(i);
-        } else if (command == "/end" && !open.empty()) {
-            const int start = open.back();
-            open.pop_back();
-            // The fold keeps `/end` visible, as an editor keeps a closing bracket.
-            if (i - 1 > start) out.push_back({{"startLine", start}, {"endLine", i - 1}, {"kind", "region"}});
-        }
+    for (const BlockLines& b : blocksOf(a.document)) {
+        // The fold keeps `/end` visible, as an editor keeps a closing bracket.
+        if (b.closed && b.end - 1 > b.start)
+            out.push_back({{"startLine", b.start}, {"endLine", b.end - 1}, {"kind", "region"}});
     }
     return out;
 }

@@ -30,6 +30,26 @@ std::string_view firstWord(std::string_view line, std::size_t& end) {
 
 }  // namespace
 
+std::vector<BlockLines> blocksOf(const TextDocument& doc) {
+    std::vector<BlockLines> out, open;
+    for (int i = 0; i < doc.lineCount(); ++i) {
+        std::size_t wordEnd = 0;
+        const std::string_view command = firstWord(withoutComment(doc.line(i)), wordEnd);
+        if (command == "/repeat" || command == "/model") {
+            open.push_back({i, i, command == "/model", false});
+        } else if (command == "/end" && !open.empty()) {
+            out.push_back({open.back().start, i, open.back().model, true});
+            open.pop_back();
+        }
+    }
+    while (!open.empty()) {
+        out.push_back(
+            {open.back().start, std::max(open.back().start, doc.lineCount() - 1), open.back().model, false});
+        open.pop_back();
+    }
+    return out;
+}
+
 bool insideExpression(std::string_view line, std::size_t byte) {
     const std::string_view code = withoutComment(line);
     int depth = 0;

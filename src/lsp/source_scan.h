@@ -46,6 +46,16 @@ std::optional<IncludePath> includeOn(const TextDocument& doc, int line);
 /// An include's file: relative paths from the directory of `documentPath`.
 std::string resolveInclude(std::string_view documentPath, std::string_view path);
 
+/// A `/repeat` or `/model` block of the document: the lines of its opening
+/// command and of its `/end` (the last line when the `/end` is missing).
+struct BlockLines {
+    int start = 0, end = 0;  ///< 0-based
+    bool model = false;      ///< a `/model` block (SPEC 10.1)
+    bool closed = false;     ///< its `/end` is there
+};
+/// Every block of the document, in the order their `/end`s close them.
+std::vector<BlockLines> blocksOf(const TextDocument& doc);
+
 /// True when byte `byte` of `line` is inside `( … )` or `{ … }` (not in a comment).
 bool insideExpression(std::string_view line, std::size_t byte);
 

@@ -881,6 +881,201 @@ TEST(NamedLights, CompletionHoverDefinitionReferencesAndRename) {
               "- intensity keys: 0\n- at frame 0: intensity 0.2\n");
 }
 
+// SPEC 10.1: a model type of the scene, an instance, its parts and shapes.
+constexpr const char* kLamp =
+    "/model lamp\n"                        // 0
+    "/part base root 0 0 0\n"              // 1
+    "/part arm base 0 10 0 0 0 30\n"       // 2
+    "/cylinder base.foot 40 10 0 5 0\n"    // 3
+    "/sphere arm.bulb 8 0 -5 0\n"          // 4
+    "/paint arm.bulb 255 255 180\n"        // 5
+    "/end\n"                               // 6
+    "/lamp l1 0 0 0\n"                     // 7
+    "/key 0 l1.arm\n"                      // 8
+    "/key 4 l1.arm.bulb colour 0 0 255\n"  // 9
+    "/robot r 0 0 0\n"                     // 10
+    "/key 0 r.head\n";                     // 11
+
+std::vector<std::string> labelsOf(const Json& items) {
+    std::vector<std::string> labels;
+    for (const Json& i : items) labels.push_back(i["label"]);
+    return labels;
+}
+
+const Json* itemLabelled(const Json& items, std::string_view label) {
+    for (const Json& i : items) {
+        if (i["label"] == label) return &i;
+    }
+    return nullptr;
+}
+
+TEST(Models, CompletionOfTypesPartsShapesAndProperties) {
+    // After `/`: the scene's types defined above, as commands that make an instance.
+    const Analysis a = analysed(std::string("/\n") + kLamp +
+                                "/\n/key 0 l1.\n/key 0 l1.arm.\n/key 0 l1.arm.bulb \n"
+                                "/key 0 l1 \n");
+    EXPECT_EQ(itemLabelled(completion(a, {0, 1}), "/lamp"), nullptr);
+    const Json commandsBelow = completion(a, {13, 1});
+    const Json* lamp = itemLabelled(commandsBelow, "/lamp");
+    ASSERT_NE(lamp, nullptr);
+    EXPECT_EQ((*lamp)["kind"], kCompletionClass);
+    EXPECT_EQ((*lamp)["detail"], "/lamp <name> <px> <py> <pz> [<rx> <ry> <rz>]");
+    EXPECT_EQ((*lamp)["textEdit"]["newText"], "/lamp ${1:name} ${2:0} ${3:0} ${4:0}");
+    EXPECT_EQ((*lamp)["textEdit"]["range"], toJson(Range{{13, 0}, {13, 1}}));
+    EXPECT_EQ((*lamp)["documentation"]["value"], "An instance of the model `lamp` (parts base, arm).");
+    EXPECT_EQ(commandsBelow.size(), commands().size() + 1);
+    // `name.`: the parts; `name.part.`: that part's shapes.
+    EXPECT_EQ(labelsOf(completion(a, {14, 10})), (std::vector<std::string>{"l1.base", "l1.arm"}));
+    const Json shapes = completion(a, {15, 14});
+    ASSERT_EQ(shapes.size(), 1u);
+    EXPECT_EQ(shapes[0]["label"], "l1.arm.bulb");
+    EXPECT_EQ(shapes[0]["detail"], "sphere of lamp l1");
+    EXPECT_EQ(shapes[0]["textEdit"]["range"], toJson(Range{{15, 7}, {15, 14}}));
+    // After a shape only its properties (no pose, so no mode); after an instance modes too.
+    EXPECT_EQ(labelsOf(completion(a, {16, 19})), (std::vector<std::string>{"colour", "visible"}));
+    const auto instance = labelsOf(completion(a, {17, 10}));
+    EXPECT_EQ(instance.front(), "linear");
+    EXPECT_EQ(std::vector<std::string>(instance.end() - 2, instance.end()),
+              (std::vector<std::string>{"colour", "visible"}));
+}
+
+TEST(Models, CompletionInsideAModelBlock) {
+    const Analysis a = analysed(
+        "/model desk\n"           // 0
+        "/part top root 0 0 0\n"  // 1
+        "/box top.plate 9 1 9 0 0 0\n"
+        "/\n"              // 3
+        "/part leg \n"     // 4
+        "/sphere \n"       // 5
+        "/paint \n"        // 6
+        "/repeat i 1 2\n"  // 7
+        "/end\n"           // 8
+        "/\n"              // 9: still in the block
+        "/end\n"           // 10
+        "/\n");            // 11
+    const std::vector<std::string> inBlock{"/part",  "/sphere",   "/cylinder", "/box",
+                                           "/paint", "/material", "/checker",  "/end",
+                                           "/let",   "/repeat",   "/include"};
+    const Json commandsIn = completion(a, {3, 1});
+    EXPECT_EQ(labelsOf(commandsIn), inBlock);
+    EXPECT_EQ((*itemLabelled(commandsIn, "/sphere"))["textEdit"]["newText"],
+              "/sphere ${1:part.shape} ${2:r} ${3:0} ${4:0} ${5:0}");
+    EXPECT_EQ((*itemLabelled(commandsIn, "/paint"))["textEdit"]["newText"],
+              "/paint ${1:part.shape} ${2:200} ${3:200} ${4:200}");
+    EXPECT_EQ(labelsOf(completion(a, {9, 1})), inBlock);
+    EXPECT_GT(completion(a, {11, 1}).size(), inBlock.size());  // after the block: every command
+    // A part's parent: root and the parts declared above.
+    const Json parents = completion(a, {4, 10});
+    EXPECT_EQ(labelsOf(parents), (std::vector<std::string>{"root", "top"}));
+    EXPECT_EQ(parents[1]["detail"], "part of desk");
+    // The parts as the text declares them, finished or not.
+    EXPECT_EQ(labelsOf(completion(a, {5, 8})), (std::vector<std::string>{"top.", "leg."}));
+    EXPECT_EQ(labelsOf(completion(a, {6, 7})), (std::vector<std::string>{"top.plate"}));
+}
+
+TEST(Models, HoverShowsThePartTree) {
+    const Analysis a = analysed(kLamp);
+    ASSERT_TRUE(a.result.ok()) << a.result.diagnostics.front().message;
+    const std::string tree =
+        "  - `base` on the root, pivot (0, 0, 0)\n"
+        "    - `base.foot`: cylinder r 40, h 10 centred at (0, 5, 0)\n"
+        "    - `arm`, pivot (0, 10, 0), rest rotation (0, 0, 30)\n"
+        "      - `arm.bulb`: sphere r 8 centred at (0, -5, 0) (keeps its colour)\n";
+    const std::string model = "**model** `lamp`, defined at line 1\n- 2 parts, 2 shapes:\n" + tree;
+    // On the instance's command word and on the type after `/model`.
+    EXPECT_EQ(hover(a, {7, 2})["contents"]["value"], model);
+    EXPECT_EQ(hover(a, {7, 2})["range"], toJson(Range{{7, 0}, {7, 5}}));
+    EXPECT_EQ(hover(a, {0, 8})["contents"]["value"], model);
+    EXPECT_EQ(hover(a, {0, 8})["range"], toJson(Range{{0, 7}, {0, 11}}));
+    // On the instance: its keys and the tree.
+    const std::string instance = hover(a, {8, 8})["contents"]["value"];
+    EXPECT_NE(instance.find("**lamp** `l1`, created at line 8"), std::string::npos) << instance;
+    EXPECT_NE(instance.find("- keys: 0 (own), base 0, arm 1\n- parts of lamp:\n" + tree), std::string::npos)
+        << instance;
+    // On a part and on a shape.
+    EXPECT_EQ(
+        hover(a, {8, 11})["contents"]["value"],
+        "**part** `l1.arm` of lamp `l1`\n- pivot (0, 10, 0) in base's frame, rest rotation (0, 0, 30)\n"
+        "- `bulb`: sphere r 8 centred at (0, -5, 0) (keeps its colour)\n- keys: 1\n- declared at line 3\n");
+    const Json shape = hover(a, {9, 16});
+    EXPECT_EQ(
+        shape["contents"]["value"],
+        "**shape** `l1.arm.bulb` of lamp `l1`\n- sphere r 8 centred at (0, -5, 0) (keeps its colour) in "
+        "arm's frame\n- created at line 5\n");
+    EXPECT_EQ(shape["range"], toJson(Range{{9, 14}, {9, 18}}));
+    // The robot is a model too: its tree, and no line defines it.
+    const std::string robot = hover(a, {11, 9})["contents"]["value"];
+    EXPECT_EQ(robot.rfind("**part** `r.head` of robot `r`\n", 0), 0u) << robot;
+    EXPECT_EQ(robot.find("declared at"), std::string::npos) << robot;
+    const std::string robotCommand = hover(a, {10, 2})["contents"]["value"];
+    EXPECT_NE(robotCommand.find("\n\n**model** `robot`, built in (SPEC 5)\n- 4 parts, 6 shapes:\n"
+                                "  - `body` on the root, pivot (0, -105, 0)\n"),
+              std::string::npos)
+        << robotCommand;
+}
+
+TEST(Models, DefinitionReferencesAndRenameOfTypes) {
+    const Analysis a = analysed(kLamp);
+    // From `/lamp` to the type's name after `/model`; from a part and a shape to their lines.
+    EXPECT_EQ(definition(a, {7, 2}), location(a.uri, Range{{0, 7}, {0, 11}}));
+    EXPECT_EQ(definition(a, {8, 11}), location(a.uri, Range{{2, 6}, {2, 9}}));
+    EXPECT_EQ(definition(a, {9, 16}), location(a.uri, Range{{4, 8}, {4, 16}}));
+    EXPECT_EQ(definition(a, {8, 8}), location(a.uri, Range{{7, 6}, {7, 8}}));  // the instance's name
+    // The robot's parts have no line.
+    EXPECT_TRUE(definition(a, {11, 9}).is_null());
+    EXPECT_EQ(references(a, {0, 8}, true),
+              Json::array({location(a.uri, Range{{0, 7}, {0, 11}}), location(a.uri, Range{{7, 1}, {7, 5}})}));
+    EXPECT_EQ(references(a, {7, 2}, false), Json::array({location(a.uri, Range{{7, 1}, {7, 5}})}));
+    EXPECT_EQ(prepareRename(a, {7, 2}),
+              Json({{"range", toJson(Range{{7, 1}, {7, 5}})}, {"placeholder", "lamp"}}));
+    const Json edit = rename(a, {7, 2}, "light");
+    ASSERT_EQ(edit["changes"][a.uri].size(), 2u);
+    EXPECT_EQ(edit["changes"][a.uri][1],
+              Json({{"range", toJson(Range{{7, 1}, {7, 5}})}, {"newText", "light"}}));
+    EXPECT_THROW(rename(a, {7, 2}, "box"), RequestError);    // a command
+    EXPECT_THROW(rename(a, {7, 2}, "robot"), RequestError);  // a type already
+    EXPECT_TRUE(prepareRename(a, {10, 2}).is_null());        // `/robot` is a command
+}
+
+TEST(Models, PartsAndShapesInsideTheirBlock) {
+    const Analysis a = analysed(kLamp);
+    // A parent, the part of `part.shape` and its shape lead to their lines.
+    EXPECT_EQ(definition(a, {2, 11}), location(a.uri, Range{{1, 6}, {1, 10}}));
+    EXPECT_EQ(definition(a, {5, 8}), location(a.uri, Range{{2, 6}, {2, 9}}));
+    EXPECT_EQ(definition(a, {5, 12}), location(a.uri, Range{{4, 8}, {4, 16}}));
+    EXPECT_EQ(definition(a, {4, 13}), location(a.uri, Range{{4, 8}, {4, 16}}));
+    const Json part = hover(a, {2, 7});
+    EXPECT_EQ(part["contents"]["value"],
+              "**part** `arm` of the model `lamp`\n- pivot (0, 10, 0) in base's frame, rest rotation (0, 0, "
+              "30)\n- `bulb`: sphere r 8 centred at (0, -5, 0) (keeps its colour)\n- declared at line 3\n");
+    EXPECT_EQ(part["range"], toJson(Range{{2, 6}, {2, 9}}));
+    const Json shape = hover(a, {5, 12});
+    EXPECT_EQ(
+        shape["contents"]["value"],
+        "**shape** `arm.bulb` of the model `lamp`\n- sphere r 8 centred at (0, -5, 0) (keeps its colour) "
+        "in arm's frame\n- created at line 5\n");
+    EXPECT_EQ(shape["range"], toJson(Range{{5, 11}, {5, 15}}));
+    EXPECT_TRUE(hover(a, {1, 11}).is_null());  // `root` is no part
+}
+
+TEST(Models, OutlineAndFolding) {
+    const Analysis a = analysed(kLamp);
+    const Json symbols = documentSymbols(a);
+    ASSERT_EQ(symbols.size(), 3u);
+    EXPECT_EQ(symbols[0]["name"], "lamp");
+    EXPECT_EQ(symbols[0]["detail"], "model, 2 parts, 2 shapes");
+    EXPECT_EQ(symbols[0]["kind"], kSymbolClass);
+    EXPECT_EQ(symbols[0]["range"], toJson(Range{{0, 0}, {6, 4}}));
+    EXPECT_EQ(symbols[0]["selectionRange"], toJson(Range{{0, 7}, {0, 11}}));
+    ASSERT_EQ(symbols[0]["children"].size(), 2u);
+    EXPECT_EQ(symbols[0]["children"][1]["name"], "arm");
+    EXPECT_EQ(symbols[0]["children"][1]["detail"], "on base, bulb");
+    EXPECT_EQ(symbols[0]["children"][1]["selectionRange"], toJson(Range{{2, 6}, {2, 9}}));
+    EXPECT_EQ(symbols[1]["name"], "l1");
+    EXPECT_EQ(symbols[1]["detail"], "lamp, 0 keys");
+    EXPECT_EQ(foldingRanges(a), Json::parse(R"([{"startLine":0,"endLine":5,"kind":"region"}])"));
+}
+
 std::string body(const Json& j) { return j.dump(); }
 
 TEST(Server, AnswersGarbageWithErrorsAndNeverThrows) {

@@ -250,7 +250,17 @@ def main():
                      "**robot** `r1`, created at line 3:\n"
                      "```f2\n/robot r1 0 0 200 0 180 0\n```\n"
                      "- keys: 1 (own), body 0, head 0, lhand 1, rhand 0\n"
-                     "- parts: body, head, lhand, rhand\n"
+                     "- parts of robot:\n"
+                     "  - `body` on the root, pivot (0, -105, 0)\n"
+                     "    - `body.torso`: cylinder r 40, h 150 centred at (0, 75, 0)\n"
+                     "    - `head`, pivot (0, 150, 0)\n"
+                     "      - `head.face`: box 60 × 50 × 50 centred at (0, 25, 0)\n"
+                     "      - `head.leye`: sphere r 6 centred at (-14, 30, 25) (keeps its colour)\n"
+                     "      - `head.reye`: sphere r 6 centred at (14, 30, 25) (keeps its colour)\n"
+                     "    - `lhand`, pivot (-52, 140, 0)\n"
+                     "      - `lhand.arm`: cylinder r 10, h 100 centred at (0, -50, 0)\n"
+                     "    - `rhand`, pivot (52, 140, 0)\n"
+                     "      - `rhand.arm`: cylinder r 10, h 100 centred at (0, -50, 0)\n"
                      "- at frame 0: position (0, 0, 200), rotation (0, 135, 0)\n"}})
 
     # Definition from a use in `r1.head` (line 7).

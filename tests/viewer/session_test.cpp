@@ -46,6 +46,7 @@ class SessionTest : public QObject {
     void editedTextBecomesThePicture();
     void keyCameraHereWritesTheCameraKey();
     void pickNamesTheLineAndKeysTheSelection();
+    void pickOfAModelsShapeNamesItsPartAndLines();
 };
 
 void SessionTest::initTestCase() {
@@ -151,6 +152,57 @@ void SessionTest::pickNamesTheLineAndKeysTheSelection() {
     QVERIFY(!session.pick({1, 1}, camera));
     QVERIFY(!session.selection());
     QVERIFY(!session.selectionView());
+}
+
+void SessionTest::pickOfAModelsShapeNamesItsPartAndLines() {
+    StudioSession session;
+    QVERIFY(showText(session, kLampScene));
+    const QString text = kLampScene;
+    const SceneDesc& scene = *session.document()->scene();
+    // Click the middle of the bulb, the arm's only shape.
+    EvaluatedFrame frame0;
+    evaluateFrame(scene, 0, frame0);
+    const Bounds bulb = selectionBounds(scene, frame0, 0, 1);
+    const Vec3 centre = (bulb.lo + bulb.hi) * 0.5f;
+    const Camera camera = Camera::fromDesc(scene.camera);
+    float px = 0, py = 0;
+    QVERIFY(camera.project(centre, px, py));
+    QVERIFY(session.pick({px, py}, camera));
+    QCOMPARE(session.selection()->target(), QStringLiteral("l1.arm"));
+    QCOMPARE(session.selection()->shape, std::optional(1));
+    // The outline is the part's (its shapes'), its keys the part's.
+    QCOMPARE(session.selectionView()->bounds.lo, bulb.lo);
+    QCOMPARE(session.selectionView()->bounds.hi, bulb.hi);
+    QCOMPARE(session.selectionView()->keyFrames, (QList<int>{0, 10}));
+    // A click goes to the instance's line, a Ctrl+click to the shape's line in the model.
+    QCOMPARE(session.creatingLine(text).line, 11);
+    const StudioSession::CreatingLine shape = session.shapeLine(text);
+    QCOMPARE(shape.line, 9);
+    QCOMPARE(shape.message, QStringLiteral("l1.arm.bulb: line 9, in the /model lamp block"));
+    // Edited since: the line no longer names the shape.
+    QString edited = text;
+    edited.replace("/sphere arm.bulb", "/sphere arm.lamp");
+    QCOMPARE(session.shapeLine(edited).line, 0);
+
+    // Key Selection Here writes the part's key: after its last key, halfway along.
+    session.playback()->seek(5);
+    QCOMPARE(applied(text, session.keySelectionHere(text)).split('\n').value(13),
+             QStringLiteral("/key 5 l1.arm 0 0 0 0 0 -20"));
+    // A part without keys: its first key goes after the instance's line.
+    session.setSelection(Selection{"l1", 0, "base", std::nullopt});
+    QCOMPARE(applied(text, session.keySelectionHere(text)).split('\n').value(11),
+             QStringLiteral("/key 5 l1.base 0 0 0 0 0 0"));
+
+    // The robot's shapes are built in: its creating line, and a message saying why.
+    session.setSelection(Selection{"r", 1, "head", 2});
+    QCOMPARE(session.creatingLine(text).line, 14);
+    const StudioSession::CreatingLine eye = session.shapeLine(text);
+    QCOMPARE(eye.line, 14);
+    QCOMPARE(eye.message,
+             QStringLiteral("r.head.leye is built into the robot model: no line of the scene defines it"));
+    // A part the model no longer has is no selection.
+    session.setSelection(Selection{"r", 1, "neck", std::nullopt});
+    QVERIFY(!session.selection());
 }
 
 QTEST_MAIN(SessionTest)

@@ -39,6 +39,24 @@ inline constexpr const char* kSmallScene = R"(/camera 96 72 0.6 0 0 -10
 /key 10 ball 3 0 8 0 0 0
 )";
 
+/// SPEC 10.1: a model of the scene (a lamp: a foot on its base, a bulb on its
+/// arm), an instance whose arm is keyed, and a robot out of sight.
+inline constexpr const char* kLampScene = R"(/camera 96 72 0.6 0 0 -10
+/background 20 30 40
+/amb_light 0.3
+/dir_light 0.8 0.3 -0.5 1
+/model lamp
+/part base root 0 0 0
+/part arm base 0 2 0 0 0 30
+/box base.foot 4 1 4 0 0 0
+/sphere arm.bulb 1.5 0 2 0
+/end
+/lamp l1 0 -2 8
+/key 0 l1.arm
+/key 10 l1.arm 0 0 0 0 0 -40
+/robot r 300 0 50
+)";
+
 /// Writes kSmallScene as scene.f2 in `dir`; returns its path.
 QString smallSceneFile(const QTemporaryDir& dir);
 

@@ -26,8 +26,10 @@
 
 #include "animation_exporter.h"
 #include "autosave.h"
+#include "core/anim/frame_builder.h"
 #include "core/anim/frame_time.h"
 #include "core/parse/parser.h"
+#include "core/render/pick.h"
 #include "core/render/renderer.h"
 #include "editor_dock.h"
 #include "help_windows.h"
@@ -67,6 +69,7 @@ class ViewerTest : public QObject {
     void dialogsStartInTheScenesFolder();
     void helpMenuListsShortcutsAndReference();
     void clickSelectsWhatIsDrawn();
+    void ctrlClickGoesToTheShapesLine();
     void pausedPictureRefinesToAa4();
     void playbackAntialiasFitsTheBudget();
     void playingUsesTheChosenAntialias();
@@ -383,6 +386,44 @@ void ViewerTest::clickSelectsWhatIsDrawn() {
     QVERIFY(!w.viewport()->selectionOutline().has_value());
     QVERIFY(w.selectionStatus().isEmpty());
     QVERIFY(slider->markers().isEmpty());
+}
+
+void ViewerTest::ctrlClickGoesToTheShapesLine() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("lamp.f2");
+    writeFile(path, kLampScene);
+    auto window = windowOn(path, 0);
+    QVERIFY(window);
+    MainWindow& w = *window;
+    w.editorDock()->hide();
+    w.setRenderScale(RenderScale::SceneSize);
+    QVERIFY(waitForShownFrame(w, 0));
+    // The middle of the bulb, the lamp's arm's shape, where the picture shows it.
+    const SceneDesc& scene = *w.document()->scene();
+    EvaluatedFrame frame;
+    evaluateFrame(scene, 0, frame);
+    const Bounds bulb = selectionBounds(scene, frame, 0, 1);
+    float px = 0, py = 0;
+    QVERIFY(Camera::fromDesc(scene.camera).project((bulb.lo + bulb.hi) * 0.5f, px, py));
+    const QRectF onScreen = w.viewport()->imageRect();
+    const QPoint at(int(onScreen.left() + px * onScreen.width() / 96),
+                    int(onScreen.top() + py * onScreen.height() / 72));
+
+    // A click selects the part and the instance's line; Ctrl+click the shape's line in the model.
+    QTest::mouseClick(w.viewport(), Qt::LeftButton, {}, at);
+    QCOMPARE(w.selection()->target(), QStringLiteral("l1.arm"));
+    QCOMPARE(w.editor()->textCursor().selectedText(), QStringLiteral("/lamp l1 0 -2 8"));
+    QTest::mouseClick(w.viewport(), Qt::LeftButton, Qt::ControlModifier, at);
+    QCOMPARE(w.selection()->target(), QStringLiteral("l1.arm"));
+    QCOMPARE(w.editor()->textCursor().selectedText(), QStringLiteral("/sphere arm.bulb 1.5 0 2 0"));
+    QCOMPARE(w.statusBar()->currentMessage(),
+             QStringLiteral("l1.arm.bulb: line 9, in the /model lamp block"));
+    // The outline is round the bulb alone.
+    const auto outline = w.viewport()->selectionOutline();
+    QVERIFY(outline && outline->contains(QPointF(px, py)));
+    float lx = 0, ly = 0;
+    QVERIFY(Camera::fromDesc(scene.camera).project({0, -2, 8}, lx, ly));  // the foot's centre
+    QVERIFY(!outline->contains(QPointF(lx, ly)));
 }
 
 void ViewerTest::pausedPictureRefinesToAa4() {
