@@ -1,7 +1,9 @@
 #pragma once
-/// Generated benchmark scenes `robots:N` and `spheres:N` (docs/performance.md):
-/// N animated robots or N spheres on a square grid over a floor, seen from a
-/// raised camera that fits the whole grid. They are produced as scene-language
+/// Generated benchmark scenes `robots:N`, `spheres:N` and `lamps:N`
+/// (docs/performance.md): N animated robots, N spheres or N desk lamps (a
+/// model of three parts, SPEC 10.1, each with a named point light riding on
+/// its head, 10.2) on a square grid over a floor, seen from a raised camera
+/// that fits the whole grid. They are produced as scene-language
 /// text, so the benchmark, `f2 export` and other renderers all read the same
 /// scene through the one parser.
 #include <string>
@@ -9,7 +11,7 @@
 
 namespace f2 {
 
-enum class BenchShape { Robots, Spheres };
+enum class BenchShape { Robots, Spheres, Lamps };
 
 struct BenchSceneSpec {
     BenchShape shape = BenchShape::Robots;
@@ -18,6 +20,8 @@ struct BenchSceneSpec {
 
 /// Keeps a generated scene inside the parser's 1,000,000-object limit.
 inline constexpr int kMaxBenchObjects = 1'000'000;
+/// lamps:N has one light per lamp and no other: SPEC 7's 1,000 lights.
+inline constexpr int kMaxBenchLamps = 1'000;
 /// Distance between neighbouring grid cells (centimetres).
 inline constexpr double kBenchSpacing = 150.0;
 /// Camera pitch: rx of the camera, looking down at the grid (degrees).
@@ -25,10 +29,10 @@ inline constexpr double kBenchPitchDegrees = 35.0;
 /// Frames of one full arm swing of the generated robots (keys every quarter).
 inline constexpr int kBenchSwingFrames = 48;
 
-/// Parses "robots:N" or "spheres:N"; false with a message on anything else.
+/// Parses "robots:N", "spheres:N" or "lamps:N"; false with a message on anything else.
 bool parseBenchSceneSpec(std::string_view text, BenchSceneSpec& spec, std::string& error);
 
-/// "robots:N" / "spheres:N".
+/// "robots:N" / "spheres:N" / "lamps:N".
 std::string benchSceneName(const BenchSceneSpec& spec);
 
 /// Grid of ceil(sqrt(N)) columns and ceil(N / columns) rows.
@@ -45,6 +49,9 @@ struct BenchCamera {
     double eyeX = 0, eyeY = 0, eyeZ = 0, pitch = kBenchPitchDegrees;
 };
 BenchCamera benchCamera(int count);
+
+/// The largest N of a shape: kMaxBenchLamps for lamps, else kMaxBenchObjects.
+int benchMaxCount(BenchShape shape);
 
 /// The whole scene in the scene language (SPEC 2-7) with `/camera width height`.
 std::string benchSceneText(const BenchSceneSpec& spec, int width = 800, int height = 600);
