@@ -1595,7 +1595,8 @@ class Parser : private ExpansionSink {
         building_.reset();
         if (argCount() > 0) error(argPos(0), "'/end' takes no arguments");
         if (build.type->shapes.empty()) {
-            error(build.defined, "model " + modelText(build) +
+            // "model 'm' has no shapes", or "the model has no shapes" when its name was refused.
+            error(build.defined, (build.named ? "model " : "") + modelText(build) +
                                      " has no shapes (put a '/sphere', '/cylinder' or '/box' named "
                                      "'<part>.<shape>' on one of its parts)");
         }
