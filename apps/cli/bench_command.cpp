@@ -48,7 +48,7 @@ constexpr const char* kFooter =
     "rotation (35, 0, 0), half = 75 * max(columns, rows), D = 100 + 2 * half,\n"
     "eye = (0, -5 + D sin 35deg, -D cos 35deg). lamps:N (N <= 1000): N desk lamps (a model of base, arm\n"
     "and head; base turns, arm bows, head nods) on the same grid, each with a point light on its head\n"
-    "(fade 100 2) and no other light: 1000 lamps are SPEC 7's 1000 lights. See docs/performance.md.";
+    "(0.7, fade 60 2) and no other light: 1000 lamps are SPEC 7's 1000 lights. See docs/performance.md.";
 
 int writeSceneText(const BenchArgs& args, int width, int height) {
     std::string text;
