@@ -19,7 +19,7 @@ namespace f2::cli {
 namespace {
 struct BenchArgs {
     std::string scene;      ///< file (positional)
-    std::string generated;  ///< --scene robots:N | spheres:N
+    std::string generated;  ///< --scene robots:N | spheres:N | lamps:N
     std::string size = "800x600";
     BenchSettings settings;
     double seconds = -1;  ///< -1: 3 s, or 1 s a point with --study
@@ -46,8 +46,11 @@ constexpr const char* kFooter =
     "ceil(N / C) rows, spacing 150, centred on the origin, on a box floor (top y = -105) with one cell of\n"
     "margin; ambient 0.2, one directional light 0.75 along (0.5, -1, 0.7). Camera: d = 0.5,\n"
     "rotation (35, 0, 0), half = 75 * max(columns, rows), D = 100 + 2 * half,\n"
-    "eye = (0, -5 + D sin 35deg, -D cos 35deg). drives:N: N spheres (radius 50) each driven on px and py\n"
-    "(SPEC 10.7); drivekeys:N: the same spheres with two linear keys instead. See docs/performance.md.";
+    "eye = (0, -5 + D sin 35deg, -D cos 35deg). lamps:N (N <= 1000): N desk lamps (a model of base, arm\n"
+    "and head; base turns, arm bows, head nods) on the same grid, each with a point light on its head\n"
+    "(0.7, fade 60 2) and no other light: 1000 lamps are SPEC 7's 1000 lights. drives:N: N spheres\n"
+    "(radius 50) each driven on px and py (SPEC 10.7); drivekeys:N: the same spheres with two linear keys\n"
+    "instead. See docs/performance.md.";
 
 int writeSceneText(const BenchArgs& args, int width, int height) {
     std::string text;
@@ -147,9 +150,9 @@ Command addBenchCommand(CLI::App& app) {
     auto* file = sub->add_option("scene", args->scene,
                                  "Scene file; '-' reads standard input; none = the default scene")
                      ->check(nonEmptyPath("measure the default scene"));
-    auto* generated =
-        sub->add_option("--scene", args->generated,
-                        "Generated scene robots:N or spheres:N (or drives:N, drivekeys:N) instead of a file");
+    auto* generated = sub->add_option(
+        "--scene", args->generated,
+        "Generated scene robots:N, spheres:N or lamps:N (or drives:N, drivekeys:N) instead of a file");
     file->excludes(generated);
     sub->add_option("--frame", args->settings.frame,
                     "Animation time to render, in frames; may be fractional (default 0)")
@@ -179,8 +182,9 @@ Command addBenchCommand(CLI::App& app) {
                       "mrays_per_s, peak_rss_mb, scene, size, threads, frames, ...");
     auto* study =
         sub->add_flag("--study", args->study,
-                      "Tables 4.1/4.2: FPS of robots:N and spheres:N for N = 1, 10, 100, 1000, 10000, "
-                      "100000, as Markdown on stdout, CSV and a PNG plot");
+                      "Tables 4.1/4.2/4.3: FPS of robots:N and spheres:N for N = 1, 10, 100, 1000, 10000, "
+                      "100000, and of lamps:N for those N up to 1000 (a light each), as Markdown on stdout, "
+                      "CSV and a PNG plot");
     study->excludes(file)->excludes(generated)->excludes(json);
     sub->add_option("--csv-out", args->csvOut, "With --study: CSV file (default bench_study.csv)")
         ->needs(study);

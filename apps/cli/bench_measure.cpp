@@ -204,6 +204,7 @@ BenchResult runBench(const SceneDesc& scene, const std::string& name, int width,
     result.msBuild = median(build);
     result.msTrace = median(trace);
     result.primitives = renderer.frame().primitives.size();
+    result.lights = scene.lights.size() + scene.localLights.size();
     for (const BenchFrame& f : result.perFrame) {
         result.bvhRebuilds += f.bvh.action == Bvh::UpdateAction::Rebuilt;
         result.bvhSwaps += f.bvh.action == Bvh::UpdateAction::Swapped;
@@ -231,7 +232,8 @@ std::string benchJson(const BenchResult& r) {
       << ", \"primary_rays\": " << r.rays.primary << ", \"shadow_rays\": " << r.rays.shadow
       << ", \"reflected_rays\": " << r.rays.reflected << ", \"mrays_per_s\": " << fixed(r.mraysPerSecond(), 3)
       << ", \"mrays_per_s_trace\": " << fixed(r.mraysPerSecondTrace(), 3)
-      << ", \"peak_rss_mb\": " << fixed(r.peakRssMb, 2) << "}";
+      << ", \"peak_rss_mb\": " << fixed(r.peakRssMb, 2) << ", \"lights\": " << r.lights
+      << ", \"ms_trace_per_light\": " << fixed(r.msTracePerLight(), 4) << "}";
     return j.str();
 }
 
@@ -268,6 +270,8 @@ void printBench(std::ostream& out, const BenchResult& r) {
         << "  rays        " << r.rays.primary << " primary + " << r.rays.shadow << " shadow + "
         << r.rays.reflected << " mirrored per frame: " << fixed(r.mraysPerSecond(), 1)
         << " Mrays/s over the frame, " << fixed(r.mraysPerSecondTrace(), 1) << " over trace\n"
+        << "  lights      " << r.lights << " casting shadows: trace " << fixed(r.msTracePerLight(), 3)
+        << " ms per light (median trace / lights)\n"
         << "  peak RSS    " << fixed(r.peakRssMb, 1) << " MB\n";
 }
 

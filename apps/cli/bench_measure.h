@@ -61,6 +61,9 @@ struct BenchResult {
     /// machine's doing, not the tree's.
     int bvhRebuilds = 0, bvhSwaps = 0;
     std::uint64_t bvhMaxSplitWork = 0;
+    /// Lights that cast shadow rays (directional, point and spot): a lamps:N
+    /// scene's N. Its trace time per light is msTracePerLight.
+    std::size_t lights = 0;
     RayCounts rays;  ///< of the last timed frame
     double peakRssMb = 0;
     std::vector<BenchFrame> perFrame;  ///< every timed frame, in order
@@ -68,11 +71,13 @@ struct BenchResult {
     double fps() const { return msMedian > 0 ? 1000.0 / msMedian : 0; }
     /// Rays per second over the whole frame (evaluate + build + trace).
     double mraysPerSecond() const { return msMedian > 0 ? double(rays.total()) / (msMedian * 1e3) : 0; }
+    /// Trace time (median) over the number of lights, in ms (0 without lights).
+    double msTracePerLight() const { return lights > 0 ? msTrace / double(lights) : 0; }
     /// Rays per second over the trace phase alone (the peers' usual figure).
     double mraysPerSecondTrace() const { return msTrace > 0 ? double(rays.total()) / (msTrace * 1e3) : 0; }
 };
 
-/// Parses a generated scene (robots:N, spheres:N) with its camera at width x height.
+/// Parses a generated scene (robots:N, spheres:N, lamps:N) with its camera at width x height.
 std::optional<LoadedScene> loadBenchScene(const BenchSceneSpec& spec, int width, int height);
 
 /// Runs the benchmark at width x height (each frame seen by the scene's camera

@@ -1,5 +1,6 @@
 #include "bench_study.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -22,16 +23,21 @@ std::string fixed(double v, int digits) {
     return buf;
 }
 
-const char* shapeName(BenchShape shape) { return shape == BenchShape::Robots ? "robots" : "spheres"; }
+const char* shapeName(BenchShape shape) {
+    return shape == BenchShape::Robots ? "robots" : shape == BenchShape::Spheres ? "spheres" : "lamps";
+}
 
 void printTable(std::ostream& out, const std::string& title, const char* column, BenchShape shape,
                 const std::vector<StudyPoint>& points, bool withPeer) {
+    // Lamps: each lamp is a light, so the trace time per light is the figure to watch.
+    const bool perLight = shape == BenchShape::Lamps;
     out << "\n### " << title << "\n\n"
         << "| " << column
         << " | Primitives | FPS | Frame, ms (median) | min..max, ms | Evaluate, ms | Build, ms "
-        << "| Trace, ms | Mrays/s | Peak RSS, MB |"
+        << "| Trace, ms | Mrays/s | Peak RSS, MB |" << (perLight ? " Lights | Trace per light, ms |" : "")
         << (withPeer ? " Embree peer FPS (mode) | f2 / peer |" : "")
-        << "\n|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|" << (withPeer ? "---:|---:|" : "") << "\n";
+        << "\n|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|" << (perLight ? "---:|---:|" : "")
+        << (withPeer ? "---:|---:|" : "") << "\n";
     for (const StudyPoint& p : points) {
         if (p.shape != shape) continue;
         const BenchResult& r = p.result;
@@ -39,6 +45,7 @@ void printTable(std::ostream& out, const std::string& title, const char* column,
             << fixed(r.msMedian, 2) << " | " << fixed(r.msMin, 2) << ".." << fixed(r.msMax, 2) << " | "
             << fixed(r.msEval, 2) << " | " << fixed(r.msBuild, 2) << " | " << fixed(r.msTrace, 2) << " | "
             << fixed(r.mraysPerSecond(), 1) << " | " << fixed(r.peakRssMb, 1) << " |";
+        if (perLight) out << ' ' << r.lights << " | " << fixed(r.msTracePerLight(), 3) << " |";
         if (withPeer && p.peer)
             out << ' ' << fixed(p.peer->fps, 1) << " (" << p.peer->mode << ") | "
                 << fixed(r.fps() / p.peer->fps, 2) << " |";
@@ -50,7 +57,8 @@ bool writeCsv(const std::string& path, const std::vector<StudyPoint>& points) {
     std::ofstream csv(path);
     csv << "shape,count,primitives,width,height,threads,frame,frames,fps,ms_median,ms_min,ms_max,ms_p10,ms_"
            "p90,"
-           "ms_eval,ms_build,ms_trace,primary_rays,shadow_rays,mrays_per_s,peak_rss_mb,peer_fps,peer_mode\n";
+           "ms_eval,ms_build,ms_trace,primary_rays,shadow_rays,mrays_per_s,peak_rss_mb,lights,peer_fps,peer_"
+           "mode\n";
     for (const StudyPoint& p : points) {
         const BenchResult& r = p.result;
         csv << shapeName(p.shape) << ',' << p.count << ',' << r.primitives << ',' << r.width << ','
@@ -59,7 +67,8 @@ bool writeCsv(const std::string& path, const std::vector<StudyPoint>& points) {
             << fixed(r.msP10, 4) << ',' << fixed(r.msP90, 4) << ',' << fixed(r.msEval, 4) << ','
             << fixed(r.msBuild, 4) << ',' << fixed(r.msTrace, 4) << ',' << r.rays.primary << ','
             << r.rays.shadow << ',' << fixed(r.mraysPerSecond(), 3) << ',' << fixed(r.peakRssMb, 2) << ','
-            << (p.peer ? fixed(p.peer->fps, 3) : "") << ',' << (p.peer ? p.peer->mode : "") << '\n';
+            << r.lights << ',' << (p.peer ? fixed(p.peer->fps, 3) : "") << ',' << (p.peer ? p.peer->mode : "")
+            << '\n';
     }
     csv.flush();
     return bool(csv);
@@ -94,10 +103,11 @@ bool writePlot(const std::string& path, const std::vector<StudyPoint>& points,
                             ": whole frame (evaluate + build + trace), " + std::to_string(any.width) + "x" +
                             std::to_string(any.height) + ", " + std::to_string(any.threads) + " threads")
            << '\n'
-           << "set logscale xy\nset xlabel 'N (robots or spheres)'\nset ylabel 'frames per second (median)'\n"
+           << "set logscale xy\nset xlabel 'N (robots, spheres or lamps)'\nset ylabel 'frames per second "
+              "(median)'\n"
            << "set grid\nset key bottom left\n";
     bool withPeer = false;
-    for (BenchShape shape : {BenchShape::Robots, BenchShape::Spheres}) {
+    for (BenchShape shape : {BenchShape::Robots, BenchShape::Spheres, BenchShape::Lamps}) {
         // Columns: N, f2 FPS, peer FPS ("NaN" where the peer did not run: gnuplot leaves a gap).
         script << '$' << shapeName(shape) << " << EOD\n";
         for (const StudyPoint& p : points) {
@@ -110,6 +120,10 @@ bool writePlot(const std::string& path, const std::vector<StudyPoint>& points,
     }
     script << "plot $robots using 1:2 with linespoints lw 2 pt 7 lc 1 title 'f2, robots (table 4.1)', "
               "$spheres using 1:2 with linespoints lw 2 pt 5 lc 2 title 'f2, spheres (table 4.2)'";
+    if (std::any_of(points.begin(), points.end(),
+                    [](const StudyPoint& p) { return p.shape == BenchShape::Lamps; }))
+        script << ", $lamps using 1:2 with linespoints lw 2 pt 9 lc 3 title 'f2, lamps, a light each (table "
+                  "4.3)'";
     if (withPeer)
         script << ", $robots using 1:3 with linespoints lw 2 dt 2 pt 6 lc 1 title 'Embree peer, robots', "
                   "$spheres using 1:3 with linespoints lw 2 dt 2 pt 4 lc 2 title 'Embree peer, spheres'";
@@ -125,8 +139,9 @@ bool writePlot(const std::string& path, const std::vector<StudyPoint>& points,
 
 int runStudy(const StudySettings& settings) {
     std::vector<StudyPoint> points;
-    for (BenchShape shape : {BenchShape::Robots, BenchShape::Spheres}) {
+    for (BenchShape shape : {BenchShape::Robots, BenchShape::Spheres, BenchShape::Lamps}) {
         for (int count : settings.counts) {
+            if (count > benchMaxCount(shape)) continue;  // lamps: at most 1,000 (a light each)
             BenchSceneSpec spec{shape, count};
             auto loaded = loadBenchScene(spec, settings.width, settings.height);
             if (!loaded) return 1;
@@ -137,7 +152,7 @@ int runStudy(const StudySettings& settings) {
             std::cerr << "f2 bench --study: " << result.scene << ": " << fixed(result.fps(), 1) << " FPS ("
                       << fixed(result.msMedian, 2) << " ms, " << result.frames << " frames)\n";
             std::optional<PeerResult> peer;
-            if (settings.peer) {
+            if (settings.peer && shape != BenchShape::Lamps) {  // the Embree peer has directional lights only
                 // After f2's measurement, so that the exported text is not part of f2's peak RSS.
                 std::string error;
                 peer = runPeer(*settings.peer, loaded->scene, settings.bench.frame,
@@ -169,6 +184,8 @@ int runStudy(const StudySettings& settings) {
                points, withPeer);
     printTable(std::cout, "Table 4.2. Frame rate with spheres (spheres:N)", "Spheres", BenchShape::Spheres,
                points, withPeer);
+    printTable(std::cout, "Table 4.3. Frame rate with lamps, a point light each (lamps:N, N <= 1000)",
+               "Lamps", BenchShape::Lamps, points, withPeer);
 
     int code = 0;
     if (!writeCsv(settings.csvOut, points)) {

@@ -12,7 +12,7 @@ case $out in "{"*"}") ;; *) echo "FAIL: not a JSON object"; exit 1 ;; esac
 if command -v python3 >/dev/null; then
   python3 -c 'import json,sys; json.loads(sys.argv[1])' "$out" || { echo "FAIL: invalid JSON"; exit 1; }
 fi
-for key in scene size threads frames fps ms_median ms_min ms_max mrays_per_s ms_eval ms_build ms_trace cpu_ms cpu_ms_max bvh_rebuilds bvh_swaps bvh_max_split_work reflected_rays peak_rss_mb; do
+for key in scene size threads frames fps ms_median ms_min ms_max mrays_per_s ms_eval ms_build ms_trace cpu_ms cpu_ms_max bvh_rebuilds bvh_swaps bvh_max_split_work reflected_rays peak_rss_mb lights ms_trace_per_light; do
   grep -q "\"$key\": " <<<"$out" || { echo "FAIL: no key $key"; exit 1; }
 done
 number() { sed -n "s/.*\"$1\": \([-0-9.e+]*\).*/\1/p" <<<"$out"; }

@@ -853,6 +853,18 @@ TEST(ParserError, ReportsEveryErrorAndKeepsNoScene) {
              }));
 }
 
+TEST(ParserError, AModelWithARefusedNameAndNoShapesSaysSoPlainly) {
+    // A refused type name and an empty block: two errors, the second without
+    // a name to show ("the model has no shapes", not "model the model ...").
+    ParseResult r = parseScene("/model robot\n/end\n/model lamp\n/end\n", kFile);
+    std::vector<std::string> got;
+    for (const Diagnostic& d : r.diagnostics) got.push_back(d.format());
+    ASSERT_EQ(got.size(), 3u) << dump(r);
+    EXPECT_EQ(got[0].rfind("t.f2:1:1: error: the model has no shapes (put a", 0), 0u) << got[0];
+    EXPECT_EQ(got[1].rfind("t.f2:1:8: error: 'robot' is a built-in model type", 0), 0u) << got[1];
+    EXPECT_EQ(got[2].rfind("t.f2:3:1: error: model 'lamp' has no shapes (put a", 0), 0u) << got[2];
+}
+
 TEST(ParserError, WarningsAloneKeepTheScene) {
     ParseResult r = parseScene("/sphere s 1 0 0 0\n/key 1 s\n/key 1 s\n", kFile);
     EXPECT_TRUE(r.ok());

@@ -215,6 +215,14 @@ TEST(PrimaryBins, ImagesAreThoseOfTheTreeWalk) {
             expectSameImages(gallery, t, cameraAt(gallery, t).resized(160, 120), 2, 1,
                              std::string(name) + " at " + std::to_string(t));
     }
+    // Models (SPEC 10.1) with spot lights riding on their heads (10.2), keys in seconds (10.4).
+    for (const char* name :
+         {"gallery/desk_lamps.f2", "gallery/windmill.f2", "gallery/clock.f2", "gallery/explainer.f2"}) {
+        const SceneDesc gallery = test::sceneFromRepo(name);
+        for (double t : {0.0, 29.5})
+            expectSameImages(gallery, t, cameraAt(gallery, t).resized(160, 90), 2, 1,
+                             std::string(name) + " at " + std::to_string(t));
+    }
 }
 
 TEST(PrimaryBins, AveragedImagesAreThoseOfTheTreeWalk) {

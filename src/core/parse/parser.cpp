@@ -1431,10 +1431,15 @@ class Parser : private ExpansionSink {
     /// up to the `/end` the expander pairs with it.
     void openModel() {
         building_.emplace();
-        ModelBuild& build = *building_;
-        build.type = std::make_shared<ModelType>();
-        build.defined = commandPos();
-        build.errorsBefore = errors_;
+        building_->type = std::make_shared<ModelType>();
+        building_->defined = commandPos();
+        readModelHeader(*building_);
+        // Errors from here on are in the block's lines ("no shapes" may follow from them).
+        building_->errorsBefore = errors_;
+    }
+
+    /// The `/model` line itself: the type's name and parameters.
+    void readModelHeader(ModelBuild& build) {
         // `/model <type> [<param> <default>]…` (SPEC 10.6): each default is
         // the parameter's value while the block is read here.
         if (argCount() == 0) {
@@ -1775,7 +1780,8 @@ class Parser : private ExpansionSink {
             return;
         }
         if (build.type->shapes.empty() && errors_ == build.errorsBefore) {
-            error(build.defined, "model " + modelText(build) +
+            // "model 'm' has no shapes", or "the model has no shapes" when its name was refused.
+            error(build.defined, (build.named ? "model " : "") + modelText(build) +
                                      " has no shapes (put a '/sphere', '/cylinder' or '/box' named "
                                      "'<part>.<shape>' on one of its parts)");
         }

@@ -43,7 +43,7 @@ double phaseOf(int i) { return 0.7 * double(i); }
 
 namespace {
 /// The kinds' words, in BenchShape order.
-constexpr std::array<std::string_view, 4> kShapeWords = {"robots", "spheres", "drives", "drivekeys"};
+constexpr std::array<std::string_view, 5> kShapeWords = {"robots", "spheres", "drives", "drivekeys", "lamps"};
 }  // namespace
 
 bool parseBenchSceneSpec(std::string_view text, BenchSceneSpec& spec, std::string& error) {
@@ -52,7 +52,7 @@ bool parseBenchSceneSpec(std::string_view text, BenchSceneSpec& spec, std::strin
     BenchSceneSpec parsed;
     const auto word = std::find(kShapeWords.begin(), kShapeWords.end(), kind);
     if (colon == std::string_view::npos || word == kShapeWords.end()) {
-        error.assign("expected robots:N or spheres:N (or drives:N, drivekeys:N), got '")
+        error.assign("expected robots:N, spheres:N or lamps:N (or drives:N, drivekeys:N), got '")
             .append(text)
             .append("'");
         return false;
@@ -61,17 +61,21 @@ bool parseBenchSceneSpec(std::string_view text, BenchSceneSpec& spec, std::strin
     std::string_view count = text.substr(colon + 1);
     const char* end = count.data() + count.size();
     auto [ptr, ec] = std::from_chars(count.data(), end, parsed.count);
-    if (count.empty() || ec != std::errc{} || ptr != end || parsed.count < 1 ||
-        parsed.count > kMaxBenchObjects) {
+    const int most = benchMaxCount(parsed.shape);
+    if (count.empty() || ec != std::errc{} || ptr != end || parsed.count < 1 || parsed.count > most) {
         error.assign("N in '")
             .append(text)
             .append("' must be a whole number 1..")
-            .append(std::to_string(kMaxBenchObjects));
+            .append(std::to_string(most));
+        if (parsed.shape == BenchShape::Lamps)
+            error.append(" (a light per lamp; at most 1000 lights, SPEC 7)");
         return false;
     }
     spec = parsed;
     return true;
 }
+
+int benchMaxCount(BenchShape shape) { return shape == BenchShape::Lamps ? kMaxBenchLamps : kMaxBenchObjects; }
 
 std::string benchSceneName(const BenchSceneSpec& spec) {
     return std::string(kShapeWords[std::size_t(spec.shape)]).append(":").append(std::to_string(spec.count));
@@ -98,25 +102,89 @@ BenchCamera benchCamera(int count) {
     return {0.0, -5.0 + distance * std::sin(pitch), -distance * std::cos(pitch), kBenchPitchDegrees};
 }
 
+namespace {
+
+/// The lamp of docs/gallery.md's desk_lamps.f2 (base, arm, head), its shapes
+/// glowing a little (`emit`): the scene has no ambient or directional light,
+/// only the lamps' own.
+constexpr std::string_view kLampModel =
+    "/model lamp\n"
+    "/part base root 0 0 0\n"
+    "/part arm base 0 22 0 20 0 0\n"
+    "/part head arm 0 120 0 -45 0 0\n"
+    "/cylinder base.foot 34 8 0 4 0\n"
+    "/cylinder base.post 6 14 0 13 0\n"
+    "/sphere arm.knob 7 0 0 0\n"
+    "/cylinder arm.rod 3.5 120 0 60 0\n"
+    "/sphere head.joint 7 0 0 0\n"
+    "/cylinder head.cap 9 14 0 -4 0\n"
+    "/cylinder head.shade 22 24 0 -20 0\n"
+    "/sphere head.bulb 9 0 -33 0\n"
+    "/paint head.bulb 255 235 170\n"
+    "/material head.bulb 0 0 0 1 emit 1\n"
+    "/material base.foot 1 1 0.3 32 emit 0.15\n"
+    "/material base.post 1 1 0.3 32 emit 0.15\n"
+    "/material arm.knob 1 1 0.3 32 emit 0.15\n"
+    "/material arm.rod 1 1 0.3 32 emit 0.15\n"
+    "/material head.joint 1 1 0.3 32 emit 0.15\n"
+    "/material head.cap 1 1 0.3 32 emit 0.15\n"
+    "/material head.shade 1 1 0.3 32 emit 0.15\n"
+    "/end\n";
+
+/// Lamp i: its light (a point light just below the bulb, riding on the head)
+/// and its keys: the base turns, the arm bows and the head nods, out of phase.
+void appendLamp(std::string& out, int i, double x, double z) {
+    const std::string lamp = "l" + std::to_string(i), light = "b" + std::to_string(i);
+    const auto& color = kPalette[std::size_t(i) & 3];
+    const double phase = phaseOf(i);
+    append(out, {"/lamp ", lamp});
+    appendNumbers(out, {x, -105, z, 0, 180, 0});
+    append(out, {"\n/paint ", lamp});
+    appendNumbers(out, {double(color[0]), double(color[1]), double(color[2])});
+    append(out, {"\n/point_light 0.7 0 -46 0 fade 60 2 name ", light, "\n/attach ", light, " ", lamp,
+                 ".head\n/interp ", lamp, ".arm spline\n/interp ", lamp, ".head ease\n/interp ", lamp,
+                 ".base ease\n"});
+    for (int k = 0; k <= 4; ++k) {
+        const std::string frame = std::to_string(k * kBenchSwingFrames / 4);
+        append(out, {"/key ", frame, " ", lamp, ".arm 0 0 0"});
+        appendNumbers(out, {15.0 * std::sin(phase + k * kPi / 2), 0, 0});
+        append(out, {"\n/key ", frame, " ", lamp, ".head 0 0 0"});
+        appendNumbers(out, {-25.0 * std::cos(phase + k * kPi / 2), 0, 0});
+        out += '\n';
+    }
+    for (int k = 0; k <= 2; ++k) {
+        append(out, {"/key ", std::to_string(k * kBenchSwingFrames / 2), " ", lamp, ".base 0 0 0 0"});
+        appendNumbers(out, {(k % 2 ? -30.0 : 30.0) * std::cos(phase), 0});
+        out += '\n';
+    }
+}
+
+}  // namespace
+
 std::string benchSceneText(const BenchSceneSpec& spec, int width, int height) {
     const bool robots = spec.shape == BenchShape::Robots;
     const bool driven = spec.shape == BenchShape::Drives || spec.shape == BenchShape::DriveKeys;
+    const bool lamps = spec.shape == BenchShape::Lamps;
     const BenchGrid grid = benchGrid(spec.count);
     const BenchCamera cam = benchCamera(spec.count);
     std::string out;
-    out.reserve(std::size_t(spec.count) * (robots ? 640 : 220) + 1024);
+    out.reserve(std::size_t(spec.count) * (robots || lamps ? 640 : 220) + 2048);
     // Built by appending pieces: GCC 12 misreports `"literal" + std::string` (-Wrestrict).
     append(out,
            {"# f2 bench --scene ", benchSceneName(spec), ": ", std::to_string(grid.columns), " x ",
             std::to_string(grid.rows), " grid, spacing ", num(kBenchSpacing), " (docs/performance.md)\n"});
     append(out, {"/camera ", std::to_string(width), " ", std::to_string(height), " 0.5"});
     appendNumbers(out, {cam.eyeX, cam.eyeY, cam.eyeZ, cam.pitch, 0, 0});
-    out += "\n/background 115 153 217\n/amb_light 0.2\n/dir_light 0.75 0.5 -1 0.7\n";
+    if (lamps)
+        out += "\n/background 20 22 30\n";  // the lamps' lights only: 1,000 lamps are SPEC 7's 1,000 lights
+    else
+        out += "\n/background 115 153 217\n/amb_light 0.2\n/dir_light 0.75 0.5 -1 0.7\n";
     // Floor: top face at y = -105, where robots stand; one cell of margin around the grid.
     out += "/box floor";
     appendNumbers(out, {grid.columns * kBenchSpacing + 2 * kBenchSpacing, 50,
                         grid.rows * kBenchSpacing + 2 * kBenchSpacing, 0, -130, 0});
-    out += "\n/paint floor 0 200 0\n";
+    out += lamps ? "\n/paint floor 150 140 120\n" : "\n/paint floor 0 200 0\n";
+    if (lamps) out += kLampModel;
     // Drives add no keys: one key of the floor (where it stands) makes the animation 0..48 long.
     if (spec.shape == BenchShape::Drives)
         append(out, {"/key ", std::to_string(kBenchSwingFrames), " floor\n"});
@@ -126,6 +194,10 @@ std::string benchSceneText(const BenchSceneSpec& spec, int width, int height) {
         const int column = i % grid.columns, row = i / grid.columns;
         const double x = (column - (grid.columns - 1) * 0.5) * kBenchSpacing;
         const double z = (row - (grid.rows - 1) * 0.5) * kBenchSpacing;
+        if (lamps) {
+            appendLamp(out, i, x, z);
+            continue;
+        }
         name.clear();
         name += robots ? 'r' : 's';
         name += std::to_string(i);

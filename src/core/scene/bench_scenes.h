@@ -1,17 +1,19 @@
 #pragma once
-/// Generated benchmark scenes `robots:N` and `spheres:N` (docs/performance.md):
-/// N animated robots or N spheres on a square grid over a floor, seen from a
-/// raised camera that fits the whole grid; `drives:N`, N spheres each driven
-/// on two channels (SPEC 10.7), and its twin `drivekeys:N`, the same spheres
-/// with two linear keys instead, to compare the cost of drives with keys'. They are produced as
-/// scene-language text, so the benchmark, `f2 export` and other renderers all read the same scene through the
-/// one parser.
+/// Generated benchmark scenes `robots:N`, `spheres:N` and `lamps:N`
+/// (docs/performance.md): N animated robots, N spheres or N desk lamps (a
+/// model of three parts, SPEC 10.1, each with a named point light riding on
+/// its head, 10.2) on a square grid over a floor, seen from a raised camera
+/// that fits the whole grid; `drives:N`, N spheres each driven on two
+/// channels (SPEC 10.7), and its twin `drivekeys:N`, the same spheres with
+/// two linear keys instead, to compare the cost of drives with keys'. They
+/// are produced as scene-language text, so the benchmark, `f2 export` and
+/// other renderers all read the same scene through the one parser.
 #include <string>
 #include <string_view>
 
 namespace f2 {
 
-enum class BenchShape { Robots, Spheres, Drives, DriveKeys };
+enum class BenchShape { Robots, Spheres, Drives, DriveKeys, Lamps };
 
 struct BenchSceneSpec {
     BenchShape shape = BenchShape::Robots;
@@ -20,6 +22,8 @@ struct BenchSceneSpec {
 
 /// Keeps a generated scene inside the parser's 1,000,000-object limit.
 inline constexpr int kMaxBenchObjects = 1'000'000;
+/// lamps:N has one light per lamp and no other: SPEC 7's 1,000 lights.
+inline constexpr int kMaxBenchLamps = 1'000;
 /// Distance between neighbouring grid cells (centimetres).
 inline constexpr double kBenchSpacing = 150.0;
 /// Camera pitch: rx of the camera, looking down at the grid (degrees).
@@ -27,11 +31,11 @@ inline constexpr double kBenchPitchDegrees = 35.0;
 /// Frames of one full arm swing of the generated robots (keys every quarter).
 inline constexpr int kBenchSwingFrames = 48;
 
-/// Parses "robots:N", "spheres:N", "drives:N" or "drivekeys:N"; false with a
-/// message on anything else.
+/// Parses "robots:N", "spheres:N", "lamps:N", "drives:N" or "drivekeys:N";
+/// false with a message on anything else.
 bool parseBenchSceneSpec(std::string_view text, BenchSceneSpec& spec, std::string& error);
 
-/// "robots:N", "spheres:N", "drives:N" or "drivekeys:N".
+/// "robots:N", "spheres:N", "lamps:N", "drives:N" or "drivekeys:N".
 std::string benchSceneName(const BenchSceneSpec& spec);
 
 /// Grid of ceil(sqrt(N)) columns and ceil(N / columns) rows.
@@ -48,6 +52,9 @@ struct BenchCamera {
     double eyeX = 0, eyeY = 0, eyeZ = 0, pitch = kBenchPitchDegrees;
 };
 BenchCamera benchCamera(int count);
+
+/// The largest N of a shape: kMaxBenchLamps for lamps, else kMaxBenchObjects.
+int benchMaxCount(BenchShape shape);
 
 /// The whole scene in the scene language (SPEC 2-7) with `/camera width height`.
 std::string benchSceneText(const BenchSceneSpec& spec, int width = 800, int height = 600);
