@@ -537,25 +537,76 @@ class GltfBuilder {
         }
     }
 
+    struct Sample {
+        double time;
+        GltfPose pose;
+    };
+
+    /// Whether LINEAR interpolation from `a` to `b` (lerp, slerp) passes
+    /// within a ten-thousandth of the scene's size and a quarter degree of
+    /// `mid`, turning at most 90° (near 180° the short way is a toss-up).
+    bool linearEnough(const GltfPose& a, const GltfPose& b, const GltfPose& mid) const {
+        float gap = 0;
+        for (int c = 0; c < 3; ++c) {
+            const float between = (a.translation[std::size_t(c)] + b.translation[std::size_t(c)]) / 2;
+            gap = std::max(gap, std::fabs(mid.translation[std::size_t(c)] - between));
+        }
+        // slerp halfway is the normalised sum (b already on a's side: continuousQuaternion).
+        double sum[4], norm = 0, dot = 0, ends = 0;
+        for (std::size_t c = 0; c < 4; ++c) ends += double(a.rotation[c]) * b.rotation[c];
+        if (ends < std::cos(kPi / 4)) return false;  // a quaternion holds half the angle
+        for (std::size_t c = 0; c < 4; ++c) {
+            sum[c] = double(a.rotation[c]) + b.rotation[c];
+            norm += sum[c] * sum[c];
+        }
+        for (std::size_t c = 0; c < 4; ++c) dot += sum[c] * mid.rotation[c];
+        const double cosQuarterDegree = std::cos(0.25 * kPi / 180 / 2);  // a quaternion holds half the angle
+        return gap <= size_ * 1e-4f && norm > 0 && std::fabs(dot) / std::sqrt(norm) >= cosQuarterDegree;
+    }
+
+    /// Samples between `a` and `b` (excluded) wherever LINEAR interpolation
+    /// would stray from the motion: easings within a frame, and turns of 180°
+    /// or more between two samples, which slerp would take the short way back.
+    void split(const MovingNode& m, const Sample& a, const Sample& b, int depth, std::vector<Sample>& out) {
+        constexpr int kMaxSplits = 5;  // at most 32 samples a frame
+        if (depth >= kMaxSplits || b.time - a.time <= 4 * kJumpFrames) return;
+        Sample mid{(a.time + b.time) / 2, gltfPoseOf(m.localAt((a.time + b.time) / 2))};
+        mid.pose.rotation = continuousQuaternion(mid.pose.rotation, a.pose.rotation);
+        Sample end = b;
+        end.pose.rotation = continuousQuaternion(b.pose.rotation, a.pose.rotation);
+        // A turn of 180° or more looks like a small one (or none) at the
+        // ends: a midpoint off the short way shows it.
+        if (linearEnough(a.pose, end.pose, mid.pose)) return;
+        split(m, a, mid, depth + 1, out);
+        out.push_back(mid);
+        split(m, mid, end, depth + 1, out);
+    }
+
     void animation() {
         for (const MovingNode& m : moving_) {
+            std::vector<Sample> samples;
+            for (double t : m.times) {
+                const Sample next{t, gltfPoseOf(m.localAt(t))};
+                if (!samples.empty() && !m.step) split(m, Sample(samples.back()), next, 0, samples);
+                samples.push_back(next);
+            }
+            for (std::size_t j = 1; j < samples.size(); ++j)
+                samples[j].pose.rotation =
+                    continuousQuaternion(samples[j].pose.rotation, samples[j - 1].pose.rotation);
+            std::vector<double> times;
             std::vector<float> translation, rotation;
-            std::array<float, 4> previous{0, 0, 0, 1};
             bool moves = false, turns = false;
-            GltfPose first;
-            for (std::size_t j = 0; j < m.times.size(); ++j) {
-                GltfPose pose = gltfPoseOf(m.localAt(m.times[j]));
-                pose.rotation = j == 0 ? pose.rotation : continuousQuaternion(pose.rotation, previous);
-                previous = pose.rotation;
-                if (j == 0) first = pose;
-                moves = moves || pose.translation != first.translation;
-                turns = turns || pose.rotation != first.rotation;
-                translation.insert(translation.end(), pose.translation.begin(), pose.translation.end());
-                rotation.insert(rotation.end(), pose.rotation.begin(), pose.rotation.end());
+            const GltfPose& first = samples.front().pose;
+            for (const Sample& sample : samples) {
+                times.push_back(sample.time);
+                moves = moves || sample.pose.translation != first.translation;
+                turns = turns || sample.pose.rotation != first.rotation;
+                translation.insert(translation.end(), sample.pose.translation.begin(), sample.pose.translation.end());
+                rotation.insert(rotation.end(), sample.pose.rotation.begin(), sample.pose.rotation.end());
             }
             setPose(m.node, m.localAt(m.times[0]));
-            if (moves) channel(m.node, "translation", m.times, translation, "VEC3", 3, m.step);
-            if (turns) channel(m.node, "rotation", m.times, rotation, "VEC4", 4, m.step);
+            if (moves) channel(m.node, "translation", times, translation, "VEC3", 3, m.step);
+            if (turns) channel(m.node, "rotation", times, rotation, "VEC4", 4, m.step);
         }
     }
 
