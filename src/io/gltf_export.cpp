@@ -601,7 +601,8 @@ class GltfBuilder {
                 times.push_back(sample.time);
                 moves = moves || sample.pose.translation != first.translation;
                 turns = turns || sample.pose.rotation != first.rotation;
-                translation.insert(translation.end(), sample.pose.translation.begin(), sample.pose.translation.end());
+                translation.insert(translation.end(), sample.pose.translation.begin(),
+                                   sample.pose.translation.end());
                 rotation.insert(rotation.end(), sample.pose.rotation.begin(), sample.pose.rotation.end());
             }
             setPose(m.node, m.localAt(m.times[0]));
