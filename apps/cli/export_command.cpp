@@ -141,7 +141,8 @@ Command addExportCommand(CLI::App& app) {
     sub->add_option("--tessellation", args->tessellation,
                     "--gltf: segments around each sphere and cylinder (default 32)")
         ->check(CLI::Range(kMinTessellation, kMaxTessellation));
-    sub->add_option("-o,--output", args->output, "Output file; '-' = standard output (default)")
+    sub->add_option("-o,--output", args->output,
+                    "Output file; '-' = standard output (default; not for --gltf)")
         ->check(nonEmptyPath("write to standard output"));
     sub->add_option("--size", args->size,
                     "Image size WIDTHxHEIGHT written into the camera (default: /camera)");

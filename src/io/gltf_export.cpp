@@ -454,19 +454,25 @@ class GltfBuilder {
         return std::string(kind) + " " + std::to_string(index + 1);
     }
 
+    /// F2 lights a colour C facing a light of intensity I as C·I (SPEC 3); a
+    /// Lambertian surface of albedo C under an illuminance E (lux) has the
+    /// radiance C·E/π. So E = π·I: a physically based viewer shows F2's values.
+    static float lux(float intensity) { return float(kPi) * intensity; }
+
     void lights() {
         for (std::size_t i = 0; i < scene_.lights.size(); ++i) {
             const DirectionalLight& l = scene_.lights[i];
             lightNode(lightName(l.motion, "dir_light", i),
-                      {{"type", "directional"}, {"intensity", number(l.intensity)}}, l.motion, Vec3{},
+                      {{"type", "directional"}, {"intensity", number(lux(l.intensity))}}, l.motion, Vec3{},
                       l.direction);
         }
         for (std::size_t i = 0; i < scene_.localLights.size(); ++i) {
             const LocalLight& l = scene_.localLights[i];
             // F2's lights do not fall off (unless faded); glTF's fall off as
-            // 1/d²: candela = I·D², with D the light's distance to the scene's centre.
+            // 1/d²: candela = π·I·D², with D the light's distance to the
+            // scene's centre, gives lux(I) there.
             const float distance = std::max(length(l.position - centre_), size_ * 1e-3f);
-            json light = {{"intensity", number(l.intensity * distance * distance)}};
+            json light = {{"intensity", number(lux(l.intensity) * distance * distance)}};
             const bool spot = l.kind == LocalLightKind::Spot;
             light["type"] = spot ? "spot" : "point";
             if (spot) {
