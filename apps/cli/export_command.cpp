@@ -65,7 +65,7 @@ int runGltfExport(const ExportArgs& args, const LoadedScene& loaded, const Camer
     options.height = camera.height;
     options.tessellation = args.tessellation;
     options.source = loaded.name;
-    if (text) options.bufferUri = binPath.substr(binPath.find_last_of('/') + 1);
+    if (text) options.bufferUri = uriOfFileName(binPath.substr(binPath.find_last_of('/') + 1));
     const GltfDocument document = gltfScene(loaded.scene, options);
     for (const std::string& w : document.warnings) std::cerr << "f2 export: warning: " << w << '\n';
     std::string error;

@@ -1,6 +1,7 @@
 #include "io/gltf_export.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstring>
@@ -693,7 +694,9 @@ class GltfBuilder {
         out.meshes = meshes_.size();
         out.materials = materials_.size();
         out.channels = channels_.size();
-        out.json = gltf.dump();
+        // Names are F2's (ASCII), but the scene's file name may be any bytes:
+        // bytes that are not UTF-8 become U+FFFD, quotes and controls are escaped.
+        out.json = gltf.dump(-1, ' ', false, json::error_handler_t::replace);
         out.warnings = std::move(warnings_);
         return out;
     }
@@ -706,6 +709,22 @@ void appendWord(std::string& out, std::uint32_t value) {
 
 GltfDocument gltfScene(const SceneDesc& scene, const GltfOptions& options) {
     return GltfBuilder(scene, options).build();
+}
+
+std::string uriOfFileName(std::string_view name) {
+    static constexpr char kHex[] = "0123456789ABCDEF";
+    std::string out;
+    for (const char c : name) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (std::isalnum(byte) || c == '-' || c == '.' || c == '_' || c == '~') {
+            out += c;
+        } else {
+            out += '%';
+            out += kHex[byte >> 4];
+            out += kHex[byte & 15];
+        }
+    }
+    return out;
 }
 
 std::string glbBytes(const GltfDocument& document) {

@@ -7,6 +7,7 @@
 /// its buffer in a .bin beside it.
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/scene/scene_desc.h"
@@ -16,8 +17,8 @@ namespace f2 {
 struct GltfOptions {
     int width = 800, height = 600;  ///< the image size the camera's aspect ratio and yfov come from
     int tessellation = 32;          ///< segments around a sphere or cylinder (tessellate.h)
-    /// The buffer's file name (a .gltf's `buffers[0].uri`); empty: a .glb,
-    /// whose buffer is its BIN chunk.
+    /// The buffer's URI (a .gltf's `buffers[0].uri`, uriOfFileName); empty: a
+    /// .glb, whose buffer is its BIN chunk.
     std::string bufferUri;
     std::string source;  ///< the scene's name, in `asset.extras`
 };
@@ -32,6 +33,10 @@ struct GltfDocument {
 /// The scene from frame 0 to its last frame (SceneDesc::lastFrame), times in
 /// seconds (frames / fps).
 GltfDocument gltfScene(const SceneDesc& scene, const GltfOptions& options);
+
+/// A file name as a relative URI (GltfOptions::bufferUri): every byte but
+/// RFC 3986's unreserved ones percent-encoded, so `a b#1.bin` stays a name.
+std::string uriOfFileName(std::string_view name);
 
 /// The document as a binary glTF file (.glb): header, JSON chunk, BIN chunk.
 std::string glbBytes(const GltfDocument& document);

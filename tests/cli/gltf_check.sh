@@ -3,7 +3,8 @@
 # scene, then
 #   validator: the Khronos glTF validator (npm gltf-validator) must report 0
 #     errors and 0 warnings on every .glb, and on the first scene written as
-#     .gltf + .bin at another --tessellation;
+#     .gltf + .bin at another --tessellation, under a name with a space, `#`,
+#     a quote, `%` and a non-ASCII letter;
 #   three: three.js (npm three, GLTFLoader + AnimationMixer) must place every
 #     shape and the camera where `f2 export --prims` does at 0 s, 1.03 s
 #     (between frames), 2.5 s and the last frame (tests/gltf/three_check.mjs).
@@ -31,7 +32,8 @@ for scene in "$@"; do
 done
 case $mode in
   validator)
-    text=$work/text/$(basename "$1" .f2).gltf
+    # A name that a URI must escape: the .gltf still finds its .bin.
+    text="$work/text/a b#\"%é $(basename "$1" .f2).gltf"
     "$f2" export "$1" --gltf --tessellation 12 -o "$text" || fail "f2 export --gltf $1 -o .gltf"
     [ -s "${text%.gltf}.bin" ] || fail "no .bin beside $text"
     ls -l "${files[@]}" "$text" "${text%.gltf}.bin"

@@ -306,5 +306,21 @@ TEST(GltfExport, CameraFieldOfViewAndGlbLayout) {
     EXPECT_EQ(glb.size(), 12 + 8 + words[2] + 8 + document.bin.size());
 }
 
+TEST(GltfExport, AnyFileNameIsEscapedNeverInjected) {
+    // Not UTF-8, a quote, a backslash, a newline: the JSON still parses and
+    // holds the name (the bad byte as U+FFFD).
+    const SceneDesc scene = test::sceneFromText("/sphere s 10 0 0 0\n");
+    GltfOptions options;
+    options.source = "we\xffird\"q\\u0022\n.f2";
+    const json gltf = json::parse(gltfScene(scene, options).json);
+    EXPECT_EQ(gltf["scenes"][0]["name"], "we\xef\xbf\xbdird\"q\\u0022\n.f2");
+}
+
+TEST(GltfExport, BufferFileNamesArePercentEncoded) {
+    EXPECT_EQ(uriOfFileName("demo.bin"), "demo.bin");
+    EXPECT_EQ(uriOfFileName("a b#1%?.bin"), "a%20b%231%25%3F.bin");
+    EXPECT_EQ(uriOfFileName("\xc3\xa9.bin"), "%C3%A9.bin");
+}
+
 }  // namespace
 }  // namespace f2
