@@ -236,12 +236,14 @@ class GltfBuilder {
     /// A node that follows `track` (pose keys): sampled at every frame and key
     /// (LINEAR, the held value again just before a step ends), or at its keys
     /// alone (STEP) when every key is a step. A node that does not move
-    /// gets its pose and no channel (animation()).
-    /// `baked`: it also moves with what it rides on or looks at, so every frame.
+    /// gets its pose and no channel (animation()). `baked`: it also moves
+    /// with what it rides on or looks at, so every frame whatever its keys.
     void follow(int node, const Track& track, std::function<Transform(double)> localAt, bool baked = false,
                 std::vector<double> extra = {}) {
         MovingNode moving{node, std::move(localAt), {}, false};
-        if (track.keys.size() >= 2 && allSteps(track) && !baked) {
+        if (track.keys.size() < 2 && !baked) {
+            moving.times = {0};  // one pose for ever: no need to look at every frame
+        } else if (allSteps(track) && !baked) {
             moving.step = true;
             for (const Key& k : track.keys) moving.times.push_back(k.time);
         } else {
