@@ -298,8 +298,9 @@ class GltfBuilder {
             follow(node, object.track, [&object](double t) { return objectFrame(object, t); });
         }
         if (!object.model) {
-            shapeNode_[i].push_back(
-                shapeNode(object.name, shapeKindOf(object.kind), object.size, object.appearance[0], node));
+            // `name.shape`: node names stay unique (Blender and three.js rename duplicates).
+            shapeNode_[i].push_back(shapeNode(object.name + ".shape", object.name, shapeKindOf(object.kind),
+                                              object.size, object.appearance[0], node));
             return;
         }
         const ModelType& model = *object.model;
@@ -326,7 +327,7 @@ class GltfBuilder {
             const ModelShape& shape = model.shapes[k];
             const std::string label =
                 object.name + "." + model.parts[std::size_t(shape.part)].name + "." + shape.name;
-            const int s = shapeNode(label, shape.kind, shape.size, object.appearance[k],
+            const int s = shapeNode(label, label, shape.kind, shape.size, object.appearance[k],
                                     motionNode_[i][std::size_t(shape.part)]);
             setPose(s, Transform{shape.turn ? *shape.turn : Mat3{}, shape.centre});
             shapeNode_[i].push_back(s);
@@ -334,10 +335,12 @@ class GltfBuilder {
     }
 
     /// A node holding a shape's mesh; its scale is the shape's visibility.
-    int shapeNode(const std::string& label, ShapeKind kind, Vec3 size, const Appearance& look, int parent) {
-        // The shape's label as `f2 export --prims` writes it, for tools that match them up.
+    /// `label`: the shape's name in the language, as POV-Ray export comments
+    /// give it, for tools that match the two up (extras.f2Shape).
+    int shapeNode(const std::string& name, const std::string& label, ShapeKind kind, Vec3 size,
+                  const Appearance& look, int parent) {
         return addNode(
-            {{"name", label}, {"mesh", meshFor(kind, size, look)}, {"extras", {{"f2Shape", label}}}}, parent);
+            {{"name", name}, {"mesh", meshFor(kind, size, look)}, {"extras", {{"f2Shape", label}}}}, parent);
     }
 
     // ---- 2. meshes ----------------------------------------------------------

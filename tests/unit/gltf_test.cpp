@@ -7,6 +7,7 @@
 #include <cstring>
 #include <nlohmann/json.hpp>
 #include <random>
+#include <set>
 
 #include "io/gltf_export.h"
 #include "io/gltf_frame.h"
@@ -235,8 +236,12 @@ TEST(GltfExport, NodeTreeOfAModelAndItsRides) {
     const json& times = gltf["accessors"][head.at("rotation")["input"].get<int>()];
     EXPECT_EQ(times["count"], 25);
     EXPECT_NEAR(times["max"][0].get<double>(), 1.0, 1e-7);
-    // Every shape is a node with a mesh, named as `f2 export --prims` names it.
+    // Every shape is a node with a mesh, named as the language names it; a
+    // primitive's is `name.shape`, so that no two nodes share a name.
     EXPECT_TRUE(gltf["nodes"][nodeNamed(gltf, "r.head.leye")].contains("mesh"));
+    EXPECT_EQ(gltf["nodes"][nodeNamed(gltf, "ball.shape")]["extras"]["f2Shape"], "ball");
+    std::set<std::string> names;
+    for (const json& node : gltf["nodes"]) EXPECT_TRUE(names.insert(node["name"]).second) << node["name"];
 }
 
 TEST(GltfExport, StepKeysAreStepAndVisibilityIsScale) {
