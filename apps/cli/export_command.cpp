@@ -126,18 +126,19 @@ Command addExportCommand(CLI::App& app) {
         "Blender, three.js and other tools");
     sub->add_option("scene", args->scene, "Scene file; '-' reads standard input; none = the default scene")
         ->check(nonEmptyPath("export the default scene"));
-    sub->add_option("--frame", args->frame, "Frame to export; may be fractional (default 0)")
-        ->check(finiteNumberIn(0.0, 1e7, "a frame time"));
+    auto* frame = sub->add_option("--frame", args->frame, "Frame to export; may be fractional (default 0)")
+                      ->check(finiteNumberIn(0.0, 1e7, "a frame time"));
     auto* pov = sub->add_flag("--pov", args->pov,
                               "POV-Ray 3.7 scene; render it with: povray +IFILE +Oout.png +WW +HH -A +FN -D");
     auto* prims =
         sub->add_flag("--prims", args->prims, "Plain-text primitive list (Embree peer renderer format)")
             ->excludes(pov);
     sub->add_flag("--gltf", args->gltf,
-                  "glTF 2.0 of the whole animation (every frame; --frame is not used): binary .glb, or "
+                  "glTF 2.0 of the whole animation (every frame, so no --frame): binary .glb, or "
                   ".gltf + .bin when the output ends in .gltf; what it leaves out: docs/output.md")
         ->excludes(pov)
-        ->excludes(prims);
+        ->excludes(prims)
+        ->excludes(frame);  // it writes them all: a --frame would be a mistake, not a choice
     sub->add_option("--tessellation", args->tessellation,
                     "--gltf: segments around each sphere and cylinder (default 32)")
         ->check(CLI::Range(kMinTessellation, kMaxTessellation));
