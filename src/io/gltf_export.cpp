@@ -197,7 +197,8 @@ class GltfBuilder {
     };
     std::map<std::tuple<ShapeKind, float, float, float>, Geometry> geometry_;
     std::map<std::pair<int, int>, int> meshOf_;  // (geometry id, material) -> mesh
-    std::map<std::string, int> materialOf_;
+    using MaterialKey = std::tuple<std::uint8_t, std::uint8_t, std::uint8_t, float, float, float, float>;
+    std::map<MaterialKey, int> materialOf_;
     std::map<std::vector<float>, int> timeAccessor_;
 
     void measureScene() {
@@ -383,9 +384,8 @@ class GltfBuilder {
     int materialFor(const Appearance& look) {
         const Color8 c = look.color;
         const Material& m = look.material;
-        std::string key;
-        for (float v : {float(c.r), float(c.g), float(c.b), m.ks, m.n, m.reflection, m.emission})
-            key += std::to_string(v) + " ";
+        // What the material is made of (ka, kd and the checker's second colour are not).
+        const MaterialKey key{c.r, c.g, c.b, m.ks, m.n, m.reflection, m.emission};
         if (auto found = materialOf_.find(key); found != materialOf_.end()) return found->second;
         const float r = linearFromSrgb(c.r), g = linearFromSrgb(c.g), b = linearFromSrgb(c.b);
         // Phong's exponent n as a microfacet roughness (Blinn-Phong n ~ 2/α² - 2,
