@@ -311,6 +311,34 @@ TEST(GltfExport, CameraFieldOfViewAndGlbLayout) {
     EXPECT_EQ(glb.size(), 12 + 8 + words[2] + 8 + document.bin.size());
 }
 
+TEST(GltfExport, LightsPointTheirMinusZAlongTheirDirection) {
+    // A sun shining straight down along +x (F2 and glTF agree on x and y) and
+    // a spot light at (0, 300, 0) shining down, its cone 18° to 30°; one sphere
+    // of radius 10 at the origin, so the scene's centre is the origin.
+    const SceneDesc scene = test::sceneFromText(
+        "/dir_light 0.5 1 0 0\n"
+        "/spot_light 0.8 0 300 0 0 -1 0 18 30\n"
+        "/sphere s 10 0 0 0\n");
+    const json gltf = exported(scene);
+    const json& lights = gltf["extensions"]["KHR_lights_punctual"]["lights"];
+    ASSERT_EQ(lights.size(), 2u);
+    EXPECT_NEAR(lights[0]["intensity"].get<double>(), kPi * 0.5, 1e-5);  // lux = π·I
+    EXPECT_EQ(lights[1]["type"], "spot");
+    EXPECT_NEAR(lights[1]["intensity"].get<double>(), kPi * 0.8 * 300 * 300, 1);  // candela = π·I·D²
+    EXPECT_NEAR(lights[1]["spot"]["innerConeAngle"].get<double>(), 18 * kPi / 180, 1e-6);
+    EXPECT_NEAR(lights[1]["spot"]["outerConeAngle"].get<double>(), 30 * kPi / 180, 1e-6);
+    const auto direction = [&](const std::string& name) {
+        const json& node = gltf["nodes"][nodeNamed(gltf, name)];
+        const json r = node.value("rotation", json::parse("[0, 0, 0, 1]"));
+        return rotate({r[0].get<float>(), r[1].get<float>(), r[2].get<float>(), r[3].get<float>()},
+                      {0, 0, -1});
+    };
+    EXPECT_VEC_NEAR(direction("dir_light 1"), Vec3(1, 0, 0), 1e-6f);
+    EXPECT_VEC_NEAR(direction("spot_light 1"), Vec3(0, -1, 0), 1e-6f);
+    EXPECT_EQ(gltf["nodes"][nodeNamed(gltf, "spot_light 1")]["translation"],
+              json::parse("[0.0, 300.0, 0.0]"));
+}
+
 TEST(GltfExport, AnyFileNameIsEscapedNeverInjected) {
     // Not UTF-8, a quote, a backslash, a newline: the JSON still parses and
     // holds the name (the bad byte as U+FFFD).
