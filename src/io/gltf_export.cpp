@@ -4,6 +4,8 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <functional>
 #include <map>
@@ -17,6 +19,7 @@
 #include "core/scene/models.h"
 #include "io/frame_primitives.h"
 #include "io/gltf_frame.h"
+#include "io/png_writer.h"
 #include "io/tessellate.h"
 
 namespace f2 {
@@ -27,6 +30,7 @@ using json = nlohmann::json;
 // glTF's enumerations.
 constexpr int kFloat = 5126, kUnsignedShort = 5123, kUnsignedInt = 5125;
 constexpr int kArrayBuffer = 34962, kElementArrayBuffer = 34963;
+constexpr int kNearest = 9728, kRepeat = 10497;
 
 /// How long before a step key (frames) the held value is sampled again, so
 /// that LINEAR interpolation jumps there instead of sliding over a frame.
@@ -103,7 +107,7 @@ class BufferBuilder {
         return int(accessors.size() - 1);
     }
 
-   private:
+    /// A view of `size` bytes of `data`; `target` 0: none (animation data, images).
     int addView(const void* data, std::size_t size, int target) {
         bytes.resize((bytes.size() + 3) & ~std::size_t(3), 0);  // every view 4-aligned
         json view = {{"buffer", 0}, {"byteOffset", bytes.size()}, {"byteLength", size}};
@@ -196,10 +200,17 @@ class GltfBuilder {
         int id = 0, position = 0, indices = 0;
     };
     std::map<std::tuple<ShapeKind, float, float, float>, Geometry> geometry_;
-    std::map<std::pair<int, int>, int> meshOf_;  // (geometry id, material) -> mesh
-    using MaterialKey = std::tuple<std::uint8_t, std::uint8_t, std::uint8_t, float, float, float, float>;
+    std::map<std::tuple<int, int, int>, int> meshOf_;  // (geometry id, material, uv or -1) -> mesh
+    using MaterialKey = std::tuple<std::uint8_t, std::uint8_t, std::uint8_t, float, float, float, float, bool,
+                                   std::uint8_t, std::uint8_t, std::uint8_t>;
     std::map<MaterialKey, int> materialOf_;
     std::map<std::vector<float>, int> timeAccessor_;
+    json images_ = json::array(), textures_ = json::array();
+    std::map<std::tuple<std::uint8_t, std::uint8_t, std::uint8_t, std::uint8_t, std::uint8_t, std::uint8_t>,
+             int>
+        textureOf_;
+    std::map<std::tuple<float, float, float, float>, int> checkerUvOf_;
+    std::size_t flatCheckers_ = 0;  ///< checkered shapes drawn in their first colour (not boxes)
 
     void measureScene() {
         Vec3 lo{1e30f, 1e30f, 1e30f}, hi = -lo;
@@ -367,25 +378,81 @@ class GltfBuilder {
             found = geometry_.emplace(key, g).first;
         }
         const Geometry& g = found->second;
-        const int material = materialFor(look);
-        const auto meshKey = std::make_pair(g.id, material);
+        // A box's checker is exact as a texture (checkerUv); on a curved shape
+        // its cells are not squares of any map: the first colour, a warning.
+        const bool checkered = look.checker.size > 0, textured = checkered && kind == ShapeKind::Box;
+        flatCheckers_ += checkered && !textured;
+        const int material = materialFor(look, textured);
+        const int uv = textured ? checkerUv(size, look.checker.size) : -1;
+        const auto meshKey = std::make_tuple(g.id, material, uv);
         if (auto m = meshOf_.find(meshKey); m != meshOf_.end()) return m->second;
-        std::string name(shapeKindName(kind));
-        meshes_.push_back({{"name", name},
-                           {"primitives",
-                            {{{"attributes", {{"POSITION", g.position}, {"NORMAL", g.position + 1}}},
-                              {"indices", g.indices},
-                              {"material", material}}}}});
+        json attributes = {{"POSITION", g.position}, {"NORMAL", g.position + 1}};
+        if (uv >= 0) attributes["TEXCOORD_0"] = uv;
+        meshes_.push_back(
+            {{"name", std::string(shapeKindName(kind))},
+             {"primitives", {{{"attributes", attributes}, {"indices", g.indices}, {"material", material}}}}});
         return meshOf_[meshKey] = int(meshes_.size() - 1);
+    }
+
+    /// Texture coordinates of a box (tessellate's vertices, in its order)
+    /// that lay checkerTexture's 2 x 2 texels on it as F2's 3D checker of
+    /// cell `s` (docs/rendering.md): on a face across axis a, (u, v) = its
+    /// other two coordinates / 2s, so a texel is a cell; the cell parity
+    /// along a, constant over the face (read just inside, as F2 does), shifts
+    /// u by one texel.
+    int checkerUv(Vec3 size, float s) {
+        const auto key = std::make_tuple(size.x, size.y, size.z, s);
+        if (auto found = checkerUvOf_.find(key); found != checkerUvOf_.end()) return found->second;
+        const TriangleMesh box = tessellate(ShapeKind::Box, size, kMinTessellation);
+        std::vector<float> uv;
+        for (std::size_t v = 0; v < box.positions.size(); ++v) {
+            const Vec3 p = box.positions[v], n = box.normals[v];
+            const int a = std::fabs(n.x) > 0.5f ? 0 : std::fabs(n.y) > 0.5f ? 1 : 2;
+            const float inside = p[a] - n[a] * s * 1e-4f;
+            const float shift = std::fmod(std::fabs(std::floor(inside / s)), 2.0f) * 0.5f;
+            uv.insert(uv.end(), {p[(a + 1) % 3] / (2 * s) + shift, p[(a + 2) % 3] / (2 * s)});
+        }
+        const int accessor = buffer_.floats(uv, "VEC2", 2, kArrayBuffer, false);
+        return checkerUvOf_[key] = accessor;
+    }
+
+    /// The 2 x 2 texels of a checker (`first` where column + row is even),
+    /// as a PNG in the buffer, sampled NEAREST and REPEAT.
+    int checkerTexture(Color8 first, Color8 second) {
+        const auto key = std::make_tuple(first.r, first.g, first.b, second.r, second.g, second.b);
+        if (auto found = textureOf_.find(key); found != textureOf_.end()) return found->second;
+        Image image;
+        image.resize(2, 2);
+        for (int y = 0; y < 2; ++y)
+            for (int x = 0; x < 2; ++x) {
+                const Color8 c = (x + y) % 2 ? second : first;
+                image.at(x, y) = {c.r, c.g, c.b};  // sRGB, as glTF's base colour textures are
+            }
+        images_.push_back({{"bufferView", pngView(image)}, {"mimeType", "image/png"}});
+        textures_.push_back({{"sampler", 0}, {"source", images_.size() - 1}});
+        return textureOf_[key] = int(textures_.size() - 1);
+    }
+
+    int pngView(const Image& image) {
+        char* data = nullptr;
+        std::size_t size = 0;
+        std::FILE* stream = open_memstream(&data, &size);
+        std::string error;
+        const bool written = stream && writePng(image, stream, error);
+        if (stream) std::fclose(stream);  // sets data and size
+        std::vector<std::uint8_t> bytes(data, data + (written ? size : 0));
+        std::free(data);
+        return buffer_.addView(bytes.data(), bytes.size(), 0);
     }
 
     // ---- 3. materials -------------------------------------------------------
 
-    int materialFor(const Appearance& look) {
-        const Color8 c = look.color;
+    /// `textured`: the checker as a texture (a box's), else the first colour.
+    int materialFor(const Appearance& look, bool textured) {
+        const Color8 c = look.color, c2 = textured ? look.checker.color : Color8{0, 0, 0};
         const Material& m = look.material;
-        // What the material is made of (ka, kd and the checker's second colour are not).
-        const MaterialKey key{c.r, c.g, c.b, m.ks, m.n, m.reflection, m.emission};
+        // What the material is made of (not ka or kd).
+        const MaterialKey key{c.r, c.g, c.b, m.ks, m.n, m.reflection, m.emission, textured, c2.r, c2.g, c2.b};
         if (auto found = materialOf_.find(key); found != materialOf_.end()) return found->second;
         const float r = linearFromSrgb(c.r), g = linearFromSrgb(c.g), b = linearFromSrgb(c.b);
         // Phong's exponent n as a microfacet roughness (Blinn-Phong n ~ 2/α² - 2,
@@ -409,6 +476,13 @@ class GltfBuilder {
                     number(m.emission);
                 emissiveStrength_ = true;
             }
+        }
+        if (textured) {
+            json& pbr = material["pbrMetallicRoughness"];
+            pbr.erase("baseColorFactor");  // the texture's colours, as they are
+            pbr["baseColorTexture"] = {{"index", checkerTexture(c, c2)}};
+            material["name"] = material["name"].get<std::string>() + " checker " + std::to_string(c2.r) +
+                               " " + std::to_string(c2.g) + " " + std::to_string(c2.b);
         }
         materials_.push_back(std::move(material));
         return materialOf_[key] = int(materials_.size() - 1);
@@ -626,13 +700,10 @@ class GltfBuilder {
     // ---- what is left out ---------------------------------------------------------
 
     void warnings() {
-        std::size_t checkers = 0;
-        for (const SceneObject& o : scene_.objects)
-            for (const Appearance& a : o.appearance) checkers += a.checker.size > 0;
-        if (checkers > 0)
-            warnings_.push_back(
-                std::to_string(checkers) +
-                " checkered shape(s) exported in their first colour (glTF has no checker pattern)");
+        if (flatCheckers_ > 0)
+            warnings_.push_back(std::to_string(flatCheckers_) +
+                                " checkered sphere(s) or cylinder(s) exported in their first colour (a box's "
+                                "checker is a texture; a curved shape's cells are no texture's squares)");
         if (!scene_.colourTracks.empty())
             warnings_.push_back("colour keys not exported: the shapes keep their /paint colour");
         bool intensityKeys = false;
@@ -675,6 +746,12 @@ class GltfBuilder {
         if (!meshes_.empty()) {
             gltf["meshes"] = meshes_;
             gltf["materials"] = materials_;
+        }
+        if (!textures_.empty()) {
+            gltf["images"] = images_;
+            gltf["textures"] = textures_;
+            gltf["samplers"] = {
+                {{"magFilter", kNearest}, {"minFilter", kNearest}, {"wrapS", kRepeat}, {"wrapT", kRepeat}}};
         }
         json used = json::array();
         if (!lights_.empty()) {

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <random>
 #include <set>
+#include <vector>
 
 #include "io/gltf_export.h"
 #include "io/gltf_frame.h"
@@ -337,6 +338,59 @@ TEST(GltfExport, LightsPointTheirMinusZAlongTheirDirection) {
     EXPECT_VEC_NEAR(direction("spot_light 1"), Vec3(0, -1, 0), 1e-6f);
     EXPECT_EQ(gltf["nodes"][nodeNamed(gltf, "spot_light 1")]["translation"],
               json::parse("[0.0, 300.0, 0.0]"));
+}
+
+/// Accessor `index`'s floats, from the document's buffer.
+std::vector<float> floatsOf(const json& gltf, const GltfDocument& document, int index) {
+    const json& accessor = gltf["accessors"][index];
+    const std::size_t components = accessor["type"] == "VEC2" ? 2 : accessor["type"] == "VEC3" ? 3 : 1;
+    std::vector<float> out(components * accessor["count"].get<std::size_t>());
+    const std::size_t offset = gltf["bufferViews"][accessor["bufferView"].get<int>()]["byteOffset"];
+    std::memcpy(out.data(), document.bin.data() + offset, out.size() * sizeof(float));
+    return out;
+}
+
+TEST(GltfExport, ABoxCheckerIsATextureWithF2sCells) {
+    // At points all over the faces of a box whose sides are no multiples of
+    // the cell (and one that is: 120 = 4 x 30, its z faces on cell planes), the
+    // texel the texture coordinates pick has the colour F2's 3D checker gives
+    // there (docs/rendering.md): the /paint colour where floor(x/s) +
+    // floor(y/s) + floor(z/s) is even, read just inside the surface.
+    const SceneDesc scene = test::sceneFromText(
+        "/box b 130 70 120 10 20 30 0 30 0\n"
+        "/paint b 200 10 10\n"
+        "/checker b 10 10 200 30\n");
+    GltfDocument document;
+    const json gltf = exported(scene, &document);
+    ASSERT_EQ(gltf["textures"].size(), 1u);
+    const json& primitive = gltf["meshes"][0]["primitives"][0];
+    const std::vector<float> position = floatsOf(gltf, document, primitive["attributes"]["POSITION"]);
+    const std::vector<float> normal = floatsOf(gltf, document, primitive["attributes"]["NORMAL"]);
+    const std::vector<float> uv = floatsOf(gltf, document, primitive["attributes"]["TEXCOORD_0"]);
+    const float s = 30;
+    std::mt19937 random(test::testSeed(30));
+    std::uniform_real_distribution<float> unit(0, 1);
+    int checked = 0;
+    for (std::size_t face = 0; face < 6; ++face) {
+        // A face's four vertices (tessellate's order): (-,-), (+,-), (+,+), (-,+) in its (u, v).
+        const std::size_t v0 = 4 * face;
+        for (int k = 0; k < 200; ++k) {
+            const float a = unit(random), b = unit(random);
+            const auto mix = [&](const std::vector<float>& data, std::size_t n, std::size_t c) {
+                const auto at = [&](std::size_t v) { return data[(v0 + v) * n + c]; };
+                return (1 - a) * (1 - b) * at(0) + a * (1 - b) * at(1) + a * b * at(2) + (1 - a) * b * at(3);
+            };
+            // Back in F2's frame (z mirrored), just inside the face.
+            const Vec3 n{normal[3 * v0], normal[3 * v0 + 1], -normal[3 * v0 + 2]};
+            const Vec3 p = Vec3{mix(position, 3, 0), mix(position, 3, 1), -mix(position, 3, 2)} - n * 1e-3f;
+            const int cells = int(std::floor(p.x / s) + std::floor(p.y / s) + std::floor(p.z / s));
+            const int texel = int(std::floor(2 * mix(uv, 2, 0))) + int(std::floor(2 * mix(uv, 2, 1)));
+            EXPECT_EQ(((cells % 2) + 2) % 2, ((texel % 2) + 2) % 2)
+                << "face " << face << " at " << p << " (texel " << texel << ")";
+            ++checked;
+        }
+    }
+    EXPECT_EQ(checked, 1200);
 }
 
 TEST(GltfExport, AnyFileNameIsEscapedNeverInjected) {
