@@ -46,7 +46,8 @@ constexpr const char* kFooter =
     "ceil(N / C) rows, spacing 150, centred on the origin, on a box floor (top y = -105) with one cell of\n"
     "margin; ambient 0.2, one directional light 0.75 along (0.5, -1, 0.7). Camera: d = 0.5,\n"
     "rotation (35, 0, 0), half = 75 * max(columns, rows), D = 100 + 2 * half,\n"
-    "eye = (0, -5 + D sin 35deg, -D cos 35deg). See docs/performance.md.";
+    "eye = (0, -5 + D sin 35deg, -D cos 35deg). drives:N: N spheres (radius 50) each driven on px and py\n"
+    "(SPEC 10.7); drivekeys:N: the same spheres with two linear keys instead. See docs/performance.md.";
 
 int writeSceneText(const BenchArgs& args, int width, int height) {
     std::string text;
@@ -146,8 +147,9 @@ Command addBenchCommand(CLI::App& app) {
     auto* file = sub->add_option("scene", args->scene,
                                  "Scene file; '-' reads standard input; none = the default scene")
                      ->check(nonEmptyPath("measure the default scene"));
-    auto* generated = sub->add_option("--scene", args->generated,
-                                      "Generated scene robots:N or spheres:N instead of a file");
+    auto* generated =
+        sub->add_option("--scene", args->generated,
+                        "Generated scene robots:N or spheres:N (or drives:N, drivekeys:N) instead of a file");
     file->excludes(generated);
     sub->add_option("--frame", args->settings.frame,
                     "Animation time to render, in frames; may be fractional (default 0)")

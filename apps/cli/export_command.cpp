@@ -92,6 +92,11 @@ int runExport(const ExportArgs& args) {
     }
     auto loaded = loadScene(args.scene);
     if (!loaded) return 1;
+    // A drive without a finite value makes the frame an error (SPEC 10.7).
+    if (std::optional<std::string> problem = firstDriveProblem(loaded->scene, args.frame)) {
+        std::cerr << "f2 export: " << *problem << '\n';
+        return 1;
+    }
     Camera camera = cameraAt(loaded->scene, args.frame);
     std::string error;
     if (!args.size.empty() && !parseSize(args.size, camera.width, camera.height, error))

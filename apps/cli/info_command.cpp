@@ -26,7 +26,14 @@ std::string keyTimeText(double frames) {
     return text;
 }
 
+/// A track's keys on one line, then its drives (SPEC 10.7), one a line.
 void printTrack(const std::string& target, const Track& track) {
+    if (track.drives) {
+        for (const std::shared_ptr<const Drive>& d : track.drives->bySlot)
+            if (d)
+                std::cout << "    " << target << ": drive " << driveChannelName(d->channel) << ' '
+                          << d->expression << '\n';
+    }
     if (track.keys.empty()) return;
     std::cout << "    " << target << ": " << track.keys.size() << " keys, frames "
               << keyTimeText(track.keys.front().time) << ".." << keyTimeText(track.keys.back().time) << ", "

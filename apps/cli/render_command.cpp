@@ -265,6 +265,10 @@ int runRender(const RenderArgs& args) {
                 "trace a sub-frame's time with --frame");
         int x = 0, y = 0;
         if (!parsePixel(args.pixel, width, height, x, y, error)) return usageError(error);
+        if (std::optional<std::string> problem = firstDriveProblem(loaded->scene, args.frame)) {
+            std::cerr << "f2 render: " << *problem << '\n';
+            return 1;
+        }
         return printPixelStory(*loaded, job.view.at(loaded->scene, args.frame), args.frame, x, y,
                                args.antialias, args.threads);
     }

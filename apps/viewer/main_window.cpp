@@ -295,10 +295,19 @@ bool MainWindow::isPictureComplete() const {
            shownFrame().size == viewport_->renderSize();
 }
 
-void MainWindow::onFrameShown(const QImage& image) {
+void MainWindow::onFrameShown(const QImage& image, const FrameInfo& info) {
     viewport_->setImage(image);
     showSelection();
     readouts_->update();
+    // A drive without a finite value (SPEC 10.7): the picture keeps the keyed
+    // value of that channel, and the status bar says which drive and frame.
+    if (!info.driveProblem.empty()) {
+        statusBar()->showMessage(QString::fromStdString(info.driveProblem));
+        showsDriveProblem_ = true;
+    } else if (showsDriveProblem_) {
+        statusBar()->clearMessage();
+        showsDriveProblem_ = false;
+    }
 }
 
 void MainWindow::selectAt(QPointF imagePoint) {

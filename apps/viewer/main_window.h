@@ -139,7 +139,7 @@ class MainWindow : public QMainWindow {
     void onSceneChanged(bool newDocument);
     void onDiagnosticsChanged();
     void onProblemClicked(const QString& file, int line, int column);
-    void onFrameShown(const QImage& image);
+    void onFrameShown(const QImage& image, const FrameInfo& info);
     /// Outline, status and key markers of the session's selection.
     void showSelection();
     /// The look-around's eye and rotation, if the user is looking around.
@@ -161,6 +161,8 @@ class MainWindow : public QMainWindow {
     OpeningIndicator* opening_ = nullptr;
     ViewModeMenu* viewModes_ = nullptr;
     QActionGroup* playbackAntialiasActions_ = nullptr;
+    /// The status bar shows a frame's drive error (SPEC 10.7), to be cleared when a frame has none.
+    bool showsDriveProblem_ = false;
 };
 
 }  // namespace f2::viewer

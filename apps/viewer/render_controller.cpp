@@ -74,6 +74,7 @@ void RenderController::workerLoop(int threads) {
         info.serial = serial;
         info.antialias = request.options.antialias;
         info.view = request.options.view;
+        info.driveProblem = firstDriveProblem(*request.scene, request.time).value_or("");
         info.timings =
             renderer.render(*request.scene, request.time, request.camera, image, request.options, &cancel_);
         info.size = QSize(image.width, image.height);

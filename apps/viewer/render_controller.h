@@ -13,6 +13,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <string>
 #include <thread>
 
 #include "core/render/camera.h"
@@ -52,6 +53,8 @@ struct FrameInfo {
     std::shared_ptr<const SceneDesc> scene;  ///< the scene it shows
     std::optional<BoundsOf> boundsOf;        ///< the request's
     std::optional<Bounds> bounds;            ///< of boundsOf, at this frame's time
+    /// A drive of the scene without a finite value at this time (SPEC 10.7): its error, else empty.
+    std::string driveProblem;
 };
 
 class RenderController : public QObject {

@@ -63,6 +63,15 @@ AnimationResult renderAnimation(const SceneDesc& scene, const AnimationRange& ra
             continue;
         }
         const double t = range.timeOf(f);
+        // A drive without a finite value makes the frame an error (SPEC 10.7), named before it is traced.
+        std::vector<double> times{t};
+        if (blur.enabled() && !scene.drives.empty()) {
+            times.clear();
+            for (int i = 0; i < blur.samples; ++i)
+                times.push_back(blur.subFrameTime(t, range.frameLength(), i));
+        }
+        if (std::optional<std::string> problem = firstDriveProblem(scene, times))
+            return stop(std::move(*problem));
         const FrameTimings timings =
             blur.enabled()
                 ? renderer.renderAveraged(

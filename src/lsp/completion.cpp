@@ -107,8 +107,31 @@ void addParts(Json& items, const Analysis& a, std::string_view objectName, const
     }
 }
 
-/// Inside `( … )` or `{ … }`: the variables defined above, pi and the functions.
-Json expressionItems(const Analysis& a, Position p, std::string_view line, std::size_t byte) {
+/// A `/drive`'s channels that `target` has (SPEC 10.7): the pose's, then
+/// `d` for the camera, `intensity` for a named light, `r g b` for the others.
+void addChannels(Json& items, const Analysis& a, std::string_view target, const Range& replace) {
+    const std::string_view name = target.substr(0, target.find('.'));
+    const bool camera = name == kCameraName;
+    const bool light = std::any_of(a.index.lights.begin(), a.index.lights.end(),
+                                   [&](const IndexedLight& l) { return l.name == name; });
+    for (std::string_view word : driveChannelNames()) {
+        const DriveChannel c = *driveChannelFromWord(word);
+        const bool pose = c < DriveChannel::Intensity;
+        const bool fits = pose || (c == DriveChannel::D && camera) ||
+                          (c == DriveChannel::Intensity && light) ||
+                          (c >= DriveChannel::R && !camera && !light);
+        if (!fits) continue;
+        const std::string detail = pose                           ? "drive a number of the pose"
+                                   : c == DriveChannel::D         ? "drive the camera's d"
+                                   : c == DriveChannel::Intensity ? "drive the light's intensity"
+                                                                  : "drive a colour channel (0..255)";
+        items.push_back(item(word, kCompletionField, detail, replace, word));
+    }
+}
+
+/// Inside `( … )` or `{ … }`: the variables defined above, pi and the functions;
+/// in a `/drive`'s expression also `frame` and `time` (SPEC 10.7).
+Json expressionItems(const Analysis& a, Position p, std::string_view line, std::size_t byte, bool drive) {
     std::size_t begin = byte;
     while (begin > 0 && isNameChar(line[begin - 1])) --begin;  // the language's name rule, not the locale's
     const Range replace{{p.line, utf16Length(line.substr(0, begin))}, p};
@@ -126,6 +149,12 @@ Json expressionItems(const Analysis& a, Position p, std::string_view line, std::
                              replace, v.name));
     }
     items.push_back(item("pi", kCompletionVariable, "3.14159…", replace, "pi"));
+    if (drive) {
+        items.push_back(item(kDriveInputs[0], kCompletionVariable,
+                             "the frame drawn (fractional in motion blur)", replace, kDriveInputs[0]));
+        items.push_back(
+            item(kDriveInputs[1], kCompletionVariable, "frame / fps, in seconds", replace, kDriveInputs[1]));
+    }
     for (std::string_view f : expressionFunctionNames()) {
         const std::string_view detail = f == "atan2" ? "atan2(y, x), degrees"
                                         : f == "if"  ? "if(condition, a, b): a if condition is not 0, else b"
@@ -179,7 +208,8 @@ Json completion(const Analysis& a, Position p) {
     if (!typing) return items;
     const Range replace{{p.line, utf16Length(line.substr(0, typing->begin))}, p};
     if (typing->index > 0 && insideExpression(line, static_cast<std::size_t>(byteLong))) {
-        return expressionItems(a, p, line, static_cast<std::size_t>(byteLong));
+        const bool drive = typing->command == command(CommandId::Drive).name;
+        return expressionItems(a, p, line, static_cast<std::size_t>(byteLong), drive);
     }
 
     if (typing->index == 0) {
@@ -251,6 +281,12 @@ Json completion(const Analysis& a, Position p) {
         case ArgKind::Path:
             if (arg == 0) return includeItems(a, p, typing->partial, typing->begin);
             break;
+        case ArgKind::Channel: {
+            LineTokens tokens;
+            tokenizeLine(line, tokens);
+            if (tokens.count > 1) addChannels(items, a, tokens.tokens[1].text, replace);
+            break;
+        }
         case ArgKind::NewName:
         case ArgKind::Variable:
         case ArgKind::Text:

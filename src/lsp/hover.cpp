@@ -1,8 +1,10 @@
 // textDocument/hover: a command's syntax and meaning; an object's kind, where
 // it is created, its parts and keys and its pose at frame 0; a part's shape and
 // pivot; the camera's line, keys, look-at, attachment and pose at frame 0; a
-// named light's line, mount, keys and place at frame 0; a variable's
+// named light's line, mount, keys and place at frame 0; a `/drive`'s value at
+// frame 0; a variable's
 // definition; an include's file.
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -139,6 +141,13 @@ std::optional<double> definedValue(const Analysis& a, const VariableOccurrence& 
 
 std::string variableHover(const Analysis& a, const std::string& name, int line) {
     const auto def = definitionOf(a.sources.variables, name, a.sources.orderOf(a.self, line));
+    // In a /drive's expression, frame and time are the drive's inputs (SPEC 10.7).
+    if (!def && (name == kDriveInputs[0] || name == kDriveInputs[1]) &&
+        a.document.line(line).find(command(CommandId::Drive).name) != std::string_view::npos) {
+        return "**" + name + "** in a `/drive`: " +
+               (name == kDriveInputs[0] ? "the frame drawn (fractional in motion blur and playback)"
+                                        : "the time in seconds, frame / fps");
+    }
     if (!def) return "**variable** `" + name + "`: not defined in this scene";
     const SceneFile& file = a.sources.files[static_cast<std::size_t>(def->file)];
     const SourceLoc loc{file.path, def->line + 1, 1};
@@ -269,6 +278,21 @@ std::string includeHover(const Analysis& a, const std::string& path) {
     return "**include** `" + file + "`" + (exists ? "" : " (not a readable file)");
 }
 
+/// A `/drive` on line `line` (1-based) of the document: its value at frame
+/// 0, as the other hovers give a pose (the server has no current frame).
+std::string driveHover(const Analysis& a, int line) {
+    if (!a.result.ok()) return "\n\n(the scene has errors, so the drive is not evaluated)";
+    for (const std::shared_ptr<const Drive>& drive : a.result.scene->drives) {
+        if (drive->line != line || !a.inDocument({drive->file, drive->line, drive->column})) continue;
+        ExpressionFailure failure;
+        const double v = drive->valueAt(0.0, &failure);
+        return "\n\n`" + drive->target + " " + std::string(driveChannelName(drive->channel)) +
+               "` at frame 0: " +
+               (std::isfinite(v) ? formatNumber(v) : "no finite value (" + failure.message + ")");
+    }
+    return {};
+}
+
 }  // namespace
 
 Json hover(const Analysis& a, Position p) {
@@ -279,7 +303,8 @@ Json hover(const Analysis& a, Position p) {
         case SymbolAt::Kind::Command: {
             const CommandSpec* doc = findCommand(at.command);
             if (!doc) return nullptr;
-            return markdown("```f2\n" + std::string(doc->syntax) + "\n```\n" + std::string(doc->meaning),
+            return markdown("```f2\n" + std::string(doc->syntax) + "\n```\n" + std::string(doc->meaning) +
+                                (doc->id == CommandId::Drive ? driveHover(a, p.line + 1) : ""),
                             at.range);
         }
         case SymbolAt::Kind::Object:

@@ -27,7 +27,7 @@ struct NamedList {
     std::vector<std::string> (*words)();
 };
 
-const std::array<NamedList, 16> kLists = {{
+const std::array<NamedList, 18> kLists = {{
     {"commands", [] { return commandWords([](const CommandSpec&) { return true; }); }},
     // As written in a scene: "/camera", … (the fuzz dictionary's entries).
     {"slashed-commands",
@@ -71,6 +71,18 @@ const std::array<NamedList, 16> kLists = {{
      [] {
          std::vector<std::string> words;
          for (const KeyPropertySpec& p : keyProperties()) words.emplace_back(p.word);
+         return words;
+     }},
+    {"drive-channels",
+     [] {
+         std::vector<std::string> words;
+         for (std::string_view c : driveChannelNames()) words.emplace_back(c);
+         return words;
+     }},
+    {"drive-inputs",
+     [] {
+         std::vector<std::string> words;
+         for (std::string_view v : kDriveInputs) words.emplace_back(v);
          return words;
      }},
     {"modes",

@@ -326,6 +326,46 @@ TEST(Hover, PrimitiveSizeCommandSyntaxAndBrokenScenes) {
     EXPECT_TRUE(hover(a, {1, 17}).is_null());  // a number
 }
 
+TEST(Drives, CompletionOfChannelsAndInputsAndHoverWithTheValueAtFrameZero) {
+    // SPEC 10.7: the channels a target has, then frame and time inside the expression.
+    const std::string scene =
+        "/sphere ball 1 0 0 0\n"                       // 0
+        "/point_light 2 0 3 0 name lamp\n"             // 1
+        "/let k 3\n"                                   // 2
+        "/drive ball px (k + 10*sin(time*90 + 90))\n"  // 3
+        "/drive lamp intensity (1/frame)\n";           // 4
+    const Analysis typing =
+        analysed(scene + "/drive ball \n/drive camera \n/drive lamp \n/drive ball px (fr\n/key 0 ball (\n");
+    const auto labels = [&](Position p) {
+        std::vector<std::string> out;
+        for (const Json& i : completion(typing, p)) out.push_back(i["label"]);
+        return out;
+    };
+    EXPECT_EQ(labels({5, 12}), (std::vector<std::string>{"px", "py", "pz", "rx", "ry", "rz", "r", "g", "b"}));
+    EXPECT_EQ(labels({6, 14}), (std::vector<std::string>{"px", "py", "pz", "rx", "ry", "rz", "d"}));
+    EXPECT_EQ(labels({7, 12}), (std::vector<std::string>{"px", "py", "pz", "rx", "ry", "rz", "intensity"}));
+    const auto inDrive = labels({8, 17});
+    EXPECT_NE(std::find(inDrive.begin(), inDrive.end(), "frame"), inDrive.end());
+    EXPECT_NE(std::find(inDrive.begin(), inDrive.end(), "time"), inDrive.end());
+    EXPECT_NE(std::find(inDrive.begin(), inDrive.end(), "k"), inDrive.end());
+    // Elsewhere frame and time are no variables.
+    const auto inKey = labels({9, 13});
+    EXPECT_NE(std::find(inKey.begin(), inKey.end(), "pi"), inKey.end());
+    EXPECT_EQ(std::find(inKey.begin(), inKey.end(), "frame"), inKey.end());
+
+    // Hover on /drive: its value at frame 0 (the server has no current frame), or why it has none.
+    const Analysis a = analysed(scene);
+    ASSERT_TRUE(a.result.ok());
+    const std::string ball = hover(a, {3, 2})["contents"]["value"];
+    EXPECT_EQ(ball.rfind("```f2\n/drive <target> <channel> (<expression>)\n```\n", 0), 0u) << ball;
+    EXPECT_NE(ball.find("\n\n`ball px` at frame 0: 13"), std::string::npos) << ball;
+    const std::string lamp = hover(a, {4, 2})["contents"]["value"];
+    EXPECT_NE(lamp.find("`lamp intensity` at frame 0: no finite value (division by zero)"), std::string::npos)
+        << lamp;
+    const std::string inside = hover(a, {3, 28})["contents"]["value"];
+    EXPECT_NE(inside.find("frame / fps"), std::string::npos) << inside;
+}
+
 // Second edition (SPEC 9.4, 9.5): variables and includes are found in the text.
 constexpr const char* kLoops =
     "/let n 3\n"                                 // 0

@@ -317,3 +317,37 @@ TEST(ModelParams, Errors) {
 
 }  // namespace
 }  // namespace f2
+
+namespace f2 {
+namespace {
+
+TEST(ModelParams, ThreeLampsFromOneModelInTwelveLinesOrFewer) {
+    // The trial's desk lamps (issue 28): one model, three instances with
+    // their own values, a light riding on each head, one lamp nodding.
+    const std::string text = readSource("tests/data/models/three_lamps.f2");
+    const std::string lamps = text.substr(text.find("# The three lamps"));
+    int lines = 0;
+    std::istringstream in(lamps);
+    for (std::string line; std::getline(in, line);) lines += !line.empty() && line[0] != '#';
+    EXPECT_LE(lines, 12);
+    const SceneDesc s = test::sceneFromText(text);
+    ASSERT_EQ(s.models.size(), 1u);
+    EXPECT_EQ(s.objects.size(), 4u);  // the desk and three lamps
+    EXPECT_EQ(s.lightMotions.size(), 3u);
+    EXPECT_EQ(s.objects[2].model->parts[1].pivot.y, 12);
+    EXPECT_EQ(s.objects[2].model->shapes[1].size.y, 70);                  // b's arm
+    EXPECT_EQ(s.objects[3].model->parts[2].restRotation.z, -80);          // c's nod
+    EXPECT_EQ(s.objects[2].appearance[3].color, (Color8{255, 120, 70}));  // b's bulb, painted by its values
+    // Lit by the three bulbs, and the nodding lamp moves.
+    const Image first = test::renderText(text, 0), later = test::renderText(text, 36);
+    std::size_t bright = 0, moved = 0;
+    for (std::size_t i = 0; i < first.pixels.size(); ++i) {
+        bright += first.pixels[i].r > 150;
+        moved += !(first.pixels[i] == later.pixels[i]);
+    }
+    EXPECT_GT(bright, 100u);
+    EXPECT_GT(moved, 100u);
+}
+
+}  // namespace
+}  // namespace f2

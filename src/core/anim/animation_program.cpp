@@ -88,6 +88,13 @@ class Compiler {
         return it->second;
     }
 
+    /// kDriven | index of a track with drives (SPEC 10.7), whose rest pose is `rest`.
+    std::uint32_t drivenTrack(const Track& track, const Pose& rest) {
+        const auto index = std::uint32_t(p_.drivenTracks.size());
+        p_.drivenTracks.push_back({track, rest});
+        return AnimationProgram::kDriven | index;
+    }
+
     /// First index in `surfaces` of an object's surfaces (equal runs stored once).
     std::uint32_t surfaces(const SceneObject& object) {
         run_.clear();
@@ -158,6 +165,8 @@ std::shared_ptr<const AnimationProgram> AnimationProgram::compile(const SceneDes
         primitives += std::uint32_t(primitiveCountOf(object));
         if (object.mayRide()) {
             p.rootSource[i] = kAttached;
+        } else if (object.track.drives) {
+            p.rootSource[i] = compiler.drivenTrack(object.track, object.rest);
         } else if (const std::uint32_t track = compiler.animatedTrack(object.track)) {
             p.rootSource[i] = track;
         } else {
@@ -169,7 +178,8 @@ std::shared_ptr<const AnimationProgram> AnimationProgram::compile(const SceneDes
         bool still = p.rootSource[i] == kConstantRoot;
         p.firstPartSource[i] = std::uint32_t(p.partSources.size());
         for (const Track& track : object.partTracks) {
-            std::uint32_t animated = compiler.turnTrack(track);
+            std::uint32_t animated = track.drives ? compiler.drivenTrack(track, Pose{}) : 0;
+            if (!animated) animated = compiler.turnTrack(track);
             if (!animated) animated = compiler.animatedTrack(track);
             p.partSources.push_back(animated ? animated : compiler.constantMotion(track));
             still = still && !animated;
@@ -204,15 +214,17 @@ void AnimationProgram::segmentsAt(double t, std::vector<TrackSegment>& segments)
 
 // Inlined into both loops below: a call per object measured slower.
 [[gnu::always_inline]] inline AnimationProgram::ObjectFrames AnimationProgram::objectFrames(
-    std::size_t i, const TrackSegment* segments, const std::vector<Transform>& attachedRoots,
-    Transform* parts) const {
+    std::size_t i, const TrackSegment* segments, const EvaluatedFrame& frame, Transform* parts) const {
     ObjectFrames out;
     out.parts = parts;
     const std::uint32_t root = rootSource[i];
     if (root == kConstantRoot) {
         out.root = constantRoots[i];
     } else if (root == kAttached) {
-        out.root = attachedRoots[i];
+        out.root = frame.attachedRoots[i];
+    } else if (root & kDriven) {
+        const Pose pose = drivenPose(root & ~kDriven, frame.time);
+        out.root = Transform::fromPose(pose.position, pose.rotation);
     } else {
         const Pose pose = trackPose(root & ~kAnimated, segments);
         out.root = Transform::fromPose(pose.position, pose.rotation);
@@ -238,6 +250,11 @@ void AnimationProgram::segmentsAt(double t, std::vector<TrackSegment>& segments)
                 parts[index] =
                     partFrame(worldFromParent, part, turn.offset, degrees == 0 ? nullptr : &rotation);
             }
+        } else if (source & kDriven) {
+            const Pose motion = drivenPose(source & ~kDriven, frame.time);
+            const bool turned = !(motion.rotation == Vec3{});
+            const Mat3 rotation = turned ? rotationFromEulerDegrees(motion.rotation) : Mat3{};
+            parts[index] = partFrame(worldFromParent, part, motion.position, turned ? &rotation : nullptr);
         } else if (source & kAnimated) {
             const Pose motion = trackPose(source & ~kAnimated, segments);
             const bool turned = !(motion.rotation == Vec3{});
@@ -257,7 +274,7 @@ void AnimationProgram::evaluateObjects(std::size_t begin, std::size_t end, const
     Transform parts[kMaxModelParts];
     for (std::size_t i = begin; i < end; ++i) {
         if (refill && still[i]) continue;
-        const ObjectFrames frames = objectFrames(i, segments, frame.attachedRoots, parts);
+        const ObjectFrames frames = objectFrames(i, segments, frame, parts);
         const std::uint32_t first = firstPrimitive[i];
         Primitive* prims = &frame.primitives[first];
         const Surface* look = &surfaces[firstSurface[i]];
@@ -282,7 +299,7 @@ void AnimationProgram::evaluateObjectsIntoLeaves(std::size_t begin, std::size_t 
     Transform parts[kMaxModelParts];
     for (std::size_t i = begin; i < end; ++i) {
         if (still[i]) continue;
-        const ObjectFrames frames = objectFrames(i, segments, frame.attachedRoots, parts);
+        const ObjectFrames frames = objectFrames(i, segments, frame, parts);
         const std::uint32_t first = firstPrimitive[i];
         const std::uint32_t count = firstPrimitive[i + 1] - first;
         for (std::uint32_t shape = 0; shape < count; ++shape) {

@@ -53,6 +53,12 @@ struct AnimationProgram {
         std::uint32_t axis;        ///< 0: x, 1: y, 2: z
         Vec3 offset;               ///< every key's position
     };
+    /// A track with drives (SPEC 10.7), evaluated as evaluateTrack does it:
+    /// its keys and its drives, at the frame's time.
+    struct DrivenTrack {
+        Track track;
+        Pose rest;
+    };
     /// A part's constant motion (no keys: rest, or one key): offset and rotation.
     struct ConstantMotion {
         Vec3 offset;
@@ -65,6 +71,8 @@ struct AnimationProgram {
     static constexpr std::uint32_t kAnimated = 0x8000'0000u;
     /// Where a part gets its pose: `kTurning | index in turnTracks`.
     static constexpr std::uint32_t kTurning = 0x4000'0000u;
+    /// Where a root or a part gets its pose: `kDriven | index in drivenTracks`.
+    static constexpr std::uint32_t kDriven = 0x2000'0000u;
     /// A root frame taken from `EvaluatedFrame::attachedRoots` (SPEC 9.2).
     static constexpr std::uint32_t kAttached = 0x7fff'ffffu;
     /// A root frame that does not move: `constantRoots[object]`.
@@ -93,6 +101,7 @@ struct AnimationProgram {
     std::vector<TurnTrack> turnTracks;
     std::vector<float> angles;  ///< keys' angles of the turn tracks, track after track
     std::vector<ConstantMotion> constantMotions;
+    std::vector<DrivenTrack> drivenTracks;
     std::vector<Surface> surfaces;
     /// The model types of the instances, so that `models` stay valid as long as the program.
     std::vector<std::shared_ptr<const ModelType>> types;
@@ -132,9 +141,15 @@ struct AnimationProgram {
         Transform* parts;
     };
     /// The frames of object i with this frame's `segments` and, if it is
-    /// attached, `attachedRoots[i]`; its parts' into `parts`.
-    ObjectFrames objectFrames(std::size_t i, const TrackSegment* segments,
-                              const std::vector<Transform>& attachedRoots, Transform* parts) const;
+    /// attached, `frame.attachedRoots[i]`; driven tracks at `frame.time`; its
+    /// parts' into `parts`.
+    ObjectFrames objectFrames(std::size_t i, const TrackSegment* segments, const EvaluatedFrame& frame,
+                              Transform* parts) const;
+    /// Pose of driven track `track` at time t.
+    Pose drivenPose(std::uint32_t track, double t) const {
+        const DrivenTrack& driven = drivenTracks[track];
+        return evaluateTrack(driven.track, t, driven.rest);
+    }
     /// Primitive `shape` (0 for a primitive object; a model's shapes in
     /// order) of object i whose frames are `frames`.
     Primitive objectPrimitive(std::size_t i, std::uint32_t shape, const ObjectFrames& frames) const {

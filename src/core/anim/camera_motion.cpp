@@ -53,12 +53,15 @@ Transform cameraFrameAt(const SceneDesc& scene, double t) {
 
 double cameraDistanceAt(const SceneDesc& scene, double t) {
     const Track& zoom = scene.camera.zoom;
-    if (zoom.keys.empty()) return scene.camera.distance;
-    // The smallest d a key may have is above 0; a curve that dips below it
-    // stops at a thousandth of the smallest key.
-    double smallest = zoom.keys.front().pose.position.x;
+    const double written = scene.camera.distance;
+    if (zoom.keys.empty() && !zoom.drives) return written;
+    // The smallest d a key may have is above 0; a curve (or a drive) that dips
+    // below it stops at a thousandth of the smallest key (of `/camera`'s d
+    // without keys).
+    double smallest = zoom.keys.empty() ? written : double(zoom.keys.front().pose.position.x);
     for (const Key& k : zoom.keys) smallest = std::min(smallest, double(k.pose.position.x));
-    return std::max(double(evaluateTrack(zoom, t, Pose{}).position.x), smallest / 1000.0);
+    const Pose rest{{float(written), 0, 0}, {}};
+    return std::max(double(evaluateTrack(zoom, t, rest).position.x), smallest / 1000.0);
 }
 
 }  // namespace f2

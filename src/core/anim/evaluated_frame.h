@@ -77,6 +77,8 @@ struct EvaluatedFrame {
     /// Where the time falls in each key layout of the scene's animation
     /// (AnimationProgram::segmentsAt): scratch of the evaluation.
     std::vector<TrackSegment> segments;
+    /// The time (frames) the evaluation is at: driven tracks (SPEC 10.7) read it.
+    double time = 0;
     /// The program that filled this frame last: when it fills it again, the
     /// surfaces and the primitives of objects that never move are in place.
     std::shared_ptr<const AnimationProgram> filledBy;

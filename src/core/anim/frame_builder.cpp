@@ -149,6 +149,7 @@ FrameEvaluation FrameEvaluation::begin(const SceneDesc& scene, double t, Evaluat
     attachedRootFrames(scene, t, frame.attachedRoots);
     // Where t falls among the keys, once per key layout.
     evaluation.program->segmentsAt(t, frame.segments);
+    frame.time = t;
     return evaluation;
 }
 

@@ -136,18 +136,26 @@ void forEachHiddenShape(const SceneDesc& scene, double t, Visit&& visit) {
 /// time t (shape: its index among the object's primitives; rgb: 0..255,
 /// unrounded), least specific target first, so the last call for a shape
 /// is its colour. A shape painted in its model is reached only by its own
-/// track (SPEC 10.3).
+/// track (SPEC 10.3). A track with drives and no keys (SPEC 10.7) keeps each
+/// shape's `/paint` in the channels it does not drive.
 template <class Visit>
 void forEachKeyedColour(const SceneDesc& scene, double t, Visit&& visit) {
+    // An easing that overshoots, or a drive, stops at the ends of the scale.
+    const auto clamped = [](Vec3 v) {
+        return Vec3{std::clamp(v.x, 0.0f, 255.0f), std::clamp(v.y, 0.0f, 255.0f),
+                    std::clamp(v.z, 0.0f, 255.0f)};
+    };
     for (const TargetTrack& c : scene.colourTracks) {
-        if (c.track.keys.empty()) continue;
-        const Vec3 v = evaluateTrack(c.track, t, Pose{}).position;
-        // An easing that overshoots stops at the ends of the scale.
-        const Vec3 rgb{std::clamp(v.x, 0.0f, 255.0f), std::clamp(v.y, 0.0f, 255.0f),
-                       std::clamp(v.z, 0.0f, 255.0f)};
+        const bool keyed = !c.track.keys.empty();
+        if (!keyed && !c.track.drives) continue;
+        const Vec3 rgb = keyed ? clamped(evaluateTrack(c.track, t, Pose{}).position) : Vec3{};
+        const SceneObject& object = scene.objects[c.target.object];
         forEachShapeOf(scene, c.target, c.shape, [&](std::size_t shape, const ModelShape* inModel) {
-            if (!inModel || !inModel->ownColor || c.shape >= 0)
-                visit(std::size_t(c.target.object), shape, rgb);
+            if (inModel && inModel->ownColor && c.shape < 0) return;
+            if (keyed) return visit(std::size_t(c.target.object), shape, rgb);
+            const Color8 paint = object.appearance[shape].color;
+            const Pose rest{{float(paint.r), float(paint.g), float(paint.b)}, {}};
+            visit(std::size_t(c.target.object), shape, clamped(evaluateTrack(c.track, t, rest).position));
         });
     }
 }

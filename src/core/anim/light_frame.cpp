@@ -34,15 +34,15 @@ Transform lightFrameAt(const SceneDesc& scene, const LightMotion& motion, double
 float lightIntensityAt(const SceneDesc& scene, std::int32_t motion, float written, double t) {
     if (motion == kStillLight) return written;
     const Track& track = scene.lightMotions[std::size_t(motion)].intensity;
-    if (track.keys.empty()) return written;
-    return std::max(0.0f, evaluateTrack(track, t, Pose{}).position.x);
+    if (track.keys.empty() && !track.drives) return written;
+    return std::max(0.0f, evaluateTrack(track, t, Pose{{written, 0, 0}, {}}).position.x);
 }
 
 PlacedLight placeLight(const SceneDesc& scene, std::int32_t motion, Vec3 position, Vec3 direction, double t) {
     if (motion == kStillLight) return {position, direction};
     const LightMotion& m = scene.lightMotions[std::size_t(motion)];
     // A named light that neither moves nor rides keeps its numbers bit for bit.
-    if (m.track.keys.empty() && !m.attachedTo) return {position, direction};
+    if (m.track.keys.empty() && !m.track.drives && !m.attachedTo) return {position, direction};
     const Transform world = lightFrameAt(scene, m, t);
     return {world.applyToPoint(position), world.applyToVector(direction)};
 }

@@ -86,13 +86,21 @@ double interpolationWeight(const Easing& easing, double u) {
     return u;
 }
 
-Pose evaluateTrack(const Track& track, double t, const Pose& rest) {
+namespace {
+Pose keyedPose(const Track& track, double t, const Pose& rest) {
     const std::vector<Key>& keys = track.keys;
     if (keys.empty()) return rest;
     const TrackSegment segment = segmentAt(
         keys.size(), [&](std::size_t i) { return keys[i].time; },
         [&](std::size_t i) -> const Easing& { return track.modeAfter(i); }, t);
     return poseInSegment(segment, [&](std::size_t i) -> const Pose& { return keys[i].pose; });
+}
+}  // namespace
+
+Pose evaluateTrack(const Track& track, double t, const Pose& rest) {
+    Pose pose = keyedPose(track, t, rest);
+    if (track.drives) applyDrives(*track.drives, t, pose);
+    return pose;
 }
 
 }  // namespace f2

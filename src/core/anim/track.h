@@ -15,6 +15,7 @@ namespace f2 {
 /// the first holds, after the last the last holds; `rest` when there are no keys.
 /// Between two keys the mode of the earlier one (its own, or the track's) applies.
 /// `t` should be finite (the front ends check); NaN gives the first key.
+/// The track's drives (SPEC 10.7) then replace the numbers they drive.
 Pose evaluateTrack(const Track& track, double t, const Pose& rest);
 
 /// Smoothstep 3u^2 - 2u^3 used by `/interp ease`.

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <initializer_list>
 #include <numbers>
+#include <span>
+#include <utility>
 #include <vector>
 
 #include "core/parse/language.h"
@@ -17,93 +19,40 @@ namespace f2 {
 
 namespace {
 
-constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
-constexpr double kRadiansPerDegree = std::numbers::pi / 180.0;
 /// SPEC 9.4: an integer field takes a value this close to a whole number.
 constexpr double kWholeTolerance = 1e-6;
 
 bool isDigit(char c) { return c >= '0' && c <= '9'; }
 
-// Trigonometry in degrees. The angle is first reduced exactly (fmod is exact),
-// so that the multiples of 90 give exact 0 and ±1: cos(90) is 0, not 6e-17.
-double sinDegrees(double degrees) {
-    const double r = std::fmod(degrees, 360.0);
-    if (r == 0 || r == 180 || r == -180) return 0;
-    if (r == 90 || r == -270) return 1;
-    if (r == 270 || r == -90) return -1;
-    return std::sin(r * kRadiansPerDegree);
-}
+using Code = std::vector<ExprInstruction>;
 
-double cosDegrees(double degrees) {
-    const double r = std::fmod(degrees, 360.0);
-    if (r == 0) return 1;
-    if (r == 180 || r == -180) return -1;
-    if (r == 90 || r == -90 || r == 270 || r == -270) return 0;
-    return std::cos(r * kRadiansPerDegree);
-}
-
-/// tan of an odd multiple of 90 has no value; the caller reports it.
-std::optional<double> tanDegrees(double degrees) {
-    const double r = std::fmod(degrees, 180.0);
-    if (r == 90 || r == -90) return std::nullopt;
-    if (r == 0) return 0.0;
-    if (r == 45 || r == -135) return 1.0;
-    if (r == -45 || r == 135) return -1.0;
-    return std::tan(r * kRadiansPerDegree);
-}
-
-enum class Function {
-    Sin,
-    Cos,
-    Tan,
-    Asin,
-    Acos,
-    Atan,
-    Atan2,
-    Sqrt,
-    Abs,
-    Floor,
-    Ceil,
-    Exp,
-    Log,
-    Round,
-    Min,
-    Max,
-    If
+/// A value while an expression is read: a number, or (compiling, SPEC
+/// 10.7) the code that computes it from the inputs.
+struct Value {
+    double number = 0;
+    Code code;  ///< not empty: computed per evaluation
+    bool dynamic() const { return !code.empty(); }
 };
 
-struct FunctionInfo {
-    std::string_view name;
-    Function function;
-    int minArgs;
-    int maxArgs;  ///< -1: any number
-};
-
-constexpr std::array<FunctionInfo, 17> kFunctions = {{
-    {"sin", Function::Sin, 1, 1},
-    {"cos", Function::Cos, 1, 1},
-    {"tan", Function::Tan, 1, 1},
-    {"asin", Function::Asin, 1, 1},
-    {"acos", Function::Acos, 1, 1},
-    {"atan", Function::Atan, 1, 1},
-    {"atan2", Function::Atan2, 2, 2},
-    {"sqrt", Function::Sqrt, 1, 1},
-    {"abs", Function::Abs, 1, 1},
-    {"floor", Function::Floor, 1, 1},
-    {"ceil", Function::Ceil, 1, 1},
-    {"exp", Function::Exp, 1, 1},
-    {"log", Function::Log, 1, 1},
-    {"round", Function::Round, 1, 1},
-    {"min", Function::Min, 1, -1},
-    {"max", Function::Max, 1, -1},
-    {"if", Function::If, 3, 3},  // SPEC 10.7: evaluates only the branch it returns
-}};
-
-const FunctionInfo* findFunction(std::string_view name) {
-    for (const FunctionInfo& f : kFunctions) {
-        if (f.name == name) return &f;
+/// Appends the code of `v` (a Push when it is a number).
+void appendCode(Code& out, Value&& v) {
+    if (!v.dynamic()) {
+        out.push_back({ExprOp::Push, ExprFunction::Sin, 0, 0, v.number});
+        return;
     }
-    return nullptr;
+    out.insert(out.end(), v.code.begin(), v.code.end());
+}
+
+ExprInstruction instruction(ExprOp op, std::size_t at, std::uint32_t index = 0) {
+    return {op, ExprFunction::Sin, index, std::uint32_t(at), 0};
+}
+
+/// The code of `v` then `after`.
+Value followedBy(Value v, ExprInstruction after) {
+    Value out;
+    appendCode(out.code, std::move(v));
+    out.code.push_back(after);
+    return out;
 }
 
 /// Recursive descent over
@@ -126,20 +75,23 @@ const FunctionInfo* findFunction(std::string_view name) {
 /// error (SPEC 10.7).
 class ExpressionParser {
    public:
-    ExpressionParser(std::string_view text, const Variables& variables)
-        : text_(text), variables_(variables) {}
+    /// `inputs`: the names whose values are given at each evaluation of the
+    /// compiled code (none: the text is evaluated now).
+    ExpressionParser(std::string_view text, const Variables& variables,
+                     std::span<const std::string_view> inputs = {})
+        : text_(text), variables_(variables), inputs_(inputs) {}
 
     ExpressionResult whole() {
-        const double v = expression();
+        Value v = expression();
         if (!failed_) {
             skipSpaces();
             if (pos_ < text_.size()) unexpected();
         }
-        return result(v);
+        return result(v).first;
     }
 
-    ExpressionResult parenthesized() {
-        const double v = primary();
+    std::pair<ExpressionResult, ExpressionCode> parenthesized() {
+        Value v = primary();
         if (!failed_) {
             skipSpaces();
             if (pos_ < text_.size()) {
@@ -151,15 +103,17 @@ class ExpressionParser {
     }
 
    private:
-    ExpressionResult result(double v) const {
+    std::pair<ExpressionResult, ExpressionCode> result(Value& v) const {
         ExpressionResult r;
         r.ok = !failed_;
-        r.value = failed_ ? 0 : (v == 0 ? 0.0 : v);  // -0 becomes 0, as for numbers
+        r.value =
+            failed_ || v.dynamic() ? 0 : (v.number == 0 ? 0.0 : v.number);  // -0 becomes 0, as for numbers
         r.errorOffset = errorOffset_;
         r.errorLength = errorLength_;
         r.message = message_;
         r.followOn = followOn_;
-        return r;
+        if (failed_ || !v.dynamic()) return {r, ExpressionCode::constant(r.value)};
+        return {r, ExpressionCode(std::move(v.code))};
     }
 
     void fail(std::size_t offset, std::string message, std::size_t length = 0) {
@@ -249,14 +203,48 @@ class ExpressionParser {
         return true;
     }
 
-    /// A finite result, or an error at the operator or function at `at`.
-    double checked(double v, std::size_t at, std::string_view what) {
-        if (skipping_ > 0) return 0;  // not evaluated: its value is never used
-        if (!failed_ && !std::isfinite(v)) {
-            fail(at, "the result of " + std::string(what) + " is not finite");
-            return 0;
+    /// `a op b` for the operator at `at`: folded now when both are numbers
+    /// (an error at the operator if it fails), else code.
+    Value binary(ExprOp op, Value a, Value b, std::size_t at) {
+        if (failed_) return {};
+        if (a.dynamic() || b.dynamic()) {
+            Value out;
+            appendCode(out.code, std::move(a));
+            appendCode(out.code, std::move(b));
+            out.code.push_back(instruction(op, at));
+            return out;
         }
-        return v;
+        if (skipping_ > 0) return {};  // not evaluated: its value is never used
+        const ExprStep s = applyOperator(op, a.number, b.number);
+        if (s.problem == ExprProblem::None) return {s.value, {}};
+        // Where a condition known only per evaluation decides whether this
+        // runs, its problem is one of the evaluations that run it.
+        if (conditional_ > 0) {
+            const ExprInstruction push{ExprOp::Push, ExprFunction::Sin, 0, std::uint32_t(at), a.number};
+            return binary(op, Value{0, {push}}, std::move(b), at);
+        }
+        fail(at, operatorProblemText(op, s.problem));
+        return {};
+    }
+
+    /// 1 if `v` is not 0, else 0.
+    static Value toBool(Value v, std::size_t at) {
+        if (!v.dynamic()) return {v.number != 0 ? 1.0 : 0.0, {}};
+        return followedBy(std::move(v), instruction(ExprOp::ToBool, at));
+    }
+
+    /// `a && b` or `a || b` whose left side is code: `jump` skips b when a decides.
+    Value shortCircuit(Value a, ExprOp jump, std::size_t at) {
+        ++conditional_;
+        Value b = jump == ExprOp::AndJump ? equality() : logicalAnd();
+        --conditional_;
+        if (failed_) return {};
+        Code tail;
+        appendCode(tail, std::move(b));
+        tail.push_back(instruction(ExprOp::ToBool, at));
+        Value out = followedBy(std::move(a), instruction(jump, at, std::uint32_t(tail.size())));
+        out.code.insert(out.code.end(), tail.begin(), tail.end());
+        return out;
     }
 
     /// Takes the ')' that closes the '(' at `open`, or reports what stands there.
@@ -274,29 +262,39 @@ class ExpressionParser {
     }
 
     /// `a || b`: 1 if either is not 0, else 0; `b` is not evaluated when `a` is not 0.
-    double expression() {
-        double v = logicalAnd();
+    Value expression() {
+        Value v = logicalAnd();
         while (!failed_ && peekIs("||")) {
+            const std::size_t at = pos_;
             pos_ += 2;
-            const bool decided = v != 0;
+            if (v.dynamic()) {
+                v = shortCircuit(std::move(v), ExprOp::OrJump, at);
+                continue;
+            }
+            const bool decided = v.number != 0;
             if (decided) ++skipping_;
-            const double rhs = logicalAnd();
+            Value rhs = logicalAnd();
             if (decided) --skipping_;
-            v = decided || rhs != 0 ? 1 : 0;
+            v = decided ? Value{1, {}} : toBool(std::move(rhs), at);
         }
         return v;
     }
 
     /// `a && b`: 1 if both are not 0, else 0; `b` is not evaluated when `a` is 0.
-    double logicalAnd() {
-        double v = equality();
+    Value logicalAnd() {
+        Value v = equality();
         while (!failed_ && peekIs("&&")) {
+            const std::size_t at = pos_;
             pos_ += 2;
-            const bool decided = v == 0;
+            if (v.dynamic()) {
+                v = shortCircuit(std::move(v), ExprOp::AndJump, at);
+                continue;
+            }
+            const bool decided = v.number == 0;
             if (decided) ++skipping_;
-            const double rhs = equality();
+            Value rhs = equality();
             if (decided) --skipping_;
-            v = !decided && rhs != 0 ? 1 : 0;
+            v = decided ? Value{} : toBool(std::move(rhs), at);
         }
         return v;
     }
@@ -320,8 +318,8 @@ class ExpressionParser {
     }
 
     /// `a == b`, `a != b`: 1 or 0, exactly (every value is finite: no NaN).
-    double equality() {
-        const double v = relation();
+    Value equality() {
+        Value v = relation();
         if (failed_) return v;
         const std::string_view op = comparison({"==", "!="});
         if (op.empty()) return v;
@@ -329,118 +327,102 @@ class ExpressionParser {
         pos_ += 2;
         if (pos_ < text_.size() && text_[pos_] == '=') {  // JavaScript's '===' and '!=='
             fail(at, quoteToken(std::string(op) + "=") + " is not an operator: write " + quoteToken(op));
-            return 0;
+            return {};
         }
-        const double rhs = relation();
-        if (failed_) return 0;
+        Value rhs = relation();
+        if (failed_) return {};
         refuseChain(op, {"==", "!="});
-        return (v == rhs) == (op == "==") ? 1 : 0;
+        return binary(op == "==" ? ExprOp::Eq : ExprOp::Ne, std::move(v), std::move(rhs), at);
     }
 
     /// `a < b`, `a <= b`, `a > b`, `a >= b`: 1 or 0.
-    double relation() {
-        const double v = sum();
+    Value relation() {
+        Value v = sum();
         if (failed_) return v;
         if (peekIs("<>")) {
             fail(pos_, "'<>' is not an operator: to test that two values differ, write '!='");
-            return 0;
+            return {};
         }
         const std::string_view op = comparison({"<=", ">=", "<", ">"});
         if (op.empty()) return v;
+        const std::size_t at = pos_;
         pos_ += op.size();
-        const double rhs = sum();
-        if (failed_) return 0;
+        Value rhs = sum();
+        if (failed_) return {};
         refuseChain(op, {"<=", ">=", "<", ">"});
-        if (op == "<") return v < rhs ? 1 : 0;
-        if (op == "<=") return v <= rhs ? 1 : 0;
-        if (op == ">") return v > rhs ? 1 : 0;
-        return v >= rhs ? 1 : 0;
+        const ExprOp code = op == "<"    ? ExprOp::Lt
+                            : op == "<=" ? ExprOp::Le
+                            : op == ">"  ? ExprOp::Gt
+                                         : ExprOp::Ge;
+        return binary(code, std::move(v), std::move(rhs), at);
     }
 
-    double sum() {
-        double v = product();
+    Value sum() {
+        Value v = product();
         while (!failed_) {
             const char op = peek();
             if (op != '+' && op != '-') break;
             const std::size_t at = pos_++;
-            const double rhs = product();
-            v = checked(op == '+' ? v + rhs : v - rhs, at, op == '+' ? "'+'" : "'-'");
+            Value rhs = product();
+            v = binary(op == '+' ? ExprOp::Add : ExprOp::Sub, std::move(v), std::move(rhs), at);
         }
         return v;
     }
 
-    double product() {
-        double v = unary();
+    Value product() {
+        Value v = unary();
         while (!failed_) {
             const char op = peek();
             if (op != '*' && op != '/' && op != '%') break;
             const std::size_t at = pos_++;
-            const double rhs = unary();
+            Value rhs = unary();
             if (failed_) break;
-            if (op == '*') {
-                v = checked(v * rhs, at, "'*'");
-            } else if (skipping_ > 0) {
-                v = 0;  // not evaluated
-            } else if (rhs == 0) {
-                fail(at, op == '/' ? "division by zero" : "remainder of a division by zero");
-            } else if (op == '/') {
-                v = checked(v / rhs, at, "'/'");
-            } else {
-                // The remainder takes the sign of the divisor: 7 % -3 = -2, -7 % 3 = 2.
-                double r = std::fmod(v, rhs);
-                if (r != 0 && ((r < 0) != (rhs < 0))) r += rhs;
-                v = r;
-            }
+            const ExprOp code = op == '*' ? ExprOp::Mul : op == '/' ? ExprOp::Div : ExprOp::Mod;
+            v = binary(code, std::move(v), std::move(rhs), at);
         }
         return v;
     }
 
-    double unary() {
+    Value unary() {
         const char c = peek();
         // '!=' where an operand should be is not a '!': unexpected() names it.
         if (c != '-' && c != '+' && (c != '!' || peekIs("!="))) return power();
         const std::size_t at = pos_++;
-        if (!enter(at)) return 0;
-        const double v = unary();
+        if (!enter(at)) return {};
+        Value v = unary();
         --depth_;
-        if (c == '!') return v == 0 ? 1 : 0;
-        return c == '-' ? -v : v;
+        if (c == '+') return v;
+        const ExprOp op = c == '!' ? ExprOp::Not : ExprOp::Neg;
+        if (v.dynamic()) return followedBy(std::move(v), instruction(op, at));
+        if (c == '!') return {v.number == 0 ? 1.0 : 0.0, {}};
+        return {-v.number, {}};
     }
 
-    double power() {
-        const double base = primary();
+    Value power() {
+        Value base = primary();
         if (failed_ || peek() != '^') return base;
         const std::size_t at = pos_++;
-        if (!enter(at)) return 0;
-        const double exponent = unary();  // 2^-1 and 2^3^2 = 2^9
+        if (!enter(at)) return {};
+        Value exponent = unary();  // 2^-1 and 2^3^2 = 2^9
         --depth_;
-        if (failed_ || skipping_ > 0) return 0;
-        if (base == 0 && exponent < 0) {
-            fail(at, "division by zero (0 to a negative power)");
-            return 0;
-        }
-        if (base < 0 && exponent != std::floor(exponent)) {
-            fail(at, "a negative number to a fractional power is undefined");
-            return 0;
-        }
-        return checked(std::pow(base, exponent), at, "'^'");
+        return binary(ExprOp::Pow, std::move(base), std::move(exponent), at);
     }
 
-    double primary() {
+    Value primary() {
         const char c = peek();
         const std::size_t at = pos_;
         if (c == '(') {
             ++pos_;
-            if (!enter(at)) return 0;
-            const double v = expression();
+            if (!enter(at)) return {};
+            Value v = expression();
             --depth_;
-            if (failed_ || !close(at)) return 0;
+            if (failed_ || !close(at)) return {};
             return v;
         }
-        if (isDigit(c) || c == '.') return number();
+        if (isDigit(c) || c == '.') return {number(), {}};
         if (isNameStart(c)) return name();
         unexpected();
-        return 0;
+        return {};
     }
 
     double number() {
@@ -465,26 +447,32 @@ class ExpressionParser {
         return n.value;
     }
 
-    double name() {
+    Value name() {
         const std::size_t start = pos_;
         while (pos_ < text_.size() && isNameChar(text_[pos_])) ++pos_;
         const std::string_view word = text_.substr(start, pos_ - start);
-        const FunctionInfo* function = findFunction(word);
+        const ExprFunctionInfo* function = findExpressionFunction(word);
         if (peek() == '(') {
             if (!function) {
                 fail(start, "unknown function " + quoteToken(word) +
                                 (word == "not" ? " (to negate, write '!')" : ""));
-                return 0;
+                return {};
             }
             return call(*function, start);
         }
-        if (const std::optional<double> v = variables_.find(word)) return *v;
+        // An input (a drive's frame and time) is known only at each evaluation.
+        for (std::size_t k = 0; k < inputs_.size(); ++k) {
+            if (inputs_[k] != word) continue;
+            if (skipping_ > 0) return {};  // not evaluated
+            return {0, {instruction(ExprOp::Load, start, std::uint32_t(k))}};
+        }
+        if (const std::optional<double> v = variables_.find(word)) return {*v, {}};
         // A variable whose '/let' failed is known; where nothing is evaluated its value is not needed.
-        if (variables_.isBroken(word) && skipping_ > 0) return 0;
+        if (variables_.isBroken(word) && skipping_ > 0) return {};
         if (variables_.isBroken(word)) {
             if (!failed_) followOn_ = true;
             fail(start, "variable " + quoteToken(word) + " has no value: its '/let' failed", word.size());
-            return 0;
+            return {};
         }
         if (function) {
             fail(start, quoteToken(word) + " is a function: write " + std::string(word) + "(...)",
@@ -494,29 +482,36 @@ class ExpressionParser {
                  "unknown variable " + quoteToken(word) + (word == "not" ? " (to negate, write '!')" : ""),
                  word.size());
         }
-        return 0;
+        return {};
     }
 
-    double call(const FunctionInfo& f, std::size_t at) {
+    Value call(const ExprFunctionInfo& f, std::size_t at) {
         const std::size_t open = pos_++;  // the '('
-        if (!enter(open)) return 0;
-        std::vector<double> args;
+        if (!enter(open)) return {};
+        const bool isIf = f.function == ExprFunction::If;
+        std::vector<Value> args;
         if (peek() != ')') {
             for (;;) {
                 // if(c, a, b) evaluates c, then only the branch it returns; the
-                // other, and any argument past the third, is read but not evaluated.
-                const bool skip = f.function == Function::If && !args.empty() &&
-                                  (args.size() > 2 || (args[0] != 0) != (args.size() == 1));
+                // other, and any argument past the third, is read but not
+                // evaluated. A c known only per evaluation decides nothing now.
+                const bool skip =
+                    isIf && !args.empty() &&
+                    (args.size() > 2 || (!args[0].dynamic() && (args[0].number != 0) != (args.size() == 1)));
+                // Its branches, when c is known only per evaluation, may not run.
+                const bool conditional = isIf && !args.empty() && args[0].dynamic();
                 if (skip) ++skipping_;
+                if (conditional) ++conditional_;
                 args.push_back(expression());
+                if (conditional) --conditional_;
                 if (skip) --skipping_;
-                if (failed_) return 0;
+                if (failed_) return {};
                 if (peek() != ',') break;
                 ++pos_;
             }
         }
         --depth_;
-        if (!close(open)) return 0;
+        if (!close(open)) return {};
         const int n = static_cast<int>(args.size());
         if (n < f.minArgs || (f.maxArgs >= 0 && n > f.maxArgs)) {
             std::string count =
@@ -524,79 +519,56 @@ class ExpressionParser {
             const bool plural = f.minArgs != 1;
             fail(at, quoteToken(f.name) + " takes " + count + (plural ? " arguments" : " argument") +
                          ", got " + std::to_string(n) +
-                         (f.function == Function::If ? " (write if(condition, value if true, value if false))"
-                                                     : ""));
-            return 0;
+                         (isIf ? " (write if(condition, value if true, value if false))" : ""));
+            return {};
         }
-        if (skipping_ > 0) return 0;  // not evaluated: no domain errors
-        return apply(f, args, at);
+        if (skipping_ > 0) return {};  // not evaluated: no domain errors
+        if (isIf) return choice(std::move(args), at);
+        if (std::any_of(args.begin(), args.end(), [](const Value& a) { return a.dynamic(); }))
+            return compiledCall(f, std::move(args), at);
+        std::vector<double> numbers;
+        for (const Value& a : args) numbers.push_back(a.number);
+        const ExprStep s = applyFunction(f.function, numbers);
+        if (s.problem == ExprProblem::None) return {s.value, {}};
+        if (conditional_ > 0) return compiledCall(f, std::move(args), at);  // as in binary()
+        fail(at, functionProblemText(f.function, numbers[0], s.problem));
+        return {};
     }
 
-    double apply(const FunctionInfo& f, const std::vector<double>& args, std::size_t at) {
-        const double x = args[0];
-        const std::string call = std::string(f.name) + "(" + formatNumber(x) + ")";
-        switch (f.function) {
-            case Function::Sin:
-                return sinDegrees(x);
-            case Function::Cos:
-                return cosDegrees(x);
-            case Function::Tan: {
-                const std::optional<double> t = tanDegrees(x);
-                if (!t) fail(at, call + " is undefined (an odd multiple of 90 degrees)");
-                return t.value_or(0);
-            }
-            case Function::Asin:
-            case Function::Acos:
-                if (x < -1 || x > 1) {
-                    fail(at, call + " is undefined (the argument must be from -1 to 1)");
-                    return 0;
-                }
-                return (f.function == Function::Asin ? std::asin(x) : std::acos(x)) * kDegreesPerRadian;
-            case Function::Atan:
-                return std::atan(x) * kDegreesPerRadian;
-            case Function::Atan2:
-                return std::atan2(x, args[1]) * kDegreesPerRadian;
-            case Function::Sqrt:
-                if (x < 0) {
-                    fail(at, call + " is undefined (a negative number)");
-                    return 0;
-                }
-                return std::sqrt(x);
-            case Function::Abs:
-                return std::fabs(x);
-            case Function::Floor:
-                return std::floor(x);
-            case Function::Ceil:
-                return std::ceil(x);
-            case Function::Exp:
-                return checked(std::exp(x), at, call);
-            case Function::Log:
-                if (x <= 0) {
-                    fail(at, call + " is undefined (the argument must be > 0)");
-                    return 0;
-                }
-                return std::log(x);
-            case Function::Round:
-                return std::round(x);  // halves away from zero
-            case Function::If:
-                return x != 0 ? args[1] : args[2];
-            case Function::Min:
-            case Function::Max: {
-                double best = x;
-                for (double a : args)
-                    best = f.function == Function::Min ? std::min(best, a) : std::max(best, a);
-                return best;
-            }
-        }
-        return 0;
+    /// The code of a call of `f` on `args`.
+    static Value compiledCall(const ExprFunctionInfo& f, std::vector<Value> args, std::size_t at) {
+        Value out;
+        for (Value& a : args) appendCode(out.code, std::move(a));
+        ExprInstruction i = instruction(ExprOp::Call, at, std::uint32_t(args.size()));
+        i.function = f.function;
+        out.code.push_back(i);
+        return out;
+    }
+
+    /// if(c, a, b): the branch c gives now, or code that takes it per evaluation.
+    static Value choice(std::vector<Value> args, std::size_t at) {
+        if (!args[0].dynamic()) return std::move(args[0].number != 0 ? args[1] : args[2]);
+        Code otherwise;
+        appendCode(otherwise, std::move(args[2]));
+        Code then;
+        appendCode(then, std::move(args[1]));
+        then.push_back(instruction(ExprOp::Jump, at, std::uint32_t(otherwise.size())));
+        Value out =
+            followedBy(std::move(args[0]), instruction(ExprOp::IfJump, at, std::uint32_t(then.size())));
+        out.code.insert(out.code.end(), then.begin(), then.end());
+        out.code.insert(out.code.end(), otherwise.begin(), otherwise.end());
+        return out;
     }
 
     std::string_view text_;
     const Variables& variables_;
+    std::span<const std::string_view> inputs_;
     std::size_t pos_ = 0;
     int depth_ = 0;
     /// > 0 while reading what is not evaluated (SPEC 10.7).
     int skipping_ = 0;
+    /// > 0 while compiling what a condition known only per evaluation may skip.
+    int conditional_ = 0;
     bool failed_ = false;
     bool followOn_ = false;
     std::size_t errorOffset_ = 0;
@@ -640,7 +612,7 @@ bool Variables::isPredefined(std::string_view name) {
 
 std::vector<std::string_view> expressionFunctionNames() {
     std::vector<std::string_view> names;
-    for (const FunctionInfo& f : kFunctions) names.push_back(f.name);
+    for (const ExprFunctionInfo& f : expressionFunctions()) names.push_back(f.name);
     return names;
 }
 
@@ -649,20 +621,19 @@ ExpressionResult evaluateExpression(std::string_view text, const Variables& vari
 }
 
 ExpressionResult evaluateParenthesized(std::string_view text, const Variables& variables) {
-    return ExpressionParser(text, variables).parenthesized();
+    return ExpressionParser(text, variables).parenthesized().first;
+}
+
+CompiledExpression compileParenthesized(std::string_view text, const Variables& variables,
+                                        std::span<const std::string_view> inputs) {
+    auto [result, code] = ExpressionParser(text, variables, inputs).parenthesized();
+    return {std::move(result), std::move(code)};
 }
 
 std::optional<double> nearWhole(double value) {
     const double whole = std::round(value);
     if (std::fabs(value - whole) <= kWholeTolerance) return whole == 0 ? 0.0 : whole;
     return std::nullopt;
-}
-
-std::string formatNumber(double value) {
-    std::array<char, 32> buffer{};
-    const auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-    if (ec != std::errc()) return "?";
-    return std::string(buffer.data(), end);
 }
 
 }  // namespace f2

@@ -7,11 +7,14 @@
 #include <cstddef>
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
+
+#include "core/math/expression_code.h"
 
 namespace f2 {
 
@@ -71,14 +74,30 @@ ExpressionResult evaluateExpression(std::string_view text, const Variables& vari
 /// matching ')'.
 ExpressionResult evaluateParenthesized(std::string_view text, const Variables& variables);
 
+/// A `( … )` argument compiled (SPEC 10.7): `result` as evaluateParenthesized
+/// gives it (its value 0 when the expression depends on an input), and the
+/// code that computes it from the inputs' values.
+struct CompiledExpression {
+    ExpressionResult result;
+    ExpressionCode code;
+};
+
+/// Compiles a `( … )` argument in which each name of `inputs` (a drive's
+/// `frame` and `time`) stands for the value given at that index at each
+/// evaluation; every other variable takes its value now. What does not
+/// depend on an input is computed now, with its errors; what does is left to
+/// ExpressionCode::evaluate, whose problems are those of SPEC 9.4 too.
+CompiledExpression compileParenthesized(std::string_view text, const Variables& variables,
+                                        std::span<const std::string_view> inputs);
+
 /// The functions of expressions ("sin", …, "max"), in their table's order:
 /// completion and the generated grammar list these.
 std::vector<std::string_view> expressionFunctionNames();
 
+/// `value` in the shortest decimal form that reads back as the same double.
+inline std::string formatNumber(double value) { return shortestDecimal(value); }
+
 /// A whole number within 1e-6 of `value` (SPEC 9.4 integer fields), or nullopt.
 std::optional<double> nearWhole(double value);
-
-/// `value` in the shortest decimal form that reads back as the same double.
-std::string formatNumber(double value);
 
 }  // namespace f2

@@ -24,11 +24,12 @@ constexpr std::array kAttach = {Object, Target};
 constexpr std::array kModel = {NewName};
 constexpr std::array kPart = {NewName, Part, Number};
 constexpr std::array kCaption = {Number, Number, Number, Number, Number, Text, Number};
+constexpr std::array kDrive = {Target, Channel, Number};
 constexpr std::array<ArgKind, 0> kNone = {};
 
 // Rows in CommandId order (checked below). The syntax and meaning are what
 // hover shows; docs/scene-language.md has each command's full story.
-constexpr std::array<CommandSpec, 28> kCommands = {{
+constexpr std::array<CommandSpec, 29> kCommands = {{
     {CommandId::Camera, "/camera", Edition::First, CommandGroup::Setting, kNumbers,
      "/camera <w> <h> <d> [<px> <py> <pz> [<rx> <ry> <rz>]]",
      "/camera ${1:800} ${2:600} ${3:0.5} ${4:0} ${5:0} ${6:0} ${7:0} ${8:0} ${9:0}",
@@ -177,6 +178,13 @@ constexpr std::array<CommandSpec, 28> kCommands = {{
      "Inside `/model`: a part hanging on `root` or an earlier part, its pivot at `p` in the parent's "
      "frame, turned by its rest rotation `r`. Its keys (`/key t name.part …`) move it about the pivot.",
      false},
+    {CommandId::Drive, "/drive", Edition::Third, CommandGroup::Motion, kDrive,
+     "/drive <target> <channel> (<expression>)", "/drive ${1:target} ${2|px,py,pz,rx,ry,rz|} (${3:frame})",
+     "Every frame, one channel of the target is the expression's value, in place of its keys: "
+     "`px py pz rx ry rz` (the six numbers of a key), `intensity` (a named light), `d` (the camera), "
+     "`r g b` (a colour channel 0..255). In it, `frame` is the frame drawn (fractional in motion "
+     "blur) and `time` is `frame / fps`; other variables keep their value at this line.",
+     true},
 }};
 
 constexpr bool inIdOrder() {

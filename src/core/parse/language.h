@@ -32,6 +32,7 @@ enum class ArgKind : std::uint8_t {
     Path,           ///< a file path
     PointOrTarget,  ///< /look_at: x y z, or a target
     Text,           ///< a text in double quotes (/caption)
+    Channel,        ///< a drive's channel: px … rz, intensity, d, r g b (SPEC 10.7)
 };
 
 /// What a command does; the grammar and the highlighters colour by it.
@@ -73,6 +74,7 @@ enum class CommandId : std::uint8_t {
     NoShadow,
     Model,
     Part,
+    Drive,
 };
 
 struct CommandSpec {

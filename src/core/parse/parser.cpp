@@ -285,6 +285,7 @@ class Parser : private ExpansionSink {
         }
         while (!stopped_ && expander_.next(tokens_)) parseLine();
         addCameraKeys();
+        finishDrives();
         convertSecondsToFrames();
         checkAttachChanges();
         sortUnsortedTracks();
@@ -521,6 +522,8 @@ class Parser : private ExpansionSink {
             case Part:
                 error(commandPos(), "'/part' stands only inside a '/model' block");
                 return;
+            case Drive:
+                return parseDrive();
             case Let:
             case Repeat:
             case End:
@@ -2002,6 +2005,115 @@ class Parser : private ExpansionSink {
         addKey(*t, spec->property, time, {time.value, Pose{values, {}}, mode}, argPos(0));
     }
 
+    /// `/drive <target> <channel> (<expression>)` (SPEC 10.7): the expression
+    /// arrives compiled (SourceExpander); the drive goes into the track of the
+    /// channel's property, beside its keys.
+    void parseDrive() {
+        if (!expectArgs({3})) return;
+        const std::optional<Target> t =
+            target(0, CameraTarget::Accepted, LightTarget::Accepted, ShapeTarget::Accepted);
+        const std::optional<DriveChannel> channel = driveChannelFromWord(arg(1));
+        if (!channel && !failed(1)) {
+            std::string list;
+            ClosestWord closest(arg(1));
+            for (std::string_view c : driveChannelNames()) {
+                list += " " + std::string(c);
+                closest.consider(c);
+            }
+            const std::string_view guess = closest.best();
+            error(argPos(1),
+                  noteCharacters("unknown channel " + quoteToken(arg(1)) +
+                                     (guess.empty() ? "" : " (did you mean '" + std::string(guess) + "'?)") +
+                                     "; the channels are" + list,
+                                 arg(1), argPos(1)));
+        }
+        const LogicalToken& expression = argToken(2);
+        if (expression.form != TokenForm::Compiled && expression.form != TokenForm::Failed) {
+            error(argPos(2), "a drive's expression stands in parentheses: write '(" +
+                                 std::string(expression.written) + ")'");
+            return;
+        }
+        if (!t || !channel || expression.form != TokenForm::Compiled) return;
+        const std::string_view word = driveChannelName(*channel);
+        if (!hasChannel(*t, *channel)) {
+            error(argPos(1), quoteToken(word) + " is not a channel of " + targetText(*t) + " (" +
+                                 quoteToken(word) + " drives " + channelTargets(*channel) + ")");
+            return;
+        }
+        const TrackProperty property = *channel == DriveChannel::Intensity
+                                           ? TrackProperty(KeyProperty::Intensity)
+                                       : *channel == DriveChannel::D ? TrackProperty(KeyProperty::Zoom)
+                                       : *channel >= DriveChannel::R ? TrackProperty(KeyProperty::Colour)
+                                                                     : std::nullopt;
+        Track& track = trackOf(*t, property);
+        const auto slot = static_cast<std::size_t>(driveSlot(*channel));
+        if (track.drives && track.drives->bySlot[slot]) {
+            const f2::Drive& first = *track.drives->bySlot[slot];
+            const std::string where = first.file == expander_.fileName(tokens_.pos.file)
+                                          ? std::to_string(first.line) + ":" + std::to_string(first.column)
+                                          : first.place();
+            error(commandPos(), "second '/drive' of " + quoteToken(word) + " of " + targetText(*t) +
+                                    " (the first is at " + where + ")");
+            return;
+        }
+        auto drive = std::make_shared<f2::Drive>();
+        drive->target = targetName(*t);
+        drive->channel = *channel;
+        drive->expression = std::string(expression.written);
+        drive->file = expander_.fileName(tokens_.pos.file);
+        drive->line = commandPos().line;
+        drive->column = commandPos().column;
+        drive->code = tokens_.compiled;
+        auto drives = std::make_shared<TrackDrives>(track.drives ? *track.drives : TrackDrives{});
+        drives->bySlot[slot] = drive;
+        track.drives = std::move(drives);
+        drives_.push_back(std::move(drive));
+    }
+
+    /// Whether `t` has channel `c` (SPEC 10.7): the pose's numbers where a
+    /// pose is keyed, the others where keys of their property are allowed.
+    bool hasChannel(Target t, DriveChannel c) const {
+        switch (c) {
+            case DriveChannel::Intensity:
+                return hasProperty(t, KeyProperty::Intensity);
+            case DriveChannel::D:
+                return hasProperty(t, KeyProperty::Zoom);
+            case DriveChannel::R:
+            case DriveChannel::G:
+            case DriveChannel::B:
+                return hasProperty(t, KeyProperty::Colour);
+            default:  // a shape has no pose of its own (SPEC 10.1)
+                return t.shape < 0 &&
+                       (t.light < 0 || !scene_.lightMotions[static_cast<std::size_t>(t.light)].ambient);
+        }
+    }
+
+    /// What has channel `c`, for messages.
+    static std::string channelTargets(DriveChannel c) {
+        switch (c) {
+            case DriveChannel::Intensity:
+                return std::string(findKeyProperty("intensity")->targets);
+            case DriveChannel::D:
+                return std::string(findKeyProperty("d")->targets);
+            case DriveChannel::R:
+            case DriveChannel::G:
+            case DriveChannel::B:
+                return "the colour of " + std::string(findKeyProperty("colour")->targets);
+            default:
+                return "the pose of an object, a part, the camera or a light that is not ambient (not a "
+                       "shape)";
+        }
+    }
+
+    /// The scene's `/fps` is known at the end of the file: every drive's `time` is read at it.
+    void finishDrives() {
+        for (const std::shared_ptr<f2::Drive>& drive : drives_) {
+            drive->fps = scene_.fps;
+            scene_.drives.push_back(drive);
+        }
+        drives_ = {};
+    }
+
     /// SPEC 10.3's table (and 10.7's `visible`): colour and visible on objects,
     /// parts and shapes, intensity on named lights, d on the camera.
     static bool hasProperty(Target t, KeyProperty property) {
@@ -2599,6 +2711,8 @@ class Parser : private ExpansionSink {
     std::vector<std::uint32_t> setParent_, setSize_, setTop_;
     /// `/attach … at` (SPEC 10.7) until the end of the file (checkAttachChanges).
     std::vector<AttachChangeBook> attachChangeBooks_;
+    /// Every `/drive` (SPEC 10.7) until the end of the file, when `/fps` is known.
+    std::vector<std::shared_ptr<f2::Drive>> drives_;
 };
 
 ParseResult readError(const std::string& displayName, std::string message) {

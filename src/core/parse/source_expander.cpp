@@ -16,6 +16,7 @@
 #include "core/parse/language.h"
 #include "core/parse/number.h"
 #include "core/parse/unusual_char.h"
+#include "core/scene/drive.h"
 
 namespace f2 {
 
@@ -382,7 +383,11 @@ bool SourceExpander::next(LogicalLine& out) {
         } else if (command == kInclude) {
             runInclude(line.text, out);
         } else {
-            if (sink_.knowsCommand(command)) evaluateTokens(out, 1);
+            // A `/drive`'s expression (its third argument) is computed every frame (SPEC 10.7).
+            constexpr int kDriveExpression = 3;
+            const CommandSpec* spec = findCommand(command);
+            const bool drive = spec && spec->id == CommandId::Drive;
+            if (sink_.knowsCommand(command)) evaluateTokens(out, 1, drive ? kDriveExpression : -1);
             return true;
         }
     }
@@ -402,7 +407,7 @@ void SourceExpander::tokenize(std::string_view text, LogicalLine& out) {
     out.raw = text;
 }
 
-bool SourceExpander::evaluateTokens(LogicalLine& line, int first) {
+bool SourceExpander::evaluateTokens(LogicalLine& line, int first, int compiledAt) {
     storage_.clear();
     struct Replaced {
         std::size_t token, offset, length;
@@ -414,6 +419,18 @@ bool SourceExpander::evaluateTokens(LogicalLine& line, int first) {
     for (int i = first; i < stored; ++i) {
         LogicalToken& token = line.tokens[static_cast<std::size_t>(i)];
         const std::size_t offset = storage_.size();
+        if (i == compiledAt && token.text.starts_with('(')) {
+            CompiledExpression c = compileParenthesized(token.text, variables_, kDriveInputs);
+            if (!c.result.ok) {
+                if (!c.result.followOn) error(inExpression(token.column, c.result), c.result.message);
+                token.form = TokenForm::Failed;
+                ok = false;
+                continue;
+            }
+            token.form = TokenForm::Compiled;
+            line.compiled = std::move(c.code);
+            continue;
+        }
         if (token.text.starts_with('(')) {
             // `(expr)s` is a time in seconds (SPEC 10.4): it becomes the word
             // `<value>s`, read as `2.5s` is.

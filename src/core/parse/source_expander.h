@@ -40,6 +40,7 @@ enum class TokenForm {
     Word,        ///< as written, after `{ … }` substitution
     Expression,  ///< a `( … )`: `value` holds its value, `text` that value in decimal
     Failed,      ///< a `( … )` or `{ … }` whose error is already reported
+    Compiled,    ///< a `/drive`'s `( … )` (SPEC 10.7): LogicalLine::compiled, `text` as written
 };
 
 struct LogicalToken {
@@ -57,6 +58,8 @@ struct LogicalLine {
     int count = 0;
     SourcePos pos;         ///< the line (column 1)
     std::string_view raw;  ///< the line as written
+    /// The code of the line's TokenForm::Compiled token, if it has one.
+    ExpressionCode compiled;
 };
 
 /// The command as written, from its first token to the end of its last stored
@@ -152,7 +155,9 @@ class SourceExpander {
     struct LoopFrame;
 
     void tokenize(std::string_view text, LogicalLine& out);
-    bool evaluateTokens(LogicalLine& line, int first);
+    /// Evaluates the `( … )` and `{ … }` of tokens from `first` on; token
+    /// `compiledAt`, a `( … )`, is compiled over a drive's inputs instead.
+    bool evaluateTokens(LogicalLine& line, int first, int compiledAt = -1);
     std::optional<double> numberArgument(const LogicalLine& line, int i, bool& ok);
     /// Checks the variable of /let or /repeat; reports "… cannot be `cannotBe`" for pi.
     bool variableName(const LogicalToken& name, std::string_view cannotBe);

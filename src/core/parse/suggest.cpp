@@ -16,28 +16,30 @@ bool equalIgnoringCase(std::string_view a, std::string_view b) {
            std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) { return lower(x) == lower(y); });
 }
 
-/// Words people use for the robot's and the human's parts (SPEC 5 names
-/// them body, head, lhand, rhand), for any model with a part of that name.
+/// Words people use for the robot's and the human's parts (SPEC 5), by the
+/// part's index in the robot (whose names models.cpp defines), for any
+/// model with a part of that name.
 struct PartAlias {
     std::string_view word;
-    std::string_view part;
+    int robotPart;
 };
 
+constexpr int kBody = 0, kLHand = 2, kRHand = 3;  // the robot's order of parts
 constexpr std::array<PartAlias, 14> kPartAliases = {{
-    {"torso", "body"},
-    {"trunk", "body"},
-    {"left", "lhand"},
-    {"larm", "lhand"},
-    {"leftarm", "lhand"},
-    {"left_arm", "lhand"},
-    {"lefthand", "lhand"},
-    {"left_hand", "lhand"},
-    {"right", "rhand"},
-    {"rarm", "rhand"},
-    {"rightarm", "rhand"},
-    {"right_arm", "rhand"},
-    {"righthand", "rhand"},
-    {"right_hand", "rhand"},
+    {"torso", kBody},
+    {"trunk", kBody},
+    {"left", kLHand},
+    {"larm", kLHand},
+    {"leftarm", kLHand},
+    {"left_arm", kLHand},
+    {"lefthand", kLHand},
+    {"left_hand", kLHand},
+    {"right", kRHand},
+    {"rarm", kRHand},
+    {"rightarm", kRHand},
+    {"right_arm", kRHand},
+    {"righthand", kRHand},
+    {"right_hand", kRHand},
 }};
 
 }  // namespace
@@ -75,7 +77,8 @@ std::size_t ClosestWord::consider(std::string_view candidate) {
 
 std::string_view suggestPart(std::string_view word, const ModelType& model) {
     for (const PartAlias& a : kPartAliases) {
-        if (equalIgnoringCase(word, a.word) && model.partIndex(a.part) >= 0) return a.part;
+        const std::string& part = robotModel()->parts[std::size_t(a.robotPart)].name;
+        if (equalIgnoringCase(word, a.word) && model.partIndex(part) >= 0) return part;
     }
     ClosestWord closest(word);
     for (const ModelPart& part : model.parts) closest.consider(part.name);

@@ -41,18 +41,23 @@ double phaseOf(int i) { return 0.7 * double(i); }
 
 }  // namespace
 
+namespace {
+/// The kinds' words, in BenchShape order.
+constexpr std::array<std::string_view, 4> kShapeWords = {"robots", "spheres", "drives", "drivekeys"};
+}  // namespace
+
 bool parseBenchSceneSpec(std::string_view text, BenchSceneSpec& spec, std::string& error) {
     auto colon = text.find(':');
     std::string_view kind = text.substr(0, colon);
     BenchSceneSpec parsed;
-    if (kind == "robots")
-        parsed.shape = BenchShape::Robots;
-    else if (kind == "spheres")
-        parsed.shape = BenchShape::Spheres;
-    if (colon == std::string_view::npos || (kind != "robots" && kind != "spheres")) {
-        error.assign("expected robots:N or spheres:N, got '").append(text).append("'");
+    const auto word = std::find(kShapeWords.begin(), kShapeWords.end(), kind);
+    if (colon == std::string_view::npos || word == kShapeWords.end()) {
+        error.assign("expected robots:N or spheres:N (or drives:N, drivekeys:N), got '")
+            .append(text)
+            .append("'");
         return false;
     }
+    parsed.shape = BenchShape(word - kShapeWords.begin());
     std::string_view count = text.substr(colon + 1);
     const char* end = count.data() + count.size();
     auto [ptr, ec] = std::from_chars(count.data(), end, parsed.count);
@@ -69,8 +74,7 @@ bool parseBenchSceneSpec(std::string_view text, BenchSceneSpec& spec, std::strin
 }
 
 std::string benchSceneName(const BenchSceneSpec& spec) {
-    std::string name = spec.shape == BenchShape::Robots ? "robots:" : "spheres:";
-    return name.append(std::to_string(spec.count));
+    return std::string(kShapeWords[std::size_t(spec.shape)]).append(":").append(std::to_string(spec.count));
 }
 
 BenchGrid benchGrid(int count) {
@@ -96,6 +100,7 @@ BenchCamera benchCamera(int count) {
 
 std::string benchSceneText(const BenchSceneSpec& spec, int width, int height) {
     const bool robots = spec.shape == BenchShape::Robots;
+    const bool driven = spec.shape == BenchShape::Drives || spec.shape == BenchShape::DriveKeys;
     const BenchGrid grid = benchGrid(spec.count);
     const BenchCamera cam = benchCamera(spec.count);
     std::string out;
@@ -112,6 +117,9 @@ std::string benchSceneText(const BenchSceneSpec& spec, int width, int height) {
     appendNumbers(out, {grid.columns * kBenchSpacing + 2 * kBenchSpacing, 50,
                         grid.rows * kBenchSpacing + 2 * kBenchSpacing, 0, -130, 0});
     out += "\n/paint floor 0 200 0\n";
+    // Drives add no keys: one key of the floor (where it stands) makes the animation 0..48 long.
+    if (spec.shape == BenchShape::Drives)
+        append(out, {"/key ", std::to_string(kBenchSwingFrames), " floor\n"});
 
     std::string name;
     for (int i = 0; i < spec.count; ++i) {
@@ -144,6 +152,26 @@ std::string benchSceneText(const BenchSceneSpec& spec, int width, int height) {
             for (int k = 0; k <= 2; ++k) {
                 append(out, {"/key ", std::to_string(k * kBenchSwingFrames / 2), " ", name, ".head 0 0 0 0"});
                 appendNumbers(out, {(k % 2 ? -30.0 : 30.0) * std::cos(phase), 0});
+                out += '\n';
+            }
+        } else if (driven) {
+            // Radius 50 swaying in x and bobbing in y, driven (two channels)
+            // or keyed (two linear keys of the pose) over the same 48 frames.
+            append(out, {"/sphere ", name, " 50"});
+            appendNumbers(out, {x, -40, z});
+            append(out, {"\n/paint ", name});
+            appendNumbers(out, {double(color[0]), double(color[1]), double(color[2])});
+            out += '\n';
+            const double degrees = phase * 180 / kPi;
+            if (spec.shape == BenchShape::Drives) {
+                append(out,
+                       {"/drive ", name, " px (", num(x), " + 20*sin(time*180 + ", num(degrees), "))\n"});
+                append(out, {"/drive ", name, " py (-40 + 15*cos(frame*7.5 + ", num(degrees), "))\n"});
+            } else {
+                append(out, {"/key 0 ", name});
+                appendNumbers(out, {x - 20, -55, z, 0, 0, 0});
+                append(out, {"\n/key ", std::to_string(kBenchSwingFrames), " ", name});
+                appendNumbers(out, {x + 20, -25, z, 0, 0, 0});
                 out += '\n';
             }
         } else {

@@ -1,15 +1,17 @@
 #pragma once
 /// Generated benchmark scenes `robots:N` and `spheres:N` (docs/performance.md):
 /// N animated robots or N spheres on a square grid over a floor, seen from a
-/// raised camera that fits the whole grid. They are produced as scene-language
-/// text, so the benchmark, `f2 export` and other renderers all read the same
-/// scene through the one parser.
+/// raised camera that fits the whole grid; `drives:N`, N spheres each driven
+/// on two channels (SPEC 10.7), and its twin `drivekeys:N`, the same spheres
+/// with two linear keys instead, to compare the cost of drives with keys'. They are produced as
+/// scene-language text, so the benchmark, `f2 export` and other renderers all read the same scene through the
+/// one parser.
 #include <string>
 #include <string_view>
 
 namespace f2 {
 
-enum class BenchShape { Robots, Spheres };
+enum class BenchShape { Robots, Spheres, Drives, DriveKeys };
 
 struct BenchSceneSpec {
     BenchShape shape = BenchShape::Robots;
@@ -25,10 +27,11 @@ inline constexpr double kBenchPitchDegrees = 35.0;
 /// Frames of one full arm swing of the generated robots (keys every quarter).
 inline constexpr int kBenchSwingFrames = 48;
 
-/// Parses "robots:N" or "spheres:N"; false with a message on anything else.
+/// Parses "robots:N", "spheres:N", "drives:N" or "drivekeys:N"; false with a
+/// message on anything else.
 bool parseBenchSceneSpec(std::string_view text, BenchSceneSpec& spec, std::string& error);
 
-/// "robots:N" / "spheres:N".
+/// "robots:N", "spheres:N", "drives:N" or "drivekeys:N".
 std::string benchSceneName(const BenchSceneSpec& spec);
 
 /// Grid of ceil(sqrt(N)) columns and ceil(N / columns) rows.

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/math/vec3.h"
+#include "core/scene/drive.h"
 #include "core/scene/light_desc.h"
 
 namespace f2 {
@@ -112,6 +113,8 @@ struct Key {
 struct Track {
     std::vector<Key> keys;
     Easing interpolation = Interpolation::Linear;  ///< `/interp`, for keys without a mode
+    /// `/drive`s of its numbers (SPEC 10.7), which replace the keyed values; none: null.
+    std::shared_ptr<const TrackDrives> drives;
 
     /// The mode of the segment that starts at key i.
     const Easing& modeAfter(std::size_t i) const { return keys[i].mode ? *keys[i].mode : interpolation; }
@@ -291,6 +294,8 @@ struct SceneDesc {
     std::vector<std::uint32_t> attachOrder;
     /// Some object has an `/attach … at` (SPEC 10.7).
     bool attachmentsChange = false;
+    /// Every `/drive` (SPEC 10.7), in file order; each is also in its track (Track::drives).
+    std::vector<std::shared_ptr<const Drive>> drives;
     /// `/caption`s in file order: drawn in that order over the traced picture.
     std::vector<Caption> captions;
     /// The objects' animation compiled for evaluation (anim/animation_program.h).

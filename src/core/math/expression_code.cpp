@@ -1,0 +1,323 @@
+#include "core/math/expression_code.h"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <optional>
+
+namespace f2 {
+
+namespace {
+
+constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
+constexpr double kRadiansPerDegree = std::numbers::pi / 180.0;
+
+// Trigonometry in degrees. The angle is first reduced exactly (fmod is exact),
+// so that the multiples of 90 give exact 0 and ±1: cos(90) is 0, not 6e-17.
+double sinDegrees(double degrees) {
+    const double r = std::fmod(degrees, 360.0);
+    if (r == 0 || r == 180 || r == -180) return 0;
+    if (r == 90 || r == -270) return 1;
+    if (r == 270 || r == -90) return -1;
+    return std::sin(r * kRadiansPerDegree);
+}
+
+double cosDegrees(double degrees) {
+    const double r = std::fmod(degrees, 360.0);
+    if (r == 0) return 1;
+    if (r == 180 || r == -180) return -1;
+    if (r == 90 || r == -90 || r == 270 || r == -270) return 0;
+    return std::cos(r * kRadiansPerDegree);
+}
+
+/// tan of an odd multiple of 90 has no value; the caller reports it.
+std::optional<double> tanDegrees(double degrees) {
+    const double r = std::fmod(degrees, 180.0);
+    if (r == 90 || r == -90) return std::nullopt;
+    if (r == 0) return 0.0;
+    if (r == 45 || r == -135) return 1.0;
+    if (r == -45 || r == 135) return -1.0;
+    return std::tan(r * kRadiansPerDegree);
+}
+
+constexpr std::array<ExprFunctionInfo, 17> kFunctions = {{
+    {"sin", ExprFunction::Sin, 1, 1},
+    {"cos", ExprFunction::Cos, 1, 1},
+    {"tan", ExprFunction::Tan, 1, 1},
+    {"asin", ExprFunction::Asin, 1, 1},
+    {"acos", ExprFunction::Acos, 1, 1},
+    {"atan", ExprFunction::Atan, 1, 1},
+    {"atan2", ExprFunction::Atan2, 2, 2},
+    {"sqrt", ExprFunction::Sqrt, 1, 1},
+    {"abs", ExprFunction::Abs, 1, 1},
+    {"floor", ExprFunction::Floor, 1, 1},
+    {"ceil", ExprFunction::Ceil, 1, 1},
+    {"exp", ExprFunction::Exp, 1, 1},
+    {"log", ExprFunction::Log, 1, 1},
+    {"round", ExprFunction::Round, 1, 1},
+    {"min", ExprFunction::Min, 1, -1},
+    {"max", ExprFunction::Max, 1, -1},
+    {"if", ExprFunction::If, 3, 3},  // SPEC 10.7: evaluates only the branch it returns
+}};
+
+/// A value that must be finite, as every step's is.
+ExprStep finite(double v) { return {v, std::isfinite(v) ? ExprProblem::None : ExprProblem::NotFinite}; }
+
+constexpr ExprStep kUndefined{0, ExprProblem::Undefined};
+
+}  // namespace
+
+std::string shortestDecimal(double value) {
+    std::array<char, 32> buffer{};
+    const auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+    if (ec != std::errc()) return "?";
+    return std::string(buffer.data(), end);
+}
+
+std::span<const ExprFunctionInfo> expressionFunctions() { return kFunctions; }
+
+const ExprFunctionInfo* findExpressionFunction(std::string_view name) {
+    for (const ExprFunctionInfo& f : kFunctions) {
+        if (f.name == name) return &f;
+    }
+    return nullptr;
+}
+
+ExprStep applyOperator(ExprOp op, double a, double b) {
+    switch (op) {
+        case ExprOp::Add:
+            return finite(a + b);
+        case ExprOp::Sub:
+            return finite(a - b);
+        case ExprOp::Mul:
+            return finite(a * b);
+        case ExprOp::Div:
+            if (b == 0) return {0, ExprProblem::DivisionByZero};
+            return finite(a / b);
+        case ExprOp::Mod: {
+            if (b == 0) return {0, ExprProblem::RemainderByZero};
+            // The remainder takes the sign of the divisor: 7 % -3 = -2, -7 % 3 = 2.
+            double r = std::fmod(a, b);
+            if (r != 0 && ((r < 0) != (b < 0))) r += b;
+            return {r};
+        }
+        case ExprOp::Pow:
+            if (a == 0 && b < 0) return {0, ExprProblem::ZeroToNegativePower};
+            if (a < 0 && b != std::floor(b)) return {0, ExprProblem::NegativeToFractionalPower};
+            return finite(std::pow(a, b));
+        case ExprOp::Eq:
+            return {a == b ? 1.0 : 0.0};
+        case ExprOp::Ne:
+            return {a != b ? 1.0 : 0.0};
+        case ExprOp::Lt:
+            return {a < b ? 1.0 : 0.0};
+        case ExprOp::Le:
+            return {a <= b ? 1.0 : 0.0};
+        case ExprOp::Gt:
+            return {a > b ? 1.0 : 0.0};
+        case ExprOp::Ge:
+            return {a >= b ? 1.0 : 0.0};
+        default:
+            return {};
+    }
+}
+
+ExprStep applyFunction(ExprFunction f, std::span<const double> args) {
+    const double x = args[0];
+    switch (f) {
+        case ExprFunction::Sin:
+            return {sinDegrees(x)};
+        case ExprFunction::Cos:
+            return {cosDegrees(x)};
+        case ExprFunction::Tan: {
+            const std::optional<double> t = tanDegrees(x);
+            return t ? ExprStep{*t} : kUndefined;
+        }
+        case ExprFunction::Asin:
+        case ExprFunction::Acos:
+            if (x < -1 || x > 1) return kUndefined;
+            return {(f == ExprFunction::Asin ? std::asin(x) : std::acos(x)) * kDegreesPerRadian};
+        case ExprFunction::Atan:
+            return {std::atan(x) * kDegreesPerRadian};
+        case ExprFunction::Atan2:
+            return {std::atan2(x, args[1]) * kDegreesPerRadian};
+        case ExprFunction::Sqrt:
+            if (x < 0) return kUndefined;
+            return {std::sqrt(x)};
+        case ExprFunction::Abs:
+            return {std::fabs(x)};
+        case ExprFunction::Floor:
+            return {std::floor(x)};
+        case ExprFunction::Ceil:
+            return {std::ceil(x)};
+        case ExprFunction::Exp:
+            return finite(std::exp(x));
+        case ExprFunction::Log:
+            if (x <= 0) return kUndefined;
+            return {std::log(x)};
+        case ExprFunction::Round:
+            return {std::round(x)};  // halves away from zero
+        case ExprFunction::If:
+            return {x != 0 ? args[1] : args[2]};
+        case ExprFunction::Min:
+        case ExprFunction::Max: {
+            double best = x;
+            for (double a : args) best = f == ExprFunction::Min ? std::min(best, a) : std::max(best, a);
+            return {best};
+        }
+    }
+    return {};
+}
+
+std::string operatorProblemText(ExprOp op, ExprProblem problem) {
+    switch (problem) {
+        case ExprProblem::DivisionByZero:
+            return "division by zero";
+        case ExprProblem::RemainderByZero:
+            return "remainder of a division by zero";
+        case ExprProblem::ZeroToNegativePower:
+            return "division by zero (0 to a negative power)";
+        case ExprProblem::NegativeToFractionalPower:
+            return "a negative number to a fractional power is undefined";
+        default:
+            break;
+    }
+    constexpr std::string_view kSymbols = "+-*/%^";
+    const std::size_t k = std::size_t(op) - std::size_t(ExprOp::Add);
+    const std::string symbol = k < kSymbols.size() ? std::string(1, kSymbols[k]) : "?";
+    return "the result of '" + symbol + "' is not finite";
+}
+
+std::string functionProblemText(ExprFunction f, double x, ExprProblem problem) {
+    const std::string call = std::string(kFunctions[std::size_t(f)].name) + "(" + shortestDecimal(x) + ")";
+    if (problem != ExprProblem::Undefined) return "the result of " + call + " is not finite";
+    switch (f) {
+        case ExprFunction::Tan:
+            return call + " is undefined (an odd multiple of 90 degrees)";
+        case ExprFunction::Asin:
+        case ExprFunction::Acos:
+            return call + " is undefined (the argument must be from -1 to 1)";
+        case ExprFunction::Sqrt:
+            return call + " is undefined (a negative number)";
+        default:
+            return call + " is undefined (the argument must be > 0)";
+    }
+}
+
+ExpressionCode ExpressionCode::constant(double value) {
+    ExpressionCode c;
+    c.constant_ = value == 0 ? 0.0 : value;
+    return c;
+}
+
+ExpressionCode::ExpressionCode(std::vector<ExprInstruction> code) : code_(std::move(code)) {
+    // The deepest the stack gets along the code read in order: at an IfJump's
+    // Jump the then-branch's value is still counted, so this is an upper bound.
+    std::size_t depth = 0;
+    for (const ExprInstruction& i : code_) {
+        switch (i.op) {
+            case ExprOp::Push:
+            case ExprOp::Load:
+                ++depth;
+                break;
+            case ExprOp::Call:
+                depth -= i.index - 1;
+                break;
+            case ExprOp::AndJump:
+            case ExprOp::OrJump:
+            case ExprOp::IfJump:
+                --depth;
+                break;
+            case ExprOp::Neg:
+            case ExprOp::Not:
+            case ExprOp::ToBool:
+            case ExprOp::Jump:
+                break;
+            default:
+                --depth;  // a binary operator
+        }
+        stackSize_ = std::max(stackSize_, depth + 1);
+    }
+}
+
+double ExpressionCode::evaluate(std::span<const double> inputs, ExpressionFailure* failure) const {
+    if (code_.empty()) return constant_;
+    // Most expressions need a few slots: no allocation then.
+    constexpr std::size_t kLocal = 32;
+    std::array<double, kLocal> local;
+    std::vector<double> heap;
+    double* stack = local.data();
+    if (stackSize_ > kLocal) {
+        heap.resize(stackSize_);
+        stack = heap.data();
+    }
+    std::size_t top = 0;  // values on the stack
+    const auto fail = [&](const ExprInstruction& i, std::string message) {
+        if (failure) *failure = {i.offset, std::move(message)};
+        return std::numeric_limits<double>::quiet_NaN();
+    };
+    const std::size_t size = code_.size();
+    for (std::size_t pc = 0; pc < size; ++pc) {
+        const ExprInstruction& i = code_[pc];
+        switch (i.op) {
+            case ExprOp::Push:
+                stack[top++] = i.number;
+                break;
+            case ExprOp::Load:
+                stack[top++] = inputs[i.index];
+                break;
+            case ExprOp::Neg:
+                stack[top - 1] = -stack[top - 1];
+                break;
+            case ExprOp::Not:
+                stack[top - 1] = stack[top - 1] == 0 ? 1 : 0;
+                break;
+            case ExprOp::ToBool:
+                stack[top - 1] = stack[top - 1] != 0 ? 1 : 0;
+                break;
+            case ExprOp::Call: {
+                top -= i.index;
+                const ExprStep s = applyFunction(i.function, {stack + top, i.index});
+                if (s.problem != ExprProblem::None)
+                    return fail(i, functionProblemText(i.function, stack[top], s.problem));
+                stack[top++] = s.value;
+                break;
+            }
+            case ExprOp::AndJump:
+                if (stack[top - 1] == 0) {
+                    pc += i.index;  // leaves the 0 as the result
+                } else {
+                    --top;
+                }
+                break;
+            case ExprOp::OrJump:
+                if (stack[top - 1] != 0) {
+                    stack[top - 1] = 1;
+                    pc += i.index;
+                } else {
+                    --top;
+                }
+                break;
+            case ExprOp::IfJump:
+                if (stack[--top] == 0) pc += i.index;
+                break;
+            case ExprOp::Jump:
+                pc += i.index;
+                break;
+            default: {
+                --top;
+                const ExprStep s = applyOperator(i.op, stack[top - 1], stack[top]);
+                if (s.problem != ExprProblem::None) return fail(i, operatorProblemText(i.op, s.problem));
+                stack[top - 1] = s.value;
+            }
+        }
+    }
+    const double v = stack[0];
+    if (!std::isfinite(v)) return fail(code_.back(), "the value is not finite");
+    return v == 0 ? 0.0 : v;
+}
+
+}  // namespace f2
