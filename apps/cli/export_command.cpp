@@ -5,8 +5,11 @@
 #include <cstring>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <vector>
 
 #include "commands.h"
+#include "core/scene/drive.h"
 #include "io/atomic_file.h"
 #include "io/gltf_export.h"
 #include "io/output_target.h"
@@ -66,6 +69,13 @@ int runGltfExport(const ExportArgs& args, const LoadedScene& loaded, const Camer
     options.tessellation = args.tessellation;
     options.source = loaded.name;
     if (text) options.bufferUri = uriOfFileName(binPath.substr(binPath.find_last_of('/') + 1));
+    // Every frame is written: a drive without a finite value at any is an error (SPEC 10.7).
+    std::vector<double> frames(std::size_t(loaded.scene.lastFrame()) + 1);
+    for (std::size_t f = 0; f < frames.size(); ++f) frames[f] = double(f);
+    if (std::optional<std::string> problem = firstDriveProblem(loaded.scene, frames)) {
+        std::cerr << "f2 export: " << *problem << '\n';
+        return 1;
+    }
     const GltfDocument document = gltfScene(loaded.scene, options);
     for (const std::string& w : document.warnings) std::cerr << "f2 export: warning: " << w << '\n';
     std::string error;

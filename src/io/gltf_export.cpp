@@ -249,13 +249,16 @@ class GltfBuilder {
     /// (LINEAR, the held value again just before a step ends), or at its keys
     /// alone (STEP) when every key is a step. A node that does not move
     /// gets its pose and no channel (animation()). `baked`: it also moves
-    /// with what it rides on or looks at, so every frame whatever its keys.
+    /// with what it rides on or looks at, so every frame whatever its keys
+    /// (as a driven track, SPEC 10.7).
     void follow(int node, const Track& track, std::function<Transform(double)> localAt, bool baked = false,
                 std::vector<double> extra = {}) {
         MovingNode moving{node, std::move(localAt), {}, false};
-        if (track.keys.size() < 2 && !baked) {
+        // A drive (SPEC 10.7) moves its target whatever the keys.
+        const bool continuous = baked || track.drives;
+        if (track.keys.size() < 2 && !continuous) {
             moving.times = {0};  // one pose for ever: no need to look at every frame
-        } else if (allSteps(track) && !baked) {
+        } else if (allSteps(track) && !continuous) {
             moving.step = true;
             for (const Key& k : track.keys) moving.times.push_back(k.time);
         } else {
@@ -705,14 +708,16 @@ class GltfBuilder {
                                 " checkered sphere(s) or cylinder(s) exported in their first colour (a box's "
                                 "checker is a texture; a curved shape's cells are no texture's squares)");
         if (!scene_.colourTracks.empty())
-            warnings_.push_back("colour keys not exported: the shapes keep their /paint colour");
+            warnings_.push_back("colour keys and drives not exported: the shapes keep their /paint colour");
         bool intensityKeys = false;
         for (const LightMotion& l : scene_.lightMotions)
-            intensityKeys = intensityKeys || !l.intensity.keys.empty();
+            intensityKeys = intensityKeys || !l.intensity.keys.empty() || l.intensity.drives;
         if (intensityKeys)
-            warnings_.push_back("light intensity keys not exported: the lights keep their written intensity");
-        if (!scene_.camera.zoom.keys.empty())
-            warnings_.push_back("camera d keys not exported: the camera keeps its field of view at frame 0");
+            warnings_.push_back(
+                "light intensity keys and drives not exported: the lights keep their written intensity");
+        if (!scene_.camera.zoom.keys.empty() || scene_.camera.zoom.drives)
+            warnings_.push_back(
+                "camera d keys and drives not exported: the camera keeps its field of view at frame 0");
         if (!scene_.captions.empty())
             warnings_.push_back(std::to_string(scene_.captions.size()) +
                                 " caption(s) left out (captions are drawn by f2 only)");
