@@ -1,15 +1,21 @@
 // f2 export: one evaluated frame as a scene for another renderer — POV-Ray
-// (--pov) or the Embree peer's primitive list (--prims).
+// (--pov) or the Embree peer's primitive list (--prims) — or the whole
+// animation as glTF 2.0 (--gltf) for Blender, three.js and the like.
 #include <cerrno>
 #include <cstring>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <vector>
 
 #include "commands.h"
+#include "core/scene/drive.h"
 #include "io/atomic_file.h"
+#include "io/gltf_export.h"
 #include "io/output_target.h"
 #include "io/pov_export.h"
 #include "io/prims_export.h"
+#include "io/tessellate.h"
 #include "options.h"
 #include "scene_source.h"
 
@@ -19,7 +25,8 @@ namespace {
 struct ExportArgs {
     std::string scene;
     double frame = 0;
-    bool pov = false, prims = false;
+    bool pov = false, prims = false, gltf = false;
+    int tessellation = 32;
     std::string output = "-";
     std::string size;
 };
@@ -46,10 +53,52 @@ bool writeOutput(const std::string& text, const std::string& path, std::string& 
     return true;
 }
 
+bool endsWith(const std::string& text, const std::string& tail) {
+    return text.size() >= tail.size() && text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+/// --gltf: the whole animation; a .gltf gets its buffer in a .bin beside it.
+int runGltfExport(const ExportArgs& args, const LoadedScene& loaded, const Camera& camera) {
+    if (args.output == "-")
+        return usageError("export", "--gltf writes a file: give it with -o out.glb (or out.gltf)");
+    const bool text = endsWith(args.output, ".gltf");
+    const std::string binPath = text ? args.output.substr(0, args.output.size() - 5) + ".bin" : "";
+    GltfOptions options;
+    options.width = camera.width;
+    options.height = camera.height;
+    options.tessellation = args.tessellation;
+    options.source = loaded.name;
+    if (text) options.bufferUri = uriOfFileName(binPath.substr(binPath.find_last_of('/') + 1));
+    // Every frame is written: a drive without a finite value at any is an error (SPEC 10.7).
+    std::vector<double> frames(std::size_t(loaded.scene.lastFrame()) + 1);
+    for (std::size_t f = 0; f < frames.size(); ++f) frames[f] = double(f);
+    if (std::optional<std::string> problem = firstDriveProblem(loaded.scene, frames)) {
+        std::cerr << "f2 export: " << *problem << '\n';
+        return 1;
+    }
+    const GltfDocument document = gltfScene(loaded.scene, options);
+    for (const std::string& w : document.warnings) std::cerr << "f2 export: warning: " << w << '\n';
+    std::string error;
+    const bool written =
+        text ? writeOutput(std::string(document.bin.begin(), document.bin.end()), binPath, error) &&
+                   writeOutput(document.json, args.output, error)
+             : writeOutput(glbBytes(document), args.output, error);
+    if (!written) {
+        std::cerr << "f2 export: " << error << '\n';
+        return 1;
+    }
+    std::cerr << "f2 export: " << loaded.name << " frames 0-" << loaded.scene.lastFrame() << " at "
+              << loaded.scene.fps << " fps -> " << args.output << (text ? " + " + binPath : "")
+              << " (glTF 2.0, " << document.nodes << " nodes, " << document.meshes << " meshes, "
+              << document.materials << " materials, " << document.channels << " animation channels)\n";
+    return 0;
+}
+
 int runExport(const ExportArgs& args) {
-    if (args.pov == args.prims) {
+    if (int(args.pov) + int(args.prims) + int(args.gltf) != 1) {
         return usageError("export",
-                          "choose one format: --pov (POV-Ray 3.7 scene) or --prims (primitive list)");
+                          "choose one format: --pov (POV-Ray 3.7 scene), --prims (primitive list) or --gltf "
+                          "(glTF 2.0 animation)");
     }
     auto loaded = loadScene(args.scene);
     if (!loaded) return 1;
@@ -62,6 +111,7 @@ int runExport(const ExportArgs& args) {
     std::string error;
     if (!args.size.empty() && !parseSize(args.size, camera.width, camera.height, error))
         return usageError("export", error);
+    if (args.gltf) return runGltfExport(args, *loaded, camera);
     // Text over the picture is F2's own (SPEC 10.5): neither output can hold it.
     std::size_t shown = 0;
     for (const Caption& c : loaded->scene.captions) shown += c.shownAt(args.frame);
@@ -87,16 +137,28 @@ Command addExportCommand(CLI::App& app) {
     CLI::App* sub = app.add_subcommand(
         "export",
         "Write one evaluated frame as a scene for another renderer: POV-Ray (--pov) or the "
-        "Embree peer's primitive list (--prims)");
+        "Embree peer's primitive list (--prims); or the whole animation as glTF 2.0 (--gltf) for "
+        "Blender, three.js and other tools");
     sub->add_option("scene", args->scene, "Scene file; '-' reads standard input; none = the default scene")
         ->check(nonEmptyPath("export the default scene"));
-    sub->add_option("--frame", args->frame, "Frame to export; may be fractional (default 0)")
-        ->check(finiteNumberIn(0.0, 1e7, "a frame time"));
+    auto* frame = sub->add_option("--frame", args->frame, "Frame to export; may be fractional (default 0)")
+                      ->check(finiteNumberIn(0.0, 1e7, "a frame time"));
     auto* pov = sub->add_flag("--pov", args->pov,
                               "POV-Ray 3.7 scene; render it with: povray +IFILE +Oout.png +WW +HH -A +FN -D");
-    sub->add_flag("--prims", args->prims, "Plain-text primitive list (Embree peer renderer format)")
-        ->excludes(pov);
-    sub->add_option("-o,--output", args->output, "Output file; '-' = standard output (default)")
+    auto* prims =
+        sub->add_flag("--prims", args->prims, "Plain-text primitive list (Embree peer renderer format)")
+            ->excludes(pov);
+    sub->add_flag("--gltf", args->gltf,
+                  "glTF 2.0 of the whole animation (every frame, so no --frame): binary .glb, or "
+                  ".gltf + .bin when the output ends in .gltf; what it leaves out: docs/output.md")
+        ->excludes(pov)
+        ->excludes(prims)
+        ->excludes(frame);  // it writes them all: a --frame would be a mistake, not a choice
+    sub->add_option("--tessellation", args->tessellation,
+                    "--gltf: segments around each sphere and cylinder (default 32)")
+        ->check(CLI::Range(kMinTessellation, kMaxTessellation));
+    sub->add_option("-o,--output", args->output,
+                    "Output file; '-' = standard output (default; not for --gltf)")
         ->check(nonEmptyPath("write to standard output"));
     sub->add_option("--size", args->size,
                     "Image size WIDTHxHEIGHT written into the camera (default: /camera)");

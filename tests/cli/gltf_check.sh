@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# gltf_check.sh validator|three F2 WORK SCENE...: `f2 export --gltf` of each
+# scene, then
+#   validator: the Khronos glTF validator (npm gltf-validator) must report 0
+#     errors and 0 warnings on every .glb, and on the first scene written as
+#     .gltf + .bin at another --tessellation, under a name with a space, `#`,
+#     a quote, `%` and a non-ASCII letter;
+#   three: three.js (npm three, GLTFLoader + AnimationMixer) must place every
+#     shape and the camera where `f2 export --prims` does at 0 s, 1.03 s
+#     (between frames), 2.5 s and the last frame (tests/gltf/three_check.mjs).
+# Skipped (tests/skip.sh) without node or the npm packages of tests/gltf
+# (scripts/install-node-packages.sh installs them).
+set -uo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+. "$here/../skip.sh"
+mode=$1 f2=$2 work=$3
+shift 3
+pkg=$(cd "$here/../gltf" && pwd)
+command -v node >/dev/null 2>&1 || skip_missing "node is not installed (scripts/install-deps.sh installs nodejs and npm)"
+for p in gltf-validator three; do
+  [ -d "$pkg/node_modules/$p" ] ||
+    skip_missing "npm package $p is missing in tests/gltf: run scripts/install-node-packages.sh (scripts/test.sh does)"
+done
+fail() { echo "FAIL: $*"; exit 1; }
+rm -rf "$work" && mkdir -p "$work/text"
+
+files=()
+for scene in "$@"; do
+  glb=$work/$(basename "$scene" .f2).glb
+  "$f2" export "$scene" --gltf -o "$glb" || fail "f2 export --gltf $scene"
+  files+=("$glb")
+done
+case $mode in
+  validator)
+    # A name that a URI must escape: the .gltf still finds its .bin.
+    text="$work/text/a b#\"%é $(basename "$1" .f2).gltf"
+    "$f2" export "$1" --gltf --tessellation 12 -o "$text" || fail "f2 export --gltf $1 -o .gltf"
+    [ -s "${text%.gltf}.bin" ] || fail "no .bin beside $text"
+    ls -l "${files[@]}" "$text" "${text%.gltf}.bin"
+    (cd "$pkg" && node validate.mjs "${files[@]}" "$text") || fail "the validator found errors or warnings"
+    ;;
+  three)
+    i=0
+    for scene in "$@"; do
+      (cd "$pkg" && node three_check.mjs "$f2" "$scene" "${files[$i]}" 0 1.03 2.5 last) ||
+        fail "three.js does not see $scene as f2 does"
+      i=$((i + 1))
+    done
+    ;;
+  *) fail "unknown mode $mode" ;;
+esac
+echo ok
