@@ -179,6 +179,31 @@ void addModelCommands(Json& items, const Analysis& a, const Range& replace, int 
     }
 }
 
+/// After an instance's position (`/lamp L1 0 0 0 `): its type's parameters
+/// not yet given on the line, each with its default (SPEC 10.6).
+void addModelParameters(Json& items, const Analysis& a, std::string_view line, const Typing& typing,
+                        const Range& replace, int beforeLine) {
+    constexpr int kFirstOption = 5;  // the command, the name and three numbers come first
+    if (typing.index < kFirstOption || !typing.command.starts_with('/')) return;
+    LineTokens tokens;
+    tokenizeLine(line, tokens);
+    for (const IndexedModel& m : a.index.models) {
+        if (!m.type || m.type->name != typing.command.substr(1)) continue;
+        if (a.inDocument(m.command) && m.command.line >= beforeLine) continue;
+        for (const ModelParam& param : m.type->params) {
+            const bool given = std::any_of(tokens.tokens.begin() + kFirstOption,
+                                           tokens.tokens.begin() + std::min(tokens.count, kMaxStoredTokens),
+                                           [&](const Token& t) { return t.text == param.name; });
+            if (given || !param.name.starts_with(typing.partial)) continue;
+            const std::string value = formatNumber(param.value);
+            items.push_back(item(param.name, kCompletionProperty,
+                                 "parameter of " + m.type->name + " (default " + value + ")", replace,
+                                 param.name + " ${1:" + value + "}", true));
+        }
+        return;
+    }
+}
+
 /// The commands that may stand inside a `/model` block (SPEC 10.1), their
 /// first argument a shape of the model.
 Json blockCommandItems(const Range& replace) {
@@ -329,7 +354,10 @@ Json completion(const Analysis& a, Position p) {
         return items;
     }
     const CommandSpec* doc = findCommand(typing->command);
-    if (!doc) return items;
+    if (!doc) {
+        addModelParameters(items, a, line, *typing, replace, lineNumber);
+        return items;
+    }
     const int arg = typing->index - 1;
     const ArgKind kind = doc->argumentKind(arg);
     if (block) {

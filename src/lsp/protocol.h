@@ -39,7 +39,7 @@ inline std::string dumpJson(const Json& j) { return j.dump(-1, ' ', false, Json:
 inline constexpr int kSeverityError = 1, kSeverityWarning = 2;
 inline constexpr int kCompletionKeyword = 14, kCompletionSnippet = 15, kCompletionVariable = 6,
                      kCompletionField = 5, kCompletionEnumMember = 20, kCompletionFile = 17,
-                     kCompletionFunction = 3, kCompletionClass = 7;
+                     kCompletionFunction = 3, kCompletionClass = 7, kCompletionProperty = 10;
 inline constexpr int kSymbolFile = 1, kSymbolObject = 19, kSymbolField = 8, kSymbolEvent = 24,
                      kSymbolConstant = 14, kSymbolClass = 5;
 inline constexpr int kInsertSnippet = 2;

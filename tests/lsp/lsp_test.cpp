@@ -1467,3 +1467,31 @@ TEST(Uris, DecodeAndEncodePaths) {
 
 }  // namespace
 }  // namespace f2::lsp
+
+namespace f2::lsp {
+namespace {
+
+TEST(ModelParams, CompletionOfATypesParametersAfterAnInstancesPose) {
+    // SPEC 10.6: after the position, the parameters not yet given, with their defaults.
+    const Analysis a = analysed(
+        "/model lamp arm 120 shade 20\n/part b root 0 0 0\n/sphere b.s (shade) 0 0 0\n/end\n"  // 0-3
+        "/lamp l1 0 0 0 \n"                                                                    // 4
+        "/lamp l2 0 0 0 0 90 0 arm 60 \n"                                                      // 5
+        "/lamp l3 0 0 \n"                                                                      // 6
+        "/lamp l4 0 0 0 sh\n");                                                                // 7
+    const auto labels = [&](Position p) {
+        std::vector<std::string> out;
+        for (const Json& i : completion(a, p)) out.push_back(i["label"]);
+        return out;
+    };
+    EXPECT_EQ(labels({4, 15}), (std::vector<std::string>{"arm", "shade"}));
+    EXPECT_EQ(labels({5, 29}), (std::vector<std::string>{"shade"}));
+    EXPECT_TRUE(labels({6, 13}).empty());  // still in the position
+    EXPECT_EQ(labels({7, 17}), (std::vector<std::string>{"shade"}));
+    const Json first = completion(a, {4, 15})[0];
+    EXPECT_EQ(first["detail"], "parameter of lamp (default 120)");
+    EXPECT_EQ(first["textEdit"]["newText"], "arm ${1:120}");
+}
+
+}  // namespace
+}  // namespace f2::lsp
