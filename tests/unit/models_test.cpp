@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -347,6 +348,30 @@ TEST(ModelParams, ThreeLampsFromOneModelInTwelveLinesOrFewer) {
     }
     EXPECT_GT(bright, 100u);
     EXPECT_GT(moved, 100u);
+}
+
+}  // namespace
+}  // namespace f2
+
+namespace f2 {
+namespace {
+
+TEST(Models, OnePartsFrameIsThatOfAllThePartsBitForBit) {
+    // modelPartFrame (attachments to a part, every frame) against modelPartFrames.
+    const SceneDesc s =
+        test::sceneFromText(std::string(kLamp) +
+                            "/lamp l 10 20 30 0 40 0\n/key 0 l.arm 1 2 3 10 20 30\n"
+                            "/key 10 l.arm 0 0 0 -30 0 5\n/key 0 l.head 0 4 0 0 0 90\n/amb_light 1\n");
+    const SceneObject& l = s.objects[0];
+    for (double t : {0.0, 3.25, 10.0}) {
+        const Transform root = objectFrame(l, t);
+        const std::vector<Transform> all = modelPartFrames(l, root, t);
+        for (int part = 0; part < int(all.size()); ++part) {
+            const Transform one = modelPartFrame(l, part, root, t);
+            EXPECT_EQ(std::memcmp(&one, &all[std::size_t(part)], sizeof one), 0)
+                << "part " << part << " t " << t;
+        }
+    }
 }
 
 }  // namespace

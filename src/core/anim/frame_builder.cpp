@@ -1,6 +1,7 @@
 #include "core/anim/frame_builder.h"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
 
@@ -21,21 +22,39 @@ Transform objectFrame(const SceneObject& object, double t) {
     return Transform::fromPose(pose.position, pose.rotation);
 }
 
+namespace {
+/// Part `index`'s frame on its parent's, with its animation at time t.
+Transform partFrameAt(const SceneObject& object, std::size_t index, const Transform& worldFromParent,
+                      double t) {
+    const Pose motion = evaluateTrack(object.partTracks[index], t, Pose{});
+    // As childFrame: zero angles make no matrix.
+    const bool turned = !(motion.rotation == Vec3{});
+    const Mat3 rotation = turned ? rotationFromEulerDegrees(motion.rotation) : Mat3{};
+    return partFrame(worldFromParent, object.model->parts[index], motion.position,
+                     turned ? &rotation : nullptr);
+}
+}  // namespace
+
 std::vector<Transform> modelPartFrames(const SceneObject& object, const Transform& worldFromRoot, double t) {
     const std::vector<ModelPart>& parts = object.model->parts;
     std::vector<Transform> worldFromPart(parts.size());
     for (std::size_t index = 0; index < parts.size(); ++index) {
-        const ModelPart& part = parts[index];
-        const Pose motion = evaluateTrack(object.partTracks[index], t, Pose{});
-        const Transform& worldFromParent =
-            part.parent < 0 ? worldFromRoot : worldFromPart[std::size_t(part.parent)];
-        // As childFrame: zero angles make no matrix.
-        const bool turned = !(motion.rotation == Vec3{});
-        const Mat3 rotation = turned ? rotationFromEulerDegrees(motion.rotation) : Mat3{};
+        const int parent = parts[index].parent;
         worldFromPart[index] =
-            partFrame(worldFromParent, part, motion.position, turned ? &rotation : nullptr);
+            partFrameAt(object, index, parent < 0 ? worldFromRoot : worldFromPart[std::size_t(parent)], t);
     }
     return worldFromPart;
+}
+
+Transform modelPartFrame(const SceneObject& object, int part, const Transform& worldFromRoot, double t) {
+    // The chain from the part up to the root, then its frames top down:
+    // modelPartFrames' products for these parts, without a frame per part.
+    std::array<int, kMaxModelParts> chain;
+    std::size_t depth = 0;
+    for (int p = part; p >= 0; p = object.model->parts[std::size_t(p)].parent) chain[depth++] = p;
+    Transform world = worldFromRoot;
+    while (depth > 0) world = partFrameAt(object, std::size_t(chain[--depth]), world, t);
+    return world;
 }
 
 Transform worldFromRef(const SceneDesc& scene, FrameRef ref, double t) {
@@ -45,7 +64,7 @@ Transform worldFromRef(const SceneDesc& scene, FrameRef ref, double t) {
     for (std::optional<FrameRef> at = ref; at; at = mountAt(scene.objects[at->object], t)) {
         const SceneObject& object = scene.objects[at->object];
         const Transform root = objectFrame(object, t);
-        const Transform level = at->part < 0 ? root : modelPartFrames(object, root, t)[std::size_t(at->part)];
+        const Transform level = at->part < 0 ? root : modelPartFrame(object, at->part, root, t);
         world = first ? level : level * world;
         first = false;
     }
@@ -88,8 +107,7 @@ void changingRootFrames(const SceneDesc& scene, double t, std::vector<Transform>
             const SceneObject& parent = objects[mount->object];
             const Transform parentRoot = parent.mayRide() ? roots[mount->object] : objectFrame(parent, t);
             const Transform worldFromMount =
-                mount->part < 0 ? parentRoot
-                                : modelPartFrames(parent, parentRoot, t)[std::size_t(mount->part)];
+                mount->part < 0 ? parentRoot : modelPartFrame(parent, mount->part, parentRoot, t);
             roots[y] = worldFromMount * objectFrame(object, t);
         }
     }
@@ -110,7 +128,7 @@ void attachedRootFrames(const SceneDesc& scene, double t, std::vector<Transform>
         // The parent comes earlier in attachOrder when it is attached itself.
         const Transform parentRoot = parent.attachedTo ? roots[mount.object] : objectFrame(parent, t);
         const Transform worldFromMount =
-            mount.part < 0 ? parentRoot : modelPartFrames(parent, parentRoot, t)[std::size_t(mount.part)];
+            mount.part < 0 ? parentRoot : modelPartFrame(parent, mount.part, parentRoot, t);
         roots[i] = worldFromMount * objectFrame(object, t);
     }
 }

@@ -18,6 +18,11 @@ namespace f2 {
 /// parts' animation evaluated at `t` (in the model's order of parts).
 std::vector<Transform> modelPartFrames(const SceneObject& object, const Transform& worldFromRoot, double t);
 
+/// The world transform of one part, `part`, of a model placed at
+/// `worldFromRoot`: modelPartFrames(…)[part], bit for bit, without
+/// allocating (an attachment to a part is evaluated every frame).
+Transform modelPartFrame(const SceneObject& object, int part, const Transform& worldFromRoot, double t);
+
 /// World transform of shape k of a model whose part frames are `worldFromPart`.
 inline Transform modelShapeFrame(const SceneObject& object, std::size_t k,
                                  const std::vector<Transform>& worldFromPart) {
