@@ -22,9 +22,9 @@ struct PlacedPrimitive {
     bool castsShadow = true;  ///< false under `/no_shadow` (SPEC 10.8)
 };
 
-/// Every primitive seen at time `t` (frames; hidden ones, SPEC 10.7, left out): objects as created, a robot
-/// as body, head, left eye, right eye, lhand, rhand; a human as body, head, lhand, rhand (the order of the
-/// renderer and of the Embree peer's format).
+/// Every primitive seen at time `t` (frames; hidden ones, SPEC 10.7, left out): objects as created, a model
+/// instance as its shapes in its model's order (the robot: torso, face, two eyes, two arms), the order of
+/// the renderer and of the Embree peer's format.
 std::vector<PlacedPrimitive> framePrimitives(const SceneDesc& scene, double t);
 
 /// Text of a float that reads back to the same float, in the C locale.
