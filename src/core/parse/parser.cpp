@@ -1492,6 +1492,12 @@ class Parser : private ExpansionSink {
     /// set as a variable of the block; a bad one is reported and left out.
     std::vector<ModelParam> modelParams() {
         std::vector<ModelParam> params;
+        // Only so many tokens of a line are stored (kMaxStoredTokens): the rest is an error.
+        if (argCount() >= kMaxStoredTokens) {
+            error(commandPos(), "too many parameters on one '/model' line: at most " +
+                                    std::to_string((kMaxStoredTokens - 2) / 2));
+            return {};
+        }
         for (int i = 1; i + 1 < argCount(); i += 2) {
             if (failed(i)) continue;
             const std::string_view name = arg(i);
@@ -1525,6 +1531,11 @@ class Parser : private ExpansionSink {
     std::optional<std::vector<ModelParam>> instanceParams(const ModelType& type, int first) {
         std::vector<ModelParam> values = type.params;
         std::vector<bool> given(values.size(), false);
+        if (argCount() >= kMaxStoredTokens) {
+            error(commandPos(), "too many arguments: an instance's line holds at most " +
+                                    std::to_string(kMaxStoredTokens - 1) + " (its parameters included)");
+            return std::nullopt;
+        }
         bool ok = true;
         for (int i = first; i < argCount(); i += 2) {
             if (failed(i)) {
