@@ -1702,6 +1702,14 @@ class Parser : private ExpansionSink {
         building_->indexed.parts.push_back(span(argPos(0), name));
     }
 
+    /// "unknown part 'b' of 'm' (expected a)": a part the block being read has not declared.
+    std::string unknownBlockPart(std::string_view part) const {
+        const ModelType& type = *building_->type;
+        return "unknown part " + quoteToken(part) + " of " + modelText(*building_) +
+               (type.parts.empty() ? std::string(" (declare it with '/part' first)")
+                                   : " (expected " + partList(type) + ")");
+    }
+
     /// The `part.shape` in argument i names a shape of the model being read.
     std::optional<int> modelShapeArgument(int i) {
         if (failed(i)) return std::nullopt;
@@ -1715,10 +1723,7 @@ class Parser : private ExpansionSink {
         }
         const int part = type.partIndex(text.substr(0, dot));
         if (part < 0) {
-            error(argPos(i), "unknown part " + quoteToken(text.substr(0, dot)) + " of " +
-                                 modelText(*building_) +
-                                 (type.parts.empty() ? std::string(" (declare it with '/part' first)")
-                                                     : " (expected " + partList(type) + ")"));
+            error(argPos(i), unknownBlockPart(text.substr(0, dot)));
             return std::nullopt;
         }
         const int shape = type.shapeIndex(part, text.substr(dot + 1));
@@ -1756,9 +1761,7 @@ class Parser : private ExpansionSink {
         const std::string_view shapeName = text.substr(dot + 1);
         shape.part = type.partIndex(partName);
         if (shape.part < 0) {
-            error(argPos(0), "unknown part " + quoteToken(partName) + " of " + modelText(*building_) +
-                                 (type.parts.empty() ? std::string(" (declare it with '/part' first)")
-                                                     : " (expected " + partList(type) + ")"));
+            error(argPos(0), unknownBlockPart(partName));
             return;
         }
         if (type.shapeIndex(shape.part, shapeName) >= 0) {
