@@ -415,14 +415,19 @@ class Parser : private ExpansionSink {
         return p;
     }
     /// Where token i of the line is, with its written extent (so a diagnostic there covers it).
+    /// A token past the stored ones (a line longer than kMaxStoredTokens) is
+    /// reported at the last stored one: never read past the array.
     Pos tokenPos(int i) const {
-        const LogicalToken& token = tokens_.tokens[static_cast<std::size_t>(i)];
+        const LogicalToken& token = storedToken(i);
         Pos p = at(token.column);
         p.length = static_cast<int>(token.written.size());
         return p;
     }
     Pos commandPos() const { return tokenPos(0); }
-    const LogicalToken& argToken(int i) const { return tokens_.tokens[static_cast<std::size_t>(i + 1)]; }
+    const LogicalToken& storedToken(int i) const {
+        return tokens_.tokens[static_cast<std::size_t>(std::clamp(i, 0, kMaxStoredTokens - 1))];
+    }
+    const LogicalToken& argToken(int i) const { return storedToken(i + 1); }
     std::string_view arg(int i) const { return argToken(i).text; }
     Pos argPos(int i) const { return tokenPos(i + 1); }
     /// A `( … )` or `{ … }` of argument i failed; its error is already reported.
@@ -1447,7 +1452,8 @@ class Parser : private ExpansionSink {
             return;
         }
         // A parameter without its default is left out; the type is still defined.
-        if (argCount() % 2 == 0) {
+        // (A line longer than the stored tokens is reported by modelParams.)
+        if (argCount() % 2 == 0 && argCount() < kMaxStoredTokens) {
             error(argPos(argCount() - 1), "the parameter " + quoteToken(arg(argCount() - 1)) +
                                               " needs a default value: '/model <type> [<param> <default>]…'");
         }
