@@ -1,11 +1,11 @@
 #pragma once
 /// Inputs shared by the micro-benchmarks: seeded random rays and primitives,
-/// and evaluated frames of the generated scenes (core/scene/bench_scenes.h).
+/// and evaluated frames of the generated scenes (io/bench_scenes.h).
 #include <cstdint>
 #include <vector>
 
 #include "core/render/frame_scene.h"
-#include "core/scene/bench_scenes.h"
+#include "io/bench_scenes.h"
 
 namespace f2::bench {
 

@@ -10,7 +10,7 @@
 #include "core/render/camera.h"
 #include "core/render/frame_scene.h"
 #include "core/render/renderer.h"
-#include "core/scene/bench_scenes.h"
+#include "io/bench_scenes.h"
 #include "scene_source.h"
 
 namespace f2::cli {

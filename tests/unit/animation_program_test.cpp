@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "core/anim/frame_builder.h"
-#include "core/scene/bench_scenes.h"
 #include "core/scene/models.h"
+#include "io/bench_scenes.h"
 #include "robot_parts.h"
 #include "test_scenes.h"
 

@@ -1,7 +1,7 @@
-// The generated benchmark scenes robots:N, spheres:N and lamps:N (core/scene/bench_scenes.h):
+// The generated benchmark scenes robots:N, spheres:N and lamps:N (io/bench_scenes.h):
 // they parse, hold what docs/performance.md says, animate, and the camera
 // formula keeps every object in view.
-#include "core/scene/bench_scenes.h"
+#include "io/bench_scenes.h"
 
 #include <gtest/gtest.h>
 

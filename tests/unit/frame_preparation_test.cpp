@@ -14,7 +14,7 @@
 
 #include "core/anim/animation_program.h"
 #include "core/anim/frame_builder.h"
-#include "core/scene/bench_scenes.h"
+#include "io/bench_scenes.h"
 #include "test_scenes.h"
 
 namespace f2 {

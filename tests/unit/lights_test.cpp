@@ -11,7 +11,7 @@
 #include "core/anim/light_frame.h"
 #include "core/render/pixel_report.h"
 #include "core/render/renderer.h"
-#include "core/scene/bench_scenes.h"
+#include "io/bench_scenes.h"
 #include "render_paths.h"
 #include "test_scenes.h"
 

@@ -12,7 +12,7 @@
 #include "core/anim/frame_builder.h"
 #include "core/geometry/bvh_packet.h"
 #include "core/render/frame_scene.h"
-#include "core/scene/bench_scenes.h"
+#include "io/bench_scenes.h"
 #include "test_scenes.h"
 
 namespace f2 {

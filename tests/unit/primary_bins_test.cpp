@@ -15,7 +15,7 @@
 #include "core/geometry/bvh_packet.h"
 #include "core/render/renderer.h"
 #include "core/render/shading.h"
-#include "core/scene/bench_scenes.h"
+#include "io/bench_scenes.h"
 #include "test_scenes.h"
 
 namespace f2 {

@@ -8,7 +8,7 @@
 
 #include "core/anim/frame_builder.h"
 #include "core/render/renderer.h"
-#include "core/scene/bench_scenes.h"
+#include "io/bench_scenes.h"
 #include "test_scenes.h"
 
 namespace f2 {

@@ -1,4 +1,4 @@
-#include "core/scene/bench_scenes.h"
+#include "io/bench_scenes.h"
 
 #include <algorithm>
 #include <array>
