@@ -44,8 +44,8 @@ QString ExportActions::outputFolder() const {
                                                   : QFileInfo(session_->document()->path()).absolutePath();
 }
 
-Image ExportActions::frameToSave() const {
-    return session_->renderStill(viewport_->viewCamera(viewport_->renderSize()));
+void ExportActions::frameToSave(std::function<void(const Image&)> done) const {
+    session_->renderStill(viewport_->viewCamera(viewport_->renderSize()), std::move(done));
 }
 
 void ExportActions::saveFrame() {
@@ -55,11 +55,16 @@ void ExportActions::saveFrame() {
     const QString path = QFileDialog::getSaveFileName(
         window_, tr("Save Frame"), QDir(outputFolder()).filePath(suggested), tr("PNG images (*.png)"));
     if (path.isEmpty() || refuseSceneFile(path, tr("Save Frame"))) return;
-    std::string error;
-    if (!writePng(frameToSave(), QFile::encodeName(path).toStdString(), error))
-        QMessageBox::warning(window_, tr("Save Frame"), QString::fromStdString(error));
-    else
-        window_->statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
+    window_->statusBar()->showMessage(tr("Saving %1…").arg(path));
+    frameToSave([window = window_, path](const Image& image) {
+        std::string error;
+        if (!writePng(image, QFile::encodeName(path).toStdString(), error)) {
+            window->statusBar()->clearMessage();
+            QMessageBox::warning(window, tr("Save Frame"), QString::fromStdString(error));
+        } else {
+            window->statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
+        }
+    });
 }
 
 void ExportActions::exportPngSequence() {

@@ -4,6 +4,7 @@
 /// job taken from the current view and loop (animation_exporter.h runs it).
 #include <QObject>
 #include <QString>
+#include <functional>
 #include <memory>
 
 #include "animation_exporter.h"
@@ -30,10 +31,10 @@ class ExportActions : public QObject {
     /// The folder the save and export dialogs start in: the scene's (the
     /// working folder for an untitled scene).
     QString outputFolder() const;
-    /// The frame *Save Frame* writes: the current time and view, rendered at
-    /// the render size (the scene's /camera size at *Scene Size*, whatever
-    /// the docks take from the window).
-    Image frameToSave() const;
+    /// The frame *Save Frame* writes, given to `done` once rendered: the
+    /// current time and view, at the render size (the scene's /camera size at
+    /// *Scene Size*, whatever the docks take from the window).
+    void frameToSave(std::function<void(const Image&)> done) const;
     /// The export of `scene` into `sink` from the current view: the loop's
     /// frames when loop points are set, else frames 0..last, at the scene's
     /// /camera size. `destination` names the output in messages.

@@ -3,6 +3,7 @@
 /// studio session (document, clock, frames, selection, capture edits) and the
 /// widgets. The work is done by those classes; this one stays small.
 #include <QMainWindow>
+#include <functional>
 #include <memory>
 
 #include "animation_exporter.h"
@@ -77,7 +78,7 @@ class MainWindow : public QMainWindow {
     /// File › Save Frame and the exports (ExportActions).
     ExportActions* exports() const { return exports_; }
     QString outputFolder() const { return exports_->outputFolder(); }
-    Image frameToSave() const { return exports_->frameToSave(); }
+    void frameToSave(std::function<void(const Image&)> done) const { exports_->frameToSave(std::move(done)); }
     ExportJob exportJob(std::shared_ptr<const SceneDesc> scene, std::unique_ptr<FrameSink> sink,
                         const QString& destination) const {
         return exports_->exportJob(std::move(scene), std::move(sink), destination);

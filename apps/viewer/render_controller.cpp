@@ -22,6 +22,7 @@ RenderController::~RenderController() {
         std::lock_guard lock(mutex_);
         quit_ = true;
         pending_.reset();
+        stills_.clear();
     }
     cancel_.store(true);
     wake_.notify_all();
@@ -36,6 +37,14 @@ void RenderController::request(RenderRequest request) {
         if (pending_) skipped_.fetch_add(1);
         pending_ = std::move(request);
         pendingSerial_ = nextSerial_++;
+    }
+    wake_.notify_one();
+}
+
+void RenderController::requestStill(RenderRequest request, std::function<void(const Image&)> done) {
+    {
+        std::lock_guard lock(mutex_);
+        stills_.push_back({std::move(request), std::move(done)});
     }
     wake_.notify_one();
 }
@@ -55,10 +64,24 @@ void RenderController::workerLoop(int threads) {
     for (;;) {
         RenderRequest request;
         quint64 serial = 0;
+        std::optional<Still> still;
         {
             std::unique_lock lock(mutex_);
-            wake_.wait(lock, [this] { return quit_ || pending_.has_value(); });
+            wake_.wait(lock, [this] { return quit_ || pending_.has_value() || !stills_.empty(); });
             if (quit_) return;
+            if (!stills_.empty()) {  // a picture asked for is not skipped, and first
+                still = std::move(stills_.front());
+                stills_.pop_front();
+            }
+        }
+        if (still) {
+            renderStill(renderer, std::move(*still));
+            if (cancel_.load()) return;
+            continue;
+        }
+        {
+            std::lock_guard lock(mutex_);
+            if (!pending_) continue;
             request = std::move(*pending_);
             serial = pendingSerial_;
             pending_.reset();
@@ -89,6 +112,15 @@ void RenderController::workerLoop(int threads) {
         QMetaObject::invokeMethod(
             this, [this, frame, info] { deliver(frame, info); }, Qt::QueuedConnection);
     }
+}
+
+void RenderController::renderStill(Renderer& renderer, Still still) {
+    auto image = std::make_shared<Image>();
+    const RenderRequest& r = still.request;
+    renderer.render(*r.scene, r.time, r.camera, *image, r.options, &cancel_);
+    if (cancel_.load()) return;  // only the destructor cancels
+    QMetaObject::invokeMethod(
+        this, [done = std::move(still.done), image] { done(*image); }, Qt::QueuedConnection);
 }
 
 void RenderController::deliver(const QImage& image, const FrameInfo& info) {

@@ -10,6 +10,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <deque>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -69,6 +70,12 @@ class RenderController : public QObject {
     /// any request still waiting (that one is skipped, never rendered).
     void request(RenderRequest request);
 
+    /// A picture to keep (Save Frame): rendered by the same worker before a
+    /// waiting frame, never replaced by a newer request, and handed whole (the
+    /// core image, the bytes `f2 render` writes) to `done` on the GUI thread.
+    /// Not called if the controller is destroyed first.
+    void requestStill(RenderRequest request, std::function<void(const Image&)> done);
+
     /// GUI thread: the latest request has not come back as frameReady yet.
     bool hasPendingFrames() const { return lastDeliveredSerial_ + 1 < nextSerial_; }
     /// Frames delivered in the last second, per second (0 when idle).
@@ -87,13 +94,20 @@ class RenderController : public QObject {
     void frameReady(const QImage& image, const f2::viewer::FrameInfo& info);
 
    private:
+    struct Still {
+        RenderRequest request;
+        std::function<void(const Image&)> done;
+    };
     void workerLoop(int threads);
+    /// Worker thread: renders `still` and posts its picture to the GUI thread.
+    void renderStill(Renderer& renderer, Still still);
     void deliver(const QImage& image, const FrameInfo& info);
 
     mutable std::mutex mutex_;
     std::condition_variable wake_;
     std::optional<RenderRequest> pending_;  // guarded by mutex_
     quint64 pendingSerial_ = 0;             // guarded by mutex_
+    std::deque<Still> stills_;              // guarded by mutex_
     bool quit_ = false;                     // guarded by mutex_
     quint64 nextSerial_ = 1;                // GUI thread only
     std::atomic<bool> cancel_{false};

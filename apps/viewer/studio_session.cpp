@@ -127,17 +127,17 @@ void StudioSession::onFrameReady(const QImage& image, const FrameInfo& info) {
     refine();
 }
 
-Image StudioSession::renderStill(const Camera& camera) const {
+void StudioSession::renderStill(const Camera& camera, std::function<void(const Image&)> done) {
     // Rendered again rather than taken from the screen: the picture on screen
     // may be a stretched older frame while the window resizes, and its size
-    // follows the docks at 25-100 %. One frame is milliseconds, so the GUI
-    // thread can afford it for a menu command.
-    Renderer renderer;
-    Image image;
-    RenderOptions options;
-    options.view = viewMode_;  // what the picture shows
-    renderer.render(*document_->scene(), playback_->time(), camera, image, options);
-    return image;
+    // follows the docks at 25-100 %.
+    RenderRequest request;
+    request.scene = document_->scene();
+    if (!request.scene) return;
+    request.time = playback_->time();
+    request.camera = camera;
+    request.options.view = viewMode_;  // what the picture shows
+    controller_->requestStill(std::move(request), std::move(done));
 }
 
 bool StudioSession::pick(QPointF imagePoint, const Camera& camera) {

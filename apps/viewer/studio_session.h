@@ -64,8 +64,10 @@ class StudioSession : public QObject {
     /// A frame is shown and it is the last one coming: nothing asked, waiting
     /// or left to refine.
     bool isFrameSettled() const;
-    /// The current time and `camera`'s view, rendered here and now (Save Frame).
-    Image renderStill(const Camera& camera) const;
+    /// The current time and `camera`'s view in the current view mode, rendered
+    /// by the render controller before any waiting frame (Save Frame); `done`
+    /// gets it on the GUI thread. Nothing happens without a scene.
+    void renderStill(const Camera& camera, std::function<void(const Image&)> done);
 
     /// Selects what image point `imagePoint` shows in the frame shown when it
     /// is seen through `camera` (the view at that frame's size), or clears the

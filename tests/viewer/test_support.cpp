@@ -6,6 +6,7 @@
 #include <QListWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <optional>
 
 #include "core/render/camera.h"
 #include "core/render/renderer.h"
@@ -53,6 +54,13 @@ Image coreRender(const SceneDesc& scene, double t, int width, int height, int an
     options.antialias = antialias;
     renderer.render(scene, t, cameraAt(scene, t).resized(width, height), image, options);
     return image;
+}
+
+Image frameToSave(const MainWindow& w) {
+    std::optional<Image> saved;
+    w.frameToSave([&](const Image& image) { saved = image; });
+    if (!QTest::qWaitFor([&] { return saved.has_value(); }, kWaitMs)) return Image{};
+    return saved.value_or(Image{});
 }
 
 bool waitForShownFrame(MainWindow& w, double t) {

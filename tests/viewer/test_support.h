@@ -75,6 +75,10 @@ Image coreRender(const SceneDesc& scene, double t, int width, int height, int an
 /// and, when paused, refined to its last step.
 bool waitForShownFrame(MainWindow& w, double t);
 
+/// The frame Save Frame writes, once the render controller has rendered it
+/// (an empty image if it never comes).
+Image frameToSave(const MainWindow& w);
+
 /// The Problems list's lines, one per line.
 QString problemsText(MainWindow& w);
 

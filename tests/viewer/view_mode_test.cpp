@@ -115,7 +115,7 @@ void ViewModeTest::menuSwitchesThePicture() {
         QCOMPARE(w.shownFrame().antialias, 1);  // diagnostic views do not refine
         QVERIFY2(statusNames(w, "view: " + text), qPrintable(text));
         // Save Frame writes what the picture shows.
-        QVERIFY2(w.frameToSave() == shown, qPrintable(text));
+        QVERIFY2(frameToSave(w) == shown, qPrintable(text));
     }
     // The cost view (last) shows its legend's panel at the bottom left.
     const Image cost = fromQImage(w.viewport()->image());

@@ -83,6 +83,7 @@ class ViewerTest : public QObject {
     void problemsNameTheIncludedFileAndLoopValues();
     void windowRespondsDuringSlowFrame();
     void latestRequestWins();
+    void aStillIsNeitherSkippedNorLate();
     void exportWritesPngSequence();
     void exportWritesVideo();
     void cancelledVideoExportLeavesNoFile();
@@ -289,12 +290,13 @@ void ViewerTest::savedFrameSizeIgnoresDocks() {
     w.diagnosticsDock()->show();
     QCoreApplication::processEvents();
     QVERIFY(w.viewport()->width() < 800);
-    const Image saved = w.frameToSave();
+    const Image saved = frameToSave(w);
     QCOMPARE(saved.width, 96);
     QCOMPARE(saved.height, 72);
     QVERIFY(saved == coreRender(*w.document()->scene(), 4, 96, 72));
     w.setRenderScale(RenderScale::Full);
-    QCOMPARE(QSize(w.frameToSave().width, w.frameToSave().height), w.viewport()->renderSize());
+    const Image full = frameToSave(w);
+    QCOMPARE(QSize(full.width, full.height), w.viewport()->renderSize());
 }
 
 void ViewerTest::dialogsStartInTheScenesFolder() {
@@ -818,6 +820,34 @@ void ViewerTest::latestRequestWins() {
     const auto last = frames.last().at(1).value<FrameInfo>();
     QCOMPARE(last.time, 10.0);
     QVERIFY(fromQImage(frames.last().at(0).value<QImage>()) == coreRender(*scene, 10, 96, 72));
+}
+
+void ViewerTest::aStillIsNeitherSkippedNorLate() {
+    // Save Frame's picture goes through the same worker as the playing frames
+    // (issue 23): a frame held in the worker, a still asked for, then ten
+    // frames that replace each other; the still is rendered next, whole.
+    const ParseResult parsed = parseScene(kSmallScene, "small.f2");
+    QVERIFY(parsed.ok());
+    const auto scene = std::make_shared<const SceneDesc>(*parsed.scene);
+    const Camera camera = Camera::fromDesc(scene->camera);
+
+    RenderController controller;
+    controller.setDebugDelay(std::chrono::hours(1));  // holds the first frame until released
+    QSignalSpy frames(&controller, &RenderController::frameReady);
+    controller.request({scene, 0.0, camera, {}});
+    std::optional<Image> still;
+    int framesBeforeStill = -1;
+    controller.requestStill({scene, 7.0, camera, {}}, [&](const Image& image) {
+        still = image;
+        framesBeforeStill = int(frames.count());
+    });
+    for (int t = 1; t <= 10; ++t) controller.request({scene, double(t), camera, {}});
+    controller.setDebugDelay(0ms);
+    QTRY_VERIFY_WITH_TIMEOUT(still.has_value(), kWaitMs);
+    QVERIFY(*still == coreRender(*scene, 7, 96, 72));
+    QVERIFY2(framesBeforeStill <= 1, qPrintable(QString::number(framesBeforeStill)));
+    QTRY_VERIFY_WITH_TIMEOUT(!controller.hasPendingFrames(), kWaitMs);
+    QCOMPARE(frames.last().at(1).value<FrameInfo>().time, 10.0);
 }
 
 void ViewerTest::exportWritesPngSequence() {
