@@ -1,0 +1,168 @@
+#include "io/pov_animation.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <functional>
+#include <sstream>
+
+#include "core/render/camera.h"
+#include "io/comment_text.h"
+#include "io/frame_primitives.h"
+#include "io/pov_scene_text.h"
+
+namespace f2 {
+
+namespace {
+/// Text of a double that reads back to the same double, in the C locale.
+std::string exactNumber(double value) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%.17g", value);
+    return text;
+}
+
+/// Merges the values of every frame into one SDL expression each: the
+/// value itself when every frame has the same, else a look-up in an array of
+/// every frame's value, declared in `declarations`.
+class FrameMerger {
+   public:
+    explicit FrameMerger(const std::vector<PovValues>& frames) : frames_(frames) {}
+
+    using Field = std::function<const std::string&(const PovValues&)>;
+
+    /// `transform`: the values are `matrix <…>`, which an array holds as a `transform {}`.
+    std::string expression(const std::string& name, const Field& field, bool transform = false) {
+        const std::string& first = field(frames_[0]);
+        const bool same = std::all_of(frames_.begin(), frames_.end(),
+                                      [&](const PovValues& v) { return field(v) == first; });
+        if (same) return first;
+        ++arrays_;
+        declarations_ << "#declare " << name << " = array[" << frames_.size() << "] {\n";
+        for (std::size_t f = 0; f < frames_.size(); ++f) {
+            declarations_ << "  "
+                          << (transform ? "transform { " + field(frames_[f]) + " }" : field(frames_[f]))
+                          << (f + 1 < frames_.size() ? ",\n" : "\n");
+        }
+        declarations_ << "};\n";
+        return transform ? "transform { " + name + "[F2_K] }" : name + "[F2_K]";
+    }
+
+    /// A comment's value: the same at every frame, or a word saying it is not.
+    std::string note(const Field& field) const {
+        const std::string& first = field(frames_[0]);
+        for (const PovValues& v : frames_)
+            if (field(v) != first) return "(changes over the animation)";
+        return first;
+    }
+
+    std::string declarations() const { return declarations_.str(); }
+    std::size_t arrays() const { return arrays_; }
+
+   private:
+    const std::vector<PovValues>& frames_;
+    std::ostringstream declarations_;
+    std::size_t arrays_ = 0;
+};
+}  // namespace
+
+bool povIniName(std::string_view name) {
+    if (name.empty()) return false;
+    return std::all_of(name.begin(), name.end(), [](char c) {
+        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' ||
+               c == '_' || c == '+' || c == '-';
+    });
+}
+
+PovAnimation povAnimation(const SceneDesc& scene, int width, int height, const std::string& source,
+                          const std::string& stem) {
+    PovAnimation result;
+    result.lastFrame = scene.lastFrame();
+    const std::size_t count = std::size_t(result.lastFrame) + 1;
+
+    // Every frame's shapes (hidden ones kept, so the list is the same at
+    // every frame) and cameras; the suns stand beyond all of them.
+    std::vector<std::vector<PlacedPrimitive>> prims(count);
+    std::vector<Camera> cameras(count);
+    PovBounds bounds;
+    for (std::size_t f = 0; f < count; ++f) {
+        prims[f] = framePrimitives(scene, double(f), true);
+        cameras[f] = cameraAt(scene, double(f)).resized(width, height);
+        bounds.grow(cameras[f], prims[f]);
+    }
+    std::vector<PovValues> frames(count);
+    for (std::size_t f = 0; f < count; ++f)
+        frames[f] = povValuesAt(scene, double(f), cameras[f], prims[f], bounds);
+
+    FrameMerger merge(frames);
+    PovValues v;
+    v.eye = merge.expression("F2_Eye", [](const PovValues& x) -> const std::string& { return x.eye; });
+    v.right = merge.expression("F2_Right", [](const PovValues& x) -> const std::string& { return x.right; });
+    v.up = merge.expression("F2_Up", [](const PovValues& x) -> const std::string& { return x.up; });
+    v.direction = merge.expression("F2_Direction",
+                                   [](const PovValues& x) -> const std::string& { return x.direction; });
+    auto lights = [&](const std::string& prefix, std::vector<PovLightValues> PovValues::*list,
+                      std::size_t n) {
+        std::vector<PovLightValues> out(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::string name = prefix + std::to_string(i) + "_";
+            auto field = [&](std::string PovLightValues::*member) {
+                return [list, i, member](const PovValues& x) -> const std::string& {
+                    return (x.*list)[i].*member;
+                };
+            };
+            out[i].location = merge.expression(name + "Location", field(&PovLightValues::location));
+            out[i].pointAt = merge.expression(name + "PointAt", field(&PovLightValues::pointAt));
+            out[i].intensity = merge.expression(name + "Intensity", field(&PovLightValues::intensity));
+            out[i].areaA = merge.expression(name + "AreaA", field(&PovLightValues::areaA));
+            out[i].areaB = merge.expression(name + "AreaB", field(&PovLightValues::areaB));
+            out[i].note = merge.note(field(&PovLightValues::note));
+        }
+        return out;
+    };
+    v.suns = lights("F2_Sun", &PovValues::suns, scene.lights.size());
+    v.locals = lights("F2_Light", &PovValues::locals, scene.localLights.size());
+    const std::size_t shapes = prims[0].size();
+    for (std::size_t i = 0; i < shapes; ++i) {
+        const std::string name = "F2_Shape" + std::to_string(i) + "_";
+        auto field = [i](std::string PovShapeValues::*member) {
+            return [i, member](const PovValues& x) -> const std::string& { return x.shapes[i].*member; };
+        };
+        PovShapeValues& s = v.shapes.emplace_back();
+        s.transform = merge.expression(name + "Transform", field(&PovShapeValues::transform), true);
+        s.colour = merge.expression(name + "Colour", field(&PovShapeValues::colour));
+        s.ambient = merge.expression(name + "Ambient", field(&PovShapeValues::ambient));
+        s.visible = merge.expression(name + "Visible", field(&PovShapeValues::visible));
+    }
+    result.arrays = merge.arrays();
+
+    const double fps = double(scene.fps);
+    std::ostringstream out;
+    out.imbue(std::locale::classic());
+    out << "// " << commentText(source) << ", frames 0-" << result.lastFrame << " at " << scene.fps
+        << " fps, exported by f2 (F2 Stage).\n"
+        << "// Render every frame: cd <this directory> && povray " << stem
+        << ".ini (+SFk +EFk: frame k only).\n"
+        << "// clock is the time in seconds; values that change are read at the nearest frame.\n"
+        << "// Coordinates are f2's: left-handed, y up, like POV-Ray's.\n"
+        << "#version 3.7;\n\n"
+        << "#declare F2_Frame = clock * " << scene.fps << ";\n"
+        << "#declare F2_K = min(max(floor(F2_Frame + 0.5), 0), " << result.lastFrame << ");\n\n"
+        << merge.declarations() << "\n"
+        << povSceneBody(scene, prims[0], v);
+    result.scene = out.str();
+
+    std::ostringstream ini;
+    ini.imbue(std::locale::classic());
+    ini << "; " << commentText(source) << ": every frame, exported by f2 (F2 Stage).\n"
+        << "; Run in this directory: povray " << stem << ".ini\n"
+        << "Input_File_Name=" << stem << ".pov\n"
+        << "Output_File_Name=" << stem << "_.png\n"
+        << "Output_File_Type=N\n"
+        << "Width=" << width << "\nHeight=" << height << "\n"
+        << "Antialias=Off\nDisplay=Off\n"
+        << "Initial_Frame=0\nFinal_Frame=" << result.lastFrame << "\n"
+        << "Initial_Clock=0\nFinal_Clock=" << exactNumber(double(result.lastFrame) / fps) << "\n";
+    result.ini = ini.str();
+    return result;
+}
+
+}  // namespace f2
