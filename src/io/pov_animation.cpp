@@ -9,6 +9,7 @@
 #include "io/comment_text.h"
 #include "io/frame_primitives.h"
 #include "io/pov_scene_text.h"
+#include "io/pov_track.h"
 
 namespace f2 {
 
@@ -44,6 +45,13 @@ class FrameMerger {
         }
         declarations_ << "};\n";
         return transform ? "transform { " + name + "[F2_K] }" : name + "[F2_K]";
+    }
+
+    /// Whether `field` has another value at some frame.
+    bool varies(const Field& field) const {
+        const std::string& first = field(frames_[0]);
+        return std::any_of(frames_.begin(), frames_.end(),
+                           [&](const PovValues& v) { return field(v) != first; });
     }
 
     /// A comment's value: the same at every frame, or a word saying it is not.
@@ -120,6 +128,13 @@ PovAnimation povAnimation(const SceneDesc& scene, int width, int height, const s
     };
     v.suns = lights("F2_Sun", &PovValues::suns, scene.lights.size());
     v.locals = lights("F2_Light", &PovValues::locals, scene.localLights.size());
+    // A shape whose object moves by its own keys alone (no model, no ride,
+    // no drive, no bezier) has them evaluated by POV-Ray (pov_track.h);
+    // other changing values are read from their arrays.
+    std::ostringstream tracks;
+    std::vector<std::size_t> objectOf;  // each primitive's object
+    for (std::size_t o = 0; o < scene.objects.size(); ++o)
+        objectOf.insert(objectOf.end(), primitiveCountOf(scene.objects[o]), o);
     const std::size_t shapes = prims[0].size();
     for (std::size_t i = 0; i < shapes; ++i) {
         const std::string name = "F2_Shape" + std::to_string(i) + "_";
@@ -127,7 +142,16 @@ PovAnimation povAnimation(const SceneDesc& scene, int width, int height, const s
             return [i, member](const PovValues& x) -> const std::string& { return x.shapes[i].*member; };
         };
         PovShapeValues& s = v.shapes.emplace_back();
-        s.transform = merge.expression(name + "Transform", field(&PovShapeValues::transform), true);
+        const SceneObject& object = scene.objects[objectOf[i]];
+        if (!object.model && !object.mayRide() && povEvaluates(object.track) &&
+            merge.varies(field(&PovShapeValues::transform))) {
+            tracks << "// " << commentText(prims[0][i].label) << ": its keys\n"
+                   << povTrackPose(object.track, "F2_Shape" + std::to_string(i));
+            s.transform = "rotate " + name + "Rotation translate " + name + "Position";
+            ++result.evaluated;
+        } else {
+            s.transform = merge.expression(name + "Transform", field(&PovShapeValues::transform), true);
+        }
         s.colour = merge.expression(name + "Colour", field(&PovShapeValues::colour));
         s.ambient = merge.expression(name + "Ambient", field(&PovShapeValues::ambient));
         s.visible = merge.expression(name + "Visible", field(&PovShapeValues::visible));
@@ -144,9 +168,14 @@ PovAnimation povAnimation(const SceneDesc& scene, int width, int height, const s
         << "// clock is the time in seconds; values that change are read at the nearest frame.\n"
         << "// Coordinates are f2's: left-handed, y up, like POV-Ray's.\n"
         << "#version 3.7;\n\n"
+        // f2's time in frames; within 1e-6 of a whole frame it is that frame,
+        // so that a step key or an array lands on it despite the clock's rounding.
         << "#declare F2_Frame = clock * " << scene.fps << ";\n"
+        << "#declare F2_Frame = (abs(F2_Frame - floor(F2_Frame + 0.5)) < 1e-6 ? floor(F2_Frame + 0.5) : "
+           "F2_Frame);\n"
         << "#declare F2_K = min(max(floor(F2_Frame + 0.5), 0), " << result.lastFrame << ");\n\n"
         << merge.declarations() << "\n"
+        << tracks.str() << "\n"
         << povSceneBody(scene, prims[0], v);
     result.scene = out.str();
 

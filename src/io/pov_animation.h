@@ -2,9 +2,11 @@
 /// The whole animation as one POV-Ray 3.7 scene driven by `clock` (seconds)
 /// and an .ini beside it that renders frames 0..lastFrame as numbered PNGs:
 /// `cd DIR && povray NAME.ini`. Every value that holds over the animation is
-/// written as the single-frame export writes it (pov_scene_text.h); a value
-/// that changes is read from an array of its per-frame numbers at the frame
-/// nearest `clock * fps` (docs/output.md, "The whole animation in POV-Ray").
+/// written as the single-frame export writes it (pov_scene_text.h); a shape
+/// moved by its own keys alone has them evaluated by POV-Ray (pov_track.h);
+/// any other value that changes is read from an array of its per-frame
+/// numbers at the frame nearest `clock * fps` (docs/output.md, "The whole
+/// animation in POV-Ray").
 #include <string>
 #include <string_view>
 
@@ -16,7 +18,8 @@ struct PovAnimation {
     std::string scene;  ///< the .pov
     std::string ini;    ///< the .ini
     int lastFrame = 0;
-    std::size_t arrays = 0;  ///< values that change, each an array of every frame's value
+    std::size_t evaluated = 0;  ///< shapes whose keys POV-Ray evaluates (pov_track.h)
+    std::size_t arrays = 0;     ///< other values that change, each an array of every frame's value
 };
 
 /// `stem` is the files' name without directory and extension, a povIniName():

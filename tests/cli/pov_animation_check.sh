@@ -4,7 +4,8 @@
 # NAME.ini), has povray render frames 0, the middle one and the last through
 # the .ini (+SF/+EF), and requires each to have f2's foreground (IoU >= 0.99,
 # as pov_check.sh) against `f2 render --frame k` at WxH; with CHECK (e.g.
-# `match 2 300`), also `image_compare CHECK...`.
+# `match 2 300`), also `image_compare CHECK...`. F2_POV_FRAMES="a b c"
+# renders those frames instead.
 set -eu
 f2=$1 compare=$2 out=$3 name=$4 scene=$5 w=$6 h=$7
 shift 7
@@ -15,7 +16,7 @@ last=$(sed -n 's/^Final_Frame=//p' "$out/$name.ini")
 grep -qx "Width=$w" "$out/$name.ini" && grep -qx "Height=$h" "$out/$name.ini" ||
   { echo "FAIL: $name.ini does not say ${w}x$h"; cat "$out/$name.ini"; exit 1; }
 read -r r g b < <(sed -n 's/^background { rgb <\([0-9]*\), \([0-9]*\), \([0-9]*\)> .*/\1 \2 \3/p' "$out/$name.pov")
-for k in 0 $((last / 2)) "$last"; do
+for k in ${F2_POV_FRAMES:-0 $((last / 2)) $last}; do
   # POV-Ray pads the frame number to the digits of the last frame.
   png=$(printf "%s_%0${#last}d.png" "$name" "$k")
   (cd "$out" && povray "$name.ini" "+SF$k" "+EF$k" 2>"$name.povlog") ||

@@ -1,0 +1,100 @@
+#include "io/pov_track.h"
+
+#include <cstdio>
+#include <sstream>
+
+namespace f2 {
+
+namespace {
+std::string number(double value) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%.17g", value);
+    return text;
+}
+
+std::string vec(Vec3 v) { return "<" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + ">"; }
+
+/// w(u) of track.h's interpolationWeight as SDL of `F2_U`, u in [0, 1).
+std::string weight(const Easing& easing) {
+    switch (easing.mode) {
+        case Interpolation::Ease:
+            return "F2_U * F2_U * (3 - 2 * F2_U)";
+        case Interpolation::EaseIn:
+            return "F2_U * F2_U * F2_U";
+        case Interpolation::EaseOut:
+            return "1 - (1 - F2_U) * (1 - F2_U) * (1 - F2_U)";
+        case Interpolation::Back:
+            // c1 = 1.70158, c3 = c1 + 1; exactly 0 at u = 0 (backFraction).
+            return "(F2_U <= 0 ? 0 : 1 + 2.70158 * pow(F2_U - 1, 3) + 1.70158 * pow(F2_U - 1, 2))";
+        case Interpolation::Elastic:
+            return "(F2_U <= 0 ? 0 : pow(2, -10 * F2_U) * sin((10 * F2_U - 0.75) * 2 * pi / 3) + 1)";
+        case Interpolation::Bounce:
+            // n = 7.5625, d = 2.75: four parabolas (bounceFraction).
+            return "(F2_U < 1 / 2.75 ? 7.5625 * F2_U * F2_U"
+                   " : F2_U < 2 / 2.75 ? 7.5625 * pow(F2_U - 1.5 / 2.75, 2) + 0.75"
+                   " : F2_U < 2.5 / 2.75 ? 7.5625 * pow(F2_U - 2.25 / 2.75, 2) + 0.9375"
+                   " : 7.5625 * pow(F2_U - 2.625 / 2.75, 2) + 0.984375)";
+        case Interpolation::Linear:
+        case Interpolation::Spline:
+        case Interpolation::Step:
+        case Interpolation::Bezier:
+            break;
+    }
+    return "F2_U";
+}
+}  // namespace
+
+bool povEvaluates(const Track& track) {
+    if (track.drives || track.keys.empty()) return false;
+    for (std::size_t i = 0; i + 1 < track.keys.size(); ++i)
+        if (track.modeAfter(i).mode == Interpolation::Bezier) return false;
+    return true;
+}
+
+std::string povTrackPose(const Track& track, const std::string& name) {
+    const std::vector<Key>& keys = track.keys;
+    const std::string position = name + "_Position", rotation = name + "_Rotation";
+    std::ostringstream out;
+    auto hold = [&](const Pose& pose) {
+        out << "  #declare " << position << " = " << vec(pose.position) << ";\n  #declare " << rotation
+            << " = " << vec(pose.rotation) << ";\n";
+    };
+    // As segmentAt: the first key up to its time, [key i, key i + 1) between, the last from its time.
+    out << "#if (F2_Frame <= " << number(keys[0].time) << ")\n";
+    hold(keys[0].pose);
+    const std::size_t last = keys.size() - 1;
+    for (std::size_t i = 0; i < last; ++i) {
+        const Easing& easing = track.modeAfter(i);
+        out << "#elseif (F2_Frame < " << number(keys[i + 1].time) << ")\n";
+        if (easing.mode == Interpolation::Step) {
+            hold(keys[i].pose);  // until the next key
+            continue;
+        }
+        out << "  #declare F2_U = (F2_Frame - " << number(keys[i].time) << ") / "
+            << number(keys[i + 1].time - keys[i].time) << ";\n";
+        auto blend = [&](const std::string& target, Vec3 Pose::*channel) {
+            const Vec3 p1 = keys[i].pose.*channel, p2 = keys[i + 1].pose.*channel;
+            if (easing.mode == Interpolation::Spline) {
+                // Uniform Catmull-Rom (catmullRom), an end key standing in for a missing neighbour.
+                const Vec3 p0 = keys[i == 0 ? i : i - 1].pose.*channel;
+                const Vec3 p3 = keys[i + 1 < last ? i + 2 : i + 1].pose.*channel;
+                out << "  #declare " << target << " = 0.5 * (2 * " << vec(p1) << " + (" << vec(p2) << " - "
+                    << vec(p0) << ") * F2_U + (2 * " << vec(p0) << " - 5 * " << vec(p1) << " + 4 * "
+                    << vec(p2) << " - " << vec(p3) << ") * F2_U * F2_U + (3 * " << vec(p1) << " - " << vec(p0)
+                    << " - 3 * " << vec(p2) << " + " << vec(p3) << ") * F2_U * F2_U * F2_U);\n";
+            } else {
+                out << "  #declare " << target << " = " << vec(p1) << " + (" << vec(p2) << " - " << vec(p1)
+                    << ") * F2_W;\n";
+            }
+        };
+        if (easing.mode != Interpolation::Spline) out << "  #declare F2_W = " << weight(easing) << ";\n";
+        blend(position, &Pose::position);
+        blend(rotation, &Pose::rotation);
+    }
+    out << "#else\n";
+    hold(keys[last].pose);
+    out << "#end\n";
+    return out.str();
+}
+
+}  // namespace f2
