@@ -132,9 +132,12 @@ PovAnimation povAnimation(const SceneDesc& scene, int width, int height, const s
     // no drive, no bezier) has them evaluated by POV-Ray (pov_track.h);
     // other changing values are read from their arrays.
     std::ostringstream tracks;
-    std::vector<std::size_t> objectOf;  // each primitive's object
-    for (std::size_t o = 0; o < scene.objects.size(); ++o)
+    std::vector<std::size_t> objectOf, firstOf;  // each primitive's object, each object's first primitive
+    for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+        firstOf.push_back(objectOf.size());
         objectOf.insert(objectOf.end(), primitiveCountOf(scene.objects[o]), o);
+    }
+    std::size_t posed = scene.objects.size();  // the last object whose poses are declared
     const std::size_t shapes = prims[0].size();
     for (std::size_t i = 0; i < shapes; ++i) {
         const std::string name = "F2_Shape" + std::to_string(i) + "_";
@@ -142,12 +145,16 @@ PovAnimation povAnimation(const SceneDesc& scene, int width, int height, const s
             return [i, member](const PovValues& x) -> const std::string& { return x.shapes[i].*member; };
         };
         PovShapeValues& s = v.shapes.emplace_back();
-        const SceneObject& object = scene.objects[objectOf[i]];
-        if (!object.model && !object.mayRide() && povEvaluates(object.track) &&
-            merge.varies(field(&PovShapeValues::transform))) {
-            tracks << "// " << commentText(prims[0][i].label) << ": its keys\n"
-                   << povTrackPose(object.track, "F2_Shape" + std::to_string(i));
-            s.transform = "rotate " + name + "Rotation translate " + name + "Position";
+        const std::size_t o = objectOf[i];
+        const SceneObject& object = scene.objects[o];
+        if (povEvaluatesMotion(object) && merge.varies(field(&PovShapeValues::transform))) {
+            const std::string objectName = "F2_Object" + std::to_string(o);
+            if (o != posed) {  // once per object, before its first moving shape
+                tracks << "// " << commentText(object.name) << ": its keys\n"
+                       << povObjectPoses(object, objectName);
+                posed = o;
+            }
+            s.transform = "transform {" + povShapeMotion(object, i - firstOf[o], objectName) + " }";
             ++result.evaluated;
         } else {
             s.transform = merge.expression(name + "Transform", field(&PovShapeValues::transform), true);

@@ -18,7 +18,7 @@ struct PovAnimation {
     std::string scene;  ///< the .pov
     std::string ini;    ///< the .ini
     int lastFrame = 0;
-    std::size_t evaluated = 0;  ///< shapes whose keys POV-Ray evaluates (pov_track.h)
+    std::size_t evaluated = 0;  ///< shapes POV-Ray moves by evaluating their keys (pov_track.h)
     std::size_t arrays = 0;     ///< other values that change, each an array of every frame's value
 };
 

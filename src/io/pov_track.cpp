@@ -1,5 +1,6 @@
 #include "io/pov_track.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 
@@ -95,6 +96,56 @@ std::string povTrackPose(const Track& track, const std::string& name) {
     hold(keys[last].pose);
     out << "#end\n";
     return out.str();
+}
+
+namespace {
+bool still(const Track& track) { return track.keys.empty() && !track.drives; }
+
+std::string partName(const std::string& name, std::size_t part) {
+    return name + "_Part" + std::to_string(part);
+}
+
+/// ` rotate <r> translate <p>`, leaving out zeros.
+std::string place(Vec3 rotation, Vec3 position) {
+    std::string text;
+    if (!(rotation == Vec3{})) text += " rotate " + vec(rotation);
+    if (!(position == Vec3{})) text += " translate " + vec(position);
+    return text;
+}
+}  // namespace
+
+bool povEvaluatesMotion(const SceneObject& object) {
+    if (object.mayRide()) return false;
+    if (!still(object.track) && !povEvaluates(object.track)) return false;
+    return std::all_of(object.partTracks.begin(), object.partTracks.end(),
+                       [](const Track& t) { return still(t) || povEvaluates(t); });
+}
+
+std::string povObjectPoses(const SceneObject& object, const std::string& name) {
+    std::string text;
+    if (!object.track.keys.empty()) text += povTrackPose(object.track, name);
+    for (std::size_t p = 0; p < object.partTracks.size(); ++p)
+        if (!object.partTracks[p].keys.empty()) text += povTrackPose(object.partTracks[p], partName(name, p));
+    return text;
+}
+
+std::string povShapeMotion(const SceneObject& object, std::size_t shape, const std::string& name) {
+    std::string text;
+    if (object.model) {
+        const ModelShape& s = object.model->shapes[shape];
+        text += place(s.rotation, s.centre);
+        for (int p = s.part; p >= 0; p = object.model->parts[std::size_t(p)].parent) {
+            const ModelPart& part = object.model->parts[std::size_t(p)];
+            // partFrame: rest · motion rotation, at the pivot plus the motion's offset.
+            const bool keyed = !object.partTracks[std::size_t(p)].keys.empty();
+            const std::string motion = partName(name, std::size_t(p));
+            if (keyed) text += " rotate " + motion + "_Rotation";
+            text += place(part.restRotation, part.pivot);
+            if (keyed) text += " translate " + motion + "_Position";
+        }
+    }
+    if (object.track.keys.empty()) return text + place(object.rest.rotation, object.rest.position);
+    return text + " rotate " + name + "_Rotation translate " + name + "_Position";
 }
 
 }  // namespace f2

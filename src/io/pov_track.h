@@ -5,7 +5,7 @@
 /// track.h does.
 #include <string>
 
-#include "core/scene/scene_desc.h"
+#include "core/scene/models.h"
 
 namespace f2 {
 
@@ -17,5 +17,21 @@ bool povEvaluates(const Track& track);
 /// `track` (at least one key, povEvaluates) at the frame time `F2_Frame`.
 /// Numbers are written to 17 digits; f2 blends in double and stores floats.
 std::string povTrackPose(const Track& track, const std::string& name);
+
+/// Whether POV-Ray can move `object` itself: it rides on nothing (SPEC 9.2,
+/// 10.7) and its own and its parts' tracks are povEvaluates or have neither
+/// keys nor drives.
+bool povEvaluatesMotion(const SceneObject& object);
+
+/// SDL declaring the poses of `object`'s keyed tracks at `F2_Frame`
+/// (povTrackPose, named `NAME` and `NAME_PartK`), for povShapeMotion.
+std::string povObjectPoses(const SceneObject& object, const std::string& name);
+
+/// The SDL transform of `object`'s primitive `shape` (0 for a primitive; a
+/// model's shape) from its canonical frame to the world, from the poses
+/// povObjectPoses declares: as frame_builder.h composes it, shape turn and
+/// centre, then each part's motion, rest rotation and pivot up to the root,
+/// then the object's pose. `rotate <x, y, z>` is f2's Rz·Ry·Rx (SPEC 1).
+std::string povShapeMotion(const SceneObject& object, std::size_t shape, const std::string& name);
 
 }  // namespace f2
