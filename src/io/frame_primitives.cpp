@@ -57,11 +57,17 @@ std::vector<PlacedPrimitive> framePrimitives(const SceneDesc& scene, double t, b
     return out;
 }
 
-std::string formatNumber(float value) {
+namespace {
+template <class Number>
+std::string shortestText(Number value) {
     if (value == 0) return "0";  // also turns -0 into 0
     char text[32];
     auto result = std::to_chars(text, text + sizeof text, value);
     return std::string(text, result.ptr);
 }
+}  // namespace
+
+std::string formatNumber(float value) { return shortestText(value); }
+std::string formatNumber(double value) { return shortestText(value); }
 
 }  // namespace f2

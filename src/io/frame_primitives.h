@@ -31,5 +31,7 @@ std::vector<PlacedPrimitive> framePrimitives(const SceneDesc& scene, double t, b
 
 /// Text of a float that reads back to the same float, in the C locale.
 std::string formatNumber(float value);
+/// The same for a double (key times, the clock's range).
+std::string formatNumber(double value);
 
 }  // namespace f2

@@ -1,7 +1,6 @@
 #include "io/pov_animation.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <functional>
 #include <sstream>
 
@@ -14,13 +13,6 @@
 namespace f2 {
 
 namespace {
-/// Text of a double that reads back to the same double, in the C locale.
-std::string exactNumber(double value) {
-    char text[40];
-    std::snprintf(text, sizeof text, "%.17g", value);
-    return text;
-}
-
 /// Merges the values of every frame into one SDL expression each: the
 /// value itself when every frame has the same, else a look-up in an array of
 /// every frame's value, declared in `declarations`.
@@ -196,7 +188,7 @@ PovAnimation povAnimation(const SceneDesc& scene, int width, int height, const s
         << "Width=" << width << "\nHeight=" << height << "\n"
         << "Antialias=Off\nDisplay=Off\n"
         << "Initial_Frame=0\nFinal_Frame=" << result.lastFrame << "\n"
-        << "Initial_Clock=0\nFinal_Clock=" << exactNumber(double(result.lastFrame) / fps) << "\n";
+        << "Initial_Clock=0\nFinal_Clock=" << formatNumber(double(result.lastFrame) / fps) << "\n";
     result.ini = ini.str();
     return result;
 }

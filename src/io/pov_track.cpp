@@ -1,19 +1,16 @@
 #include "io/pov_track.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <sstream>
+
+#include "io/frame_primitives.h"
 
 namespace f2 {
 
 namespace {
-std::string number(double value) {
-    char text[40];
-    std::snprintf(text, sizeof text, "%.17g", value);
-    return text;
+std::string vec(Vec3 v) {
+    return "<" + formatNumber(v.x) + ", " + formatNumber(v.y) + ", " + formatNumber(v.z) + ">";
 }
-
-std::string vec(Vec3 v) { return "<" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + ">"; }
 
 /// w(u) of track.h's interpolationWeight as SDL of `F2_U`, u in [0, 1).
 std::string weight(const Easing& easing) {
@@ -61,18 +58,18 @@ std::string povTrackPose(const Track& track, const std::string& name) {
             << " = " << vec(pose.rotation) << ";\n";
     };
     // As segmentAt: the first key up to its time, [key i, key i + 1) between, the last from its time.
-    out << "#if (F2_Frame <= " << number(keys[0].time) << ")\n";
+    out << "#if (F2_Frame <= " << formatNumber(keys[0].time) << ")\n";
     hold(keys[0].pose);
     const std::size_t last = keys.size() - 1;
     for (std::size_t i = 0; i < last; ++i) {
         const Easing& easing = track.modeAfter(i);
-        out << "#elseif (F2_Frame < " << number(keys[i + 1].time) << ")\n";
+        out << "#elseif (F2_Frame < " << formatNumber(keys[i + 1].time) << ")\n";
         if (easing.mode == Interpolation::Step) {
             hold(keys[i].pose);  // until the next key
             continue;
         }
-        out << "  #declare F2_U = (F2_Frame - " << number(keys[i].time) << ") / "
-            << number(keys[i + 1].time - keys[i].time) << ";\n";
+        out << "  #declare F2_U = (F2_Frame - " << formatNumber(keys[i].time) << ") / "
+            << formatNumber(keys[i + 1].time - keys[i].time) << ";\n";
         auto blend = [&](const std::string& target, Vec3 Pose::*channel) {
             const Vec3 p1 = keys[i].pose.*channel, p2 = keys[i + 1].pose.*channel;
             if (easing.mode == Interpolation::Spline) {

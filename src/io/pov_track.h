@@ -15,7 +15,7 @@ bool povEvaluates(const Track& track);
 
 /// SDL declaring `NAME_Position` and `NAME_Rotation` (degrees) as the pose of
 /// `track` (at least one key, povEvaluates) at the frame time `F2_Frame`.
-/// Numbers are written to 17 digits; f2 blends in double and stores floats.
+/// Numbers are written as they read back (formatNumber); f2 blends in double and stores floats.
 std::string povTrackPose(const Track& track, const std::string& name);
 
 /// Whether POV-Ray can move `object` itself: it rides on nothing (SPEC 9.2,
