@@ -130,8 +130,9 @@ int runPovAnimationExport(const ExportArgs& args, const LoadedScene& loaded, con
     std::cerr << "f2 export: " << loaded.name << " frames 0-" << animation.lastFrame << " at "
               << loaded.scene.fps << " fps -> " << path << " + " << iniPath << " (POV-Ray 3.7, "
               << loaded.scene.primitiveCount() << " primitives, " << animation.evaluated
-              << " shapes moved by POV-Ray from their keys, " << animation.arrays
-              << " values read per frame, " << camera.width << "x" << camera.height << ")\n";
+              << (animation.cameraEvaluated ? " shapes and the camera" : " shapes")
+              << " moved by POV-Ray from their keys, " << animation.arrays << " values read per frame, "
+              << camera.width << "x" << camera.height << ")\n";
     return 0;
 }
 

@@ -62,6 +62,44 @@ class FrameMerger {
     std::ostringstream declarations_;
     std::size_t arrays_ = 0;
 };
+
+/// The camera's values in `v`: evaluated by POV-Ray from its keys (declared
+/// in `tracks`; true) when it moves by keys alone (no ride, no `/look_at`,
+/// no drive, no bezier), else as `merge` gives them.
+bool povCamera(const SceneDesc& scene, int width, int height, FrameMerger& merge, std::ostringstream& tracks,
+               PovValues& v) {
+    const CameraDesc& camera = scene.camera;
+    auto field = [](std::string PovValues::*member) {
+        return [member](const PovValues& x) -> const std::string& { return x.*member; };
+    };
+    const bool moves = merge.varies(field(&PovValues::eye)) || merge.varies(field(&PovValues::right)) ||
+                       merge.varies(field(&PovValues::direction));
+    if (!moves || camera.attachedTo || camera.lookAt || !povEvaluatesOrStill(camera.track) ||
+        !povEvaluatesOrStill(camera.zoom)) {
+        v.eye = merge.expression("F2_Eye", field(&PovValues::eye));
+        v.right = merge.expression("F2_Right", field(&PovValues::right));
+        v.up = merge.expression("F2_Up", field(&PovValues::up));
+        v.direction = merge.expression("F2_Direction", field(&PovValues::direction));
+        return false;
+    }
+    // As povValuesAt: R·x^, R·y^·h/w, R·z^·d, vrotate being f2's Rz·Ry·Rx.
+    const bool keyed = !camera.track.keys.empty();
+    if (keyed) tracks << "// the camera: its keys\n" << povTrackPose(camera.track, "F2_Camera");
+    const std::string rotation = keyed ? "F2_Camera_Rotation" : povVector(camera.pose.rotation);
+    std::string distance = formatNumber(camera.distance);
+    if (!camera.zoom.keys.empty()) {
+        // cameraDistanceAt: never below a thousandth of the smallest key.
+        double smallest = camera.zoom.keys.front().pose.position.x;
+        for (const Key& k : camera.zoom.keys) smallest = std::min(smallest, double(k.pose.position.x));
+        tracks << "// the camera's d: its keys\n" << povTrackPose(camera.zoom, "F2_Zoom");
+        distance = "max(F2_Zoom_Position.x, " + formatNumber(smallest / 1000.0) + ")";
+    }
+    v.eye = keyed ? "F2_Camera_Position" : povVector(camera.pose.position);
+    v.right = "vrotate(<1, 0, 0>, " + rotation + ")";
+    v.up = "vrotate(<0, 1, 0>, " + rotation + ") * " + formatNumber(float(height) / float(width));
+    v.direction = "vrotate(<0, 0, 1>, " + rotation + ") * " + distance;
+    return true;
+}
 }  // namespace
 
 bool povIniName(std::string_view name) {
@@ -94,11 +132,8 @@ PovAnimation povAnimation(const SceneDesc& scene, int width, int height, const s
 
     FrameMerger merge(frames);
     PovValues v;
-    v.eye = merge.expression("F2_Eye", [](const PovValues& x) -> const std::string& { return x.eye; });
-    v.right = merge.expression("F2_Right", [](const PovValues& x) -> const std::string& { return x.right; });
-    v.up = merge.expression("F2_Up", [](const PovValues& x) -> const std::string& { return x.up; });
-    v.direction = merge.expression("F2_Direction",
-                                   [](const PovValues& x) -> const std::string& { return x.direction; });
+    std::ostringstream tracks;  // the key tracks POV-Ray evaluates
+    result.cameraEvaluated = povCamera(scene, width, height, merge, tracks, v);
     auto lights = [&](const std::string& prefix, std::vector<PovLightValues> PovValues::*list,
                       std::size_t n) {
         std::vector<PovLightValues> out(n);
@@ -120,10 +155,9 @@ PovAnimation povAnimation(const SceneDesc& scene, int width, int height, const s
     };
     v.suns = lights("F2_Sun", &PovValues::suns, scene.lights.size());
     v.locals = lights("F2_Light", &PovValues::locals, scene.localLights.size());
-    // A shape whose object moves by its own keys alone (no model, no ride,
-    // no drive, no bezier) has them evaluated by POV-Ray (pov_track.h);
-    // other changing values are read from their arrays.
-    std::ostringstream tracks;
+    // A shape whose object moves by its own keys alone (no ride, no drive,
+    // no bezier) has them evaluated by POV-Ray (pov_track.h); other changing
+    // values are read from their arrays.
     std::vector<std::size_t> objectOf, firstOf;  // each primitive's object, each object's first primitive
     for (std::size_t o = 0; o < scene.objects.size(); ++o) {
         firstOf.push_back(objectOf.size());

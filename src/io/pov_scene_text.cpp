@@ -20,9 +20,7 @@ std::string join(std::initializer_list<std::string> parts) {
     return text;
 }
 
-std::string vec(Vec3 v) {
-    return join({"<", formatNumber(v.x), ", ", formatNumber(v.y), ", ", formatNumber(v.z), ">"});
-}
+std::string vec(Vec3 v) { return povVector(v); }
 
 std::string color(Color8 c) {
     return join({"<", std::to_string(c.r), ", ", std::to_string(c.g), ", ", std::to_string(c.b), "> / 255"});
@@ -89,6 +87,10 @@ float boundingRadius(const PlacedPrimitive& p) {
     return 0;
 }
 }  // namespace
+
+std::string povVector(Vec3 v) {
+    return join({"<", formatNumber(v.x), ", ", formatNumber(v.y), ", ", formatNumber(v.z), ">"});
+}
 
 void PovBounds::grow(const Camera& camera, const std::vector<PlacedPrimitive>& prims) {
     auto add = [&](Vec3 c, float radius) {

@@ -46,6 +46,9 @@ struct PovBounds {
     float far() const { return length(hi - lo) * 2 + 1000; }
 };
 
+/// `<x, y, z>` (formatNumber).
+std::string povVector(Vec3 v);
+
 /// The values at time t (frames) as numbers: `prims` are framePrimitives at t
 /// (with their hidden shapes when kept), `camera` the camera at t.
 PovValues povValuesAt(const SceneDesc& scene, double t, const Camera& camera,

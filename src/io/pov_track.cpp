@@ -4,14 +4,11 @@
 #include <sstream>
 
 #include "io/frame_primitives.h"
+#include "io/pov_scene_text.h"
 
 namespace f2 {
 
 namespace {
-std::string vec(Vec3 v) {
-    return "<" + formatNumber(v.x) + ", " + formatNumber(v.y) + ", " + formatNumber(v.z) + ">";
-}
-
 /// w(u) of track.h's interpolationWeight as SDL of `F2_U`, u in [0, 1).
 std::string weight(const Easing& easing) {
     switch (easing.mode) {
@@ -54,8 +51,8 @@ std::string povTrackPose(const Track& track, const std::string& name) {
     const std::string position = name + "_Position", rotation = name + "_Rotation";
     std::ostringstream out;
     auto hold = [&](const Pose& pose) {
-        out << "  #declare " << position << " = " << vec(pose.position) << ";\n  #declare " << rotation
-            << " = " << vec(pose.rotation) << ";\n";
+        out << "  #declare " << position << " = " << povVector(pose.position) << ";\n  #declare " << rotation
+            << " = " << povVector(pose.rotation) << ";\n";
     };
     // As segmentAt: the first key up to its time, [key i, key i + 1) between, the last from its time.
     out << "#if (F2_Frame <= " << formatNumber(keys[0].time) << ")\n";
@@ -76,13 +73,14 @@ std::string povTrackPose(const Track& track, const std::string& name) {
                 // Uniform Catmull-Rom (catmullRom), an end key standing in for a missing neighbour.
                 const Vec3 p0 = keys[i == 0 ? i : i - 1].pose.*channel;
                 const Vec3 p3 = keys[i + 1 < last ? i + 2 : i + 1].pose.*channel;
-                out << "  #declare " << target << " = 0.5 * (2 * " << vec(p1) << " + (" << vec(p2) << " - "
-                    << vec(p0) << ") * F2_U + (2 * " << vec(p0) << " - 5 * " << vec(p1) << " + 4 * "
-                    << vec(p2) << " - " << vec(p3) << ") * F2_U * F2_U + (3 * " << vec(p1) << " - " << vec(p0)
-                    << " - 3 * " << vec(p2) << " + " << vec(p3) << ") * F2_U * F2_U * F2_U);\n";
+                out << "  #declare " << target << " = 0.5 * (2 * " << povVector(p1) << " + (" << povVector(p2)
+                    << " - " << povVector(p0) << ") * F2_U + (2 * " << povVector(p0) << " - 5 * "
+                    << povVector(p1) << " + 4 * " << povVector(p2) << " - " << povVector(p3)
+                    << ") * F2_U * F2_U + (3 * " << povVector(p1) << " - " << povVector(p0) << " - 3 * "
+                    << povVector(p2) << " + " << povVector(p3) << ") * F2_U * F2_U * F2_U);\n";
             } else {
-                out << "  #declare " << target << " = " << vec(p1) << " + (" << vec(p2) << " - " << vec(p1)
-                    << ") * F2_W;\n";
+                out << "  #declare " << target << " = " << povVector(p1) << " + (" << povVector(p2) << " - "
+                    << povVector(p1) << ") * F2_W;\n";
             }
         };
         if (easing.mode != Interpolation::Spline) out << "  #declare F2_W = " << weight(easing) << ";\n";
@@ -95,9 +93,11 @@ std::string povTrackPose(const Track& track, const std::string& name) {
     return out.str();
 }
 
-namespace {
-bool still(const Track& track) { return track.keys.empty() && !track.drives; }
+bool povEvaluatesOrStill(const Track& track) {
+    return (track.keys.empty() && !track.drives) || povEvaluates(track);
+}
 
+namespace {
 std::string partName(const std::string& name, std::size_t part) {
     return name + "_Part" + std::to_string(part);
 }
@@ -105,17 +105,16 @@ std::string partName(const std::string& name, std::size_t part) {
 /// ` rotate <r> translate <p>`, leaving out zeros.
 std::string place(Vec3 rotation, Vec3 position) {
     std::string text;
-    if (!(rotation == Vec3{})) text += " rotate " + vec(rotation);
-    if (!(position == Vec3{})) text += " translate " + vec(position);
+    if (!(rotation == Vec3{})) text += " rotate " + povVector(rotation);
+    if (!(position == Vec3{})) text += " translate " + povVector(position);
     return text;
 }
 }  // namespace
 
 bool povEvaluatesMotion(const SceneObject& object) {
     if (object.mayRide()) return false;
-    if (!still(object.track) && !povEvaluates(object.track)) return false;
-    return std::all_of(object.partTracks.begin(), object.partTracks.end(),
-                       [](const Track& t) { return still(t) || povEvaluates(t); });
+    return povEvaluatesOrStill(object.track) &&
+           std::all_of(object.partTracks.begin(), object.partTracks.end(), povEvaluatesOrStill);
 }
 
 std::string povObjectPoses(const SceneObject& object, const std::string& name) {

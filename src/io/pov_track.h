@@ -13,6 +13,9 @@ namespace f2 {
 /// `bezier` (its curve is inverted by bisection), and no drives (SPEC 10.7).
 bool povEvaluates(const Track& track);
 
+/// povEvaluates, or no keys and no drives: a track that holds its rest.
+bool povEvaluatesOrStill(const Track& track);
+
 /// SDL declaring `NAME_Position` and `NAME_Rotation` (degrees) as the pose of
 /// `track` (at least one key, povEvaluates) at the frame time `F2_Frame`.
 /// Numbers are written as they read back (formatNumber); f2 blends in double and stores floats.
