@@ -188,9 +188,12 @@ Command addExportCommand(CLI::App& app) {
                       ->check(finiteNumberIn(0.0, 1e7, "a frame time"));
     auto* pov = sub->add_flag("--pov", args->pov,
                               "POV-Ray 3.7 scene; render it with: povray +IFILE +Oout.png +WW +HH -A +FN -D");
-    sub->add_flag("--animation", args->animation,
-                  "With --pov: the whole animation as NAME.pov driven by clock plus NAME.ini "
-                  "(cd to it and run: povray NAME.ini -> NAME_000.png...); no --frame; docs/output.md")
+    sub->add_flag(
+           "--animation", args->animation,
+           "With --pov: the whole animation as NAME.pov driven by clock (seconds) plus NAME.ini "
+           "(cd to it and run: povray NAME.ini -> NAME_000.png...; +SFk +EFk for frame k); no --frame. "
+           "Keys of objects, models and a free camera are evaluated by POV-Ray; rides, /look_at, "
+           "drives, bezier, lights, colour and visible keys are read per frame (docs/output.md)")
         ->needs(pov)
         ->excludes(frame);
     auto* prims =

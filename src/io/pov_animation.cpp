@@ -198,7 +198,8 @@ PovAnimation povAnimation(const SceneDesc& scene, int width, int height, const s
         << " fps, exported by f2 (F2 Stage).\n"
         << "// Render every frame: cd <this directory> && povray " << stem
         << ".ini (+SFk +EFk: frame k only).\n"
-        << "// clock is the time in seconds; values that change are read at the nearest frame.\n"
+        << "// clock is the time in seconds; keys below are evaluated at clock * fps, other values\n"
+        << "// that change are read from their arrays at the nearest frame (docs/output.md).\n"
         << "// Coordinates are f2's: left-handed, y up, like POV-Ray's.\n"
         << "#version 3.7;\n\n"
         // f2's time in frames; within 1e-6 of a whole frame it is that frame,
