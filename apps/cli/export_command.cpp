@@ -131,8 +131,9 @@ int runPovAnimationExport(const ExportArgs& args, const LoadedScene& loaded, con
               << loaded.scene.fps << " fps -> " << path << " + " << iniPath << " (POV-Ray 3.7, "
               << loaded.scene.primitiveCount() << " primitives, " << animation.evaluated
               << (animation.cameraEvaluated ? " shapes and the camera" : " shapes")
-              << " moved by POV-Ray from their keys, " << animation.arrays << " values read per frame, "
-              << camera.width << "x" << camera.height << ")\n";
+              << " moved by POV-Ray from their keys, " << animation.evaluatedLooks
+              << " colours or visibilities keyed in POV-Ray, " << animation.arrays
+              << " values read per frame, " << camera.width << "x" << camera.height << ")\n";
     return 0;
 }
 
@@ -192,8 +193,8 @@ Command addExportCommand(CLI::App& app) {
            "--animation", args->animation,
            "With --pov: the whole animation as NAME.pov driven by clock (seconds) plus NAME.ini "
            "(cd to it and run: povray NAME.ini -> NAME_000.png...; +SFk +EFk for frame k); no --frame. "
-           "Keys of objects, models and a free camera are evaluated by POV-Ray; rides, /look_at, "
-           "drives, bezier, lights, colour and visible keys are read per frame (docs/output.md)")
+           "Keys of objects, models, a free camera, colours and visibility are evaluated by POV-Ray; "
+           "rides, /look_at, drives, bezier and lights are read per frame (docs/output.md)")
         ->needs(pov)
         ->excludes(frame);
     auto* prims =

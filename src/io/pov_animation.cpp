@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <functional>
+#include <set>
 #include <sstream>
 
+#include "core/anim/frame_builder.h"
 #include "core/render/camera.h"
 #include "io/comment_text.h"
 #include "io/frame_primitives.h"
@@ -100,6 +102,42 @@ bool povCamera(const SceneDesc& scene, int width, int height, FrameMerger& merge
     v.direction = "vrotate(<0, 0, 1>, " + rotation + ") * " + distance;
     return true;
 }
+
+/// The `colour` and `visible` tracks (SPEC 10.3, 10.7) of each shape, as
+/// frame_builder.h applies them: the last colour track that reaches it
+/// wins; it is seen while all its visible tracks show it.
+struct KeyedLooks {
+    std::vector<const TargetTrack*> colour;               ///< per shape; null: none
+    std::vector<std::vector<std::size_t>> visibleTracks;  ///< per shape: indices in scene.visibilityTracks
+
+    KeyedLooks(const SceneDesc& scene, const std::vector<std::size_t>& firstOf, std::size_t shapes)
+        : colour(shapes, nullptr), visibleTracks(shapes) {
+        for (const TargetTrack& c : scene.colourTracks) {
+            if (c.track.keys.empty() && !c.track.drives) continue;  // as forEachKeyedColour
+            forEachShapeOf(scene, c.target, c.shape, [&](std::size_t shape, const ModelShape* inModel) {
+                if (inModel && inModel->ownColor && c.shape < 0) return;
+                colour[firstOf[c.target.object] + shape] = &c;
+            });
+        }
+        for (std::size_t j = 0; j < scene.visibilityTracks.size(); ++j) {
+            const TargetTrack& v = scene.visibilityTracks[j];
+            forEachShapeOf(scene, v.target, v.shape, [&](std::size_t shape, const ModelShape*) {
+                visibleTracks[firstOf[v.target.object] + shape].push_back(j);
+            });
+        }
+    }
+};
+
+/// SDL of a colour track's 0..255 values as POV-Ray's 0..1: clamped and
+/// rounded to whole levels, as framePrimitives does.
+std::string colourOf(const std::string& pose) {
+    std::string text = "<";
+    for (const char* axis : {"x", "y", "z"}) {
+        if (text.size() > 1) text += ", ";
+        text += "floor(min(max(" + pose + "_Position." + axis + ", 0), 255) + 0.5)";
+    }
+    return text + "> / 255";
+}
 }  // namespace
 
 bool povIniName(std::string_view name) {
@@ -164,6 +202,8 @@ PovAnimation povAnimation(const SceneDesc& scene, int width, int height, const s
         objectOf.insert(objectOf.end(), primitiveCountOf(scene.objects[o]), o);
     }
     std::size_t posed = scene.objects.size();  // the last object whose poses are declared
+    const KeyedLooks looks(scene, firstOf, prims[0].size());
+    std::set<std::size_t> colourDeclared, visibleDeclared;  // tracks already written
     const std::size_t shapes = prims[0].size();
     for (std::size_t i = 0; i < shapes; ++i) {
         const std::string name = "F2_Shape" + std::to_string(i) + "_";
@@ -185,9 +225,40 @@ PovAnimation povAnimation(const SceneDesc& scene, int width, int height, const s
         } else {
             s.transform = merge.expression(name + "Transform", field(&PovShapeValues::transform), true);
         }
-        s.colour = merge.expression(name + "Colour", field(&PovShapeValues::colour));
+        const TargetTrack* colour = looks.colour[i];
+        if (colour && povEvaluates(colour->track) && merge.varies(field(&PovShapeValues::colour))) {
+            const std::size_t j = std::size_t(colour - scene.colourTracks.data());
+            const std::string pose = "F2_Colour" + std::to_string(j);
+            if (colourDeclared.insert(j).second)
+                tracks << "// colour keys of " << commentText(prims[0][i].label) << "...\n"
+                       << povTrackPose(colour->track, pose);
+            s.colour = colourOf(pose);
+            ++result.evaluatedLooks;
+        } else {
+            s.colour = merge.expression(name + "Colour", field(&PovShapeValues::colour));
+        }
         s.ambient = merge.expression(name + "Ambient", field(&PovShapeValues::ambient));
-        s.visible = merge.expression(name + "Visible", field(&PovShapeValues::visible));
+        const std::vector<std::size_t>& shown = looks.visibleTracks[i];
+        const auto evaluable = [&](std::size_t j) {
+            return povEvaluatesOrStill(scene.visibilityTracks[j].track);
+        };
+        if (merge.varies(field(&PovShapeValues::visible)) &&
+            std::all_of(shown.begin(), shown.end(), evaluable)) {
+            // visibleAt: keyed 0 or 1, shown from 0.5; a track without keys shows it.
+            std::string all;
+            for (std::size_t j : shown) {
+                if (scene.visibilityTracks[j].track.keys.empty()) continue;
+                const std::string pose = "F2_Visible" + std::to_string(j);
+                if (visibleDeclared.insert(j).second)
+                    tracks << "// visible keys of " << commentText(prims[0][i].label) << "...\n"
+                           << povTrackPose(scene.visibilityTracks[j].track, pose);
+                all += (all.empty() ? "" : " & ") + pose + "_Position.x >= 0.5";
+            }
+            s.visible = all.empty() ? "1" : all;
+            ++result.evaluatedLooks;
+        } else {
+            s.visible = merge.expression(name + "Visible", field(&PovShapeValues::visible));
+        }
     }
     result.arrays = merge.arrays();
 

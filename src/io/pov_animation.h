@@ -18,9 +18,10 @@ struct PovAnimation {
     std::string scene;  ///< the .pov
     std::string ini;    ///< the .ini
     int lastFrame = 0;
-    bool cameraEvaluated = false;  ///< POV-Ray evaluates the camera's keys
-    std::size_t evaluated = 0;     ///< shapes POV-Ray moves by evaluating their keys (pov_track.h)
-    std::size_t arrays = 0;        ///< other values that change, each an array of every frame's value
+    bool cameraEvaluated = false;    ///< POV-Ray evaluates the camera's keys
+    std::size_t evaluated = 0;       ///< shapes POV-Ray moves by evaluating their keys (pov_track.h)
+    std::size_t evaluatedLooks = 0;  ///< shapes' colours and visibilities POV-Ray evaluates from keys
+    std::size_t arrays = 0;          ///< other values that change, each an array of every frame's value
 };
 
 /// `stem` is the files' name without directory and extension, a povIniName():
