@@ -155,18 +155,20 @@ PovAnimation povAnimation(const SceneDesc& scene, int width, int height, const s
     const std::size_t count = std::size_t(result.lastFrame) + 1;
 
     // Every frame's shapes (hidden ones kept, so the list is the same at
-    // every frame) and cameras; the suns stand beyond all of them.
-    std::vector<std::vector<PlacedPrimitive>> prims(count);
-    std::vector<Camera> cameras(count);
+    // every frame) and camera: a first pass for the box the suns stand
+    // beyond, a second for the values (only frame 0's shapes are kept, for
+    // what never changes: a long animation need not hold every frame's).
+    const auto cameraAtFrame = [&](std::size_t f) {
+        return cameraAt(scene, double(f)).resized(width, height);
+    };
     PovBounds bounds;
-    for (std::size_t f = 0; f < count; ++f) {
-        prims[f] = framePrimitives(scene, double(f), true);
-        cameras[f] = cameraAt(scene, double(f)).resized(width, height);
-        bounds.grow(cameras[f], prims[f]);
-    }
+    for (std::size_t f = 0; f < count; ++f)
+        bounds.grow(cameraAtFrame(f), framePrimitives(scene, double(f), true));
+    const std::vector<PlacedPrimitive> firstPrims = framePrimitives(scene, 0, true);
     std::vector<PovValues> frames(count);
     for (std::size_t f = 0; f < count; ++f)
-        frames[f] = povValuesAt(scene, double(f), cameras[f], prims[f], bounds);
+        frames[f] =
+            povValuesAt(scene, double(f), cameraAtFrame(f), framePrimitives(scene, double(f), true), bounds);
 
     FrameMerger merge(frames);
     PovValues v;
@@ -202,9 +204,9 @@ PovAnimation povAnimation(const SceneDesc& scene, int width, int height, const s
         objectOf.insert(objectOf.end(), primitiveCountOf(scene.objects[o]), o);
     }
     std::size_t posed = scene.objects.size();  // the last object whose poses are declared
-    const KeyedLooks looks(scene, firstOf, prims[0].size());
+    const KeyedLooks looks(scene, firstOf, firstPrims.size());
     std::set<std::size_t> colourDeclared, visibleDeclared;  // tracks already written
-    const std::size_t shapes = prims[0].size();
+    const std::size_t shapes = firstPrims.size();
     for (std::size_t i = 0; i < shapes; ++i) {
         const std::string name = "F2_Shape" + std::to_string(i) + "_";
         auto field = [i](std::string PovShapeValues::*member) {
@@ -230,7 +232,7 @@ PovAnimation povAnimation(const SceneDesc& scene, int width, int height, const s
             const std::size_t j = std::size_t(colour - scene.colourTracks.data());
             const std::string pose = "F2_Colour" + std::to_string(j);
             if (colourDeclared.insert(j).second)
-                tracks << "// colour keys of " << commentText(prims[0][i].label) << "...\n"
+                tracks << "// colour keys of " << commentText(firstPrims[i].label) << "...\n"
                        << povTrackPose(colour->track, pose);
             s.colour = colourOf(pose);
             ++result.evaluatedLooks;
@@ -250,7 +252,7 @@ PovAnimation povAnimation(const SceneDesc& scene, int width, int height, const s
                 if (scene.visibilityTracks[j].track.keys.empty()) continue;
                 const std::string pose = "F2_Visible" + std::to_string(j);
                 if (visibleDeclared.insert(j).second)
-                    tracks << "// visible keys of " << commentText(prims[0][i].label) << "...\n"
+                    tracks << "// visible keys of " << commentText(firstPrims[i].label) << "...\n"
                            << povTrackPose(scene.visibilityTracks[j].track, pose);
                 all += (all.empty() ? "" : " & ") + pose + "_Position.x >= 0.5";
             }
@@ -281,7 +283,7 @@ PovAnimation povAnimation(const SceneDesc& scene, int width, int height, const s
         << "#declare F2_K = min(max(floor(F2_Frame + 0.5), 0), " << result.lastFrame << ");\n\n"
         << merge.declarations() << "\n"
         << tracks.str() << "\n"
-        << povSceneBody(scene, prims[0], v);
+        << povSceneBody(scene, firstPrims, v);
     result.scene = out.str();
 
     std::ostringstream ini;
