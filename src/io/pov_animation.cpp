@@ -4,6 +4,7 @@
 #include <functional>
 #include <set>
 #include <sstream>
+#include <type_traits>
 
 #include "core/anim/frame_builder.h"
 #include "core/render/camera.h"
@@ -128,6 +129,60 @@ struct KeyedLooks {
     }
 };
 
+/// The named lights' keys POV-Ray evaluates (SPEC 10.2, 10.3): pose keys of
+/// a light that rides on nothing, and intensity keys; each declared once in
+/// `tracks` when first asked for. An empty answer: read per frame.
+class LightKeys {
+   public:
+    LightKeys(const SceneDesc& scene, std::ostringstream& tracks) : scene_(scene), tracks_(tracks) {}
+
+    /// `max(0, keyed)` as lightIntensityAt, or empty.
+    std::string intensity(std::int32_t motion) {
+        if (motion == kStillLight) return "";
+        const LightMotion& m = scene_.lightMotions[std::size_t(motion)];
+        if (m.intensity.keys.empty() || !povEvaluates(m.intensity)) return "";
+        const std::string name = "F2_Intensity" + std::to_string(motion);
+        if (intensities_.insert(motion).second)
+            tracks_ << "// " << commentText(m.name) << "'s intensity: its keys\n"
+                    << povTrackPose(m.intensity, name);
+        return "max(0, " + name + "_Position.x)";
+    }
+
+    /// The name of its pose (NAME_Position, NAME_Rotation: lightFrameAt), or empty.
+    std::string pose(std::int32_t motion) {
+        if (motion == kStillLight) return "";
+        const LightMotion& m = scene_.lightMotions[std::size_t(motion)];
+        if (m.attachedTo || m.track.keys.empty() || !povEvaluates(m.track)) return "";
+        const std::string name = "F2_LightPose" + std::to_string(motion);
+        if (poses_.insert(motion).second)
+            tracks_ << "// " << commentText(m.name) << ": its keys\n" << povTrackPose(m.track, name);
+        return name;
+    }
+
+    /// The ambient level as ambientAt sums it, when it `varies` and every
+    /// named ambient light's intensity is still or evaluated; else empty.
+    std::string ambient(bool varies) {
+        if (!varies) return "";
+        std::string sum = formatNumber(scene_.ambient);
+        for (const AmbientLight& light : scene_.namedAmbients) {
+            const Track& keys = scene_.lightMotions[std::size_t(light.motion)].intensity;
+            if (keys.keys.empty() && !keys.drives) {
+                sum += " + " + formatNumber(light.intensity);
+                continue;
+            }
+            const std::string keyed = intensity(std::int32_t(light.motion));
+            if (keyed.empty()) return "";
+            sum += " + " + keyed;
+        }
+        return "(" + sum + ")";
+    }
+
+   private:
+    const SceneDesc& scene_;
+    std::ostringstream& tracks_;
+    std::set<std::int32_t> intensities_, poses_;
+};
+
 /// SDL of a colour track's 0..255 values as POV-Ray's 0..1: clamped and
 /// rounded to whole levels, as framePrimitives does.
 std::string colourOf(const std::string& pose) {
@@ -174,27 +229,60 @@ PovAnimation povAnimation(const SceneDesc& scene, int width, int height, const s
     PovValues v;
     std::ostringstream tracks;  // the key tracks POV-Ray evaluates
     result.cameraEvaluated = povCamera(scene, width, height, merge, tracks, v);
-    auto lights = [&](const std::string& prefix, std::vector<PovLightValues> PovValues::*list,
-                      std::size_t n) {
-        std::vector<PovLightValues> out(n);
-        for (std::size_t i = 0; i < n; ++i) {
+    LightKeys lightKeys(scene, tracks);
+    const Vec3 centre = bounds.centre();
+    const float far = bounds.far();
+    auto lights = [&](const std::string& prefix, std::vector<PovLightValues> PovValues::*list, auto& descs) {
+        std::vector<PovLightValues> out(descs.size());
+        for (std::size_t i = 0; i < descs.size(); ++i) {
             const std::string name = prefix + std::to_string(i) + "_";
             auto field = [&](std::string PovLightValues::*member) {
                 return [list, i, member](const PovValues& x) -> const std::string& {
                     return (x.*list)[i].*member;
                 };
             };
-            out[i].location = merge.expression(name + "Location", field(&PovLightValues::location));
-            out[i].pointAt = merge.expression(name + "PointAt", field(&PovLightValues::pointAt));
-            out[i].intensity = merge.expression(name + "Intensity", field(&PovLightValues::intensity));
+            // A changing value from the light's keys when POV-Ray can evaluate them, else per frame.
+            auto value = [&](const char* part, std::string PovLightValues::*member,
+                             const std::string& keyed) {
+                return !keyed.empty() && merge.varies(field(member))
+                           ? keyed
+                           : merge.expression(name + part, field(member));
+            };
+            const auto& light = descs[i];
+            out[i].intensity =
+                value("Intensity", &PovLightValues::intensity, lightKeys.intensity(light.motion));
+            std::string location, pointAt;
+            if constexpr (std::is_same_v<std::decay_t<decltype(light)>, DirectionalLight>) {
+                // povValuesAt: beyond everything, against the direction it travels.
+                // A soft sun's disc axes turn with it: its place is read per frame.
+                const std::string pose = light.sun.soft() ? "" : lightKeys.pose(light.motion);
+                if (!pose.empty())
+                    location = povVector(centre) + " - vnormalize(vrotate(" + povVector(light.direction) +
+                               ", " + pose + "_Rotation)) * " + formatNumber(far);
+            } else {
+                const std::string pose = lightKeys.pose(light.motion);
+                if (!pose.empty()) {
+                    location = "(vrotate(" + povVector(light.position) + ", " + pose + "_Rotation) + " +
+                               pose + "_Position)";
+                    if (light.kind == LocalLightKind::Spot)
+                        pointAt = location + " + vnormalize(vrotate(" + povVector(light.direction) + ", " +
+                                  pose + "_Rotation))";
+                }
+            }
+            out[i].location = value("Location", &PovLightValues::location, location);
+            out[i].pointAt = value("PointAt", &PovLightValues::pointAt, pointAt);
             out[i].areaA = merge.expression(name + "AreaA", field(&PovLightValues::areaA));
             out[i].areaB = merge.expression(name + "AreaB", field(&PovLightValues::areaB));
             out[i].note = merge.note(field(&PovLightValues::note));
         }
         return out;
     };
-    v.suns = lights("F2_Sun", &PovValues::suns, scene.lights.size());
-    v.locals = lights("F2_Light", &PovValues::locals, scene.localLights.size());
+    v.suns = lights("F2_Sun", &PovValues::suns, scene.lights);
+    v.locals = lights("F2_Light", &PovValues::locals, scene.localLights);
+    // The ambient level (each finish carries ka times it): the unnamed ones
+    // plus the named ones' intensities, from their keys or per frame.
+    const std::string ambient =
+        lightKeys.ambient(merge.varies([](const PovValues& x) -> const std::string& { return x.ambient; }));
     // A shape whose object moves by its own keys alone (no ride, no drive,
     // no bezier) has them evaluated by POV-Ray (pov_track.h); other changing
     // values are read from their arrays.
@@ -239,7 +327,8 @@ PovAnimation povAnimation(const SceneDesc& scene, int width, int height, const s
         } else {
             s.colour = merge.expression(name + "Colour", field(&PovShapeValues::colour));
         }
-        s.ambient = merge.expression(name + "Ambient", field(&PovShapeValues::ambient));
+        s.ambient = ambient.empty() ? merge.expression(name + "Ambient", field(&PovShapeValues::ambient))
+                                    : formatNumber(firstPrims[i].material.ka) + " * " + ambient;
         const std::vector<std::size_t>& shown = looks.visibleTracks[i];
         const auto evaluable = [&](std::size_t j) {
             return povEvaluatesOrStill(scene.visibilityTracks[j].track);

@@ -149,6 +149,7 @@ PovValues povValuesAt(const SceneDesc& scene, double t, const Camera& camera,
     }
 
     const float ambient = ambientAt(scene, t);
+    v.ambient = formatNumber(ambient);
     for (const PlacedPrimitive& p : prims)
         v.shapes.push_back({matrix(p.worldFromLocal), color(p.color), formatNumber(p.material.ka * ambient),
                             p.hidden ? "0" : "1"});

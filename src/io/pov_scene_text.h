@@ -30,9 +30,10 @@ struct PovShapeValues {
 };
 
 /// Every changing value of a scene, in the order of scene.lights,
-/// scene.localLights and the primitives.
+/// scene.localLights and the primitives. `ambient` is the scene's level, which
+/// each shape's `ambient` (ka times it) carries.
 struct PovValues {
-    std::string eye, right, up, direction;
+    std::string eye, right, up, direction, ambient;
     std::vector<PovLightValues> suns, locals;
     std::vector<PovShapeValues> shapes;
 };
