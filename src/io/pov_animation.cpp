@@ -291,7 +291,7 @@ PovAnimation povAnimation(const SceneDesc& scene, int width, int height, const s
         firstOf.push_back(objectOf.size());
         objectOf.insert(objectOf.end(), primitiveCountOf(scene.objects[o]), o);
     }
-    std::size_t posed = scene.objects.size();  // the last object whose poses are declared
+    std::set<std::size_t> posed;  // the objects whose poses are declared
     const KeyedLooks looks(scene, firstOf, firstPrims.size());
     std::set<std::size_t> colourDeclared, visibleDeclared;  // tracks already written
     const std::size_t shapes = firstPrims.size();
@@ -302,15 +302,9 @@ PovAnimation povAnimation(const SceneDesc& scene, int width, int height, const s
         };
         PovShapeValues& s = v.shapes.emplace_back();
         const std::size_t o = objectOf[i];
-        const SceneObject& object = scene.objects[o];
-        if (povEvaluatesMotion(object) && merge.varies(field(&PovShapeValues::transform))) {
-            const std::string objectName = "F2_Object" + std::to_string(o);
-            if (o != posed) {  // once per object, before its first moving shape
-                tracks << "// " << commentText(object.name) << ": its keys\n"
-                       << povObjectPoses(object, objectName);
-                posed = o;
-            }
-            s.transform = "transform {" + povShapeMotion(object, i - firstOf[o], objectName) + " }";
+        if (povEvaluatesMotion(scene, o) && merge.varies(field(&PovShapeValues::transform))) {
+            tracks << povObjectPoses(scene, o, posed);
+            s.transform = "transform {" + povShapeMotion(scene, o, i - firstOf[o]) + " }";
             ++result.evaluated;
         } else {
             s.transform = merge.expression(name + "Transform", field(&PovShapeValues::transform), true);

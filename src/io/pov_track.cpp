@@ -1,8 +1,10 @@
 #include "io/pov_track.h"
 
 #include <algorithm>
+#include <optional>
 #include <sstream>
 
+#include "io/comment_text.h"
 #include "io/frame_primitives.h"
 #include "io/pov_scene_text.h"
 
@@ -111,37 +113,70 @@ std::string place(Vec3 rotation, Vec3 position) {
 }
 }  // namespace
 
-bool povEvaluatesMotion(const SceneObject& object) {
-    if (object.mayRide()) return false;
-    return povEvaluatesOrStill(object.track) &&
-           std::all_of(object.partTracks.begin(), object.partTracks.end(), povEvaluatesOrStill);
-}
+/// `F2_ObjectN`: the names of object N's poses.
+std::string objectName(std::size_t object) { return "F2_Object" + std::to_string(object); }
 
-std::string povObjectPoses(const SceneObject& object, const std::string& name) {
+/// Part `part` of `object` on its parent, up to the root (partFrame: the
+/// motion's rotation, the rest rotation, the pivot plus the motion's offset).
+std::string partChain(const SceneObject& object, int part, const std::string& name) {
     std::string text;
-    if (!object.track.keys.empty()) text += povTrackPose(object.track, name);
-    for (std::size_t p = 0; p < object.partTracks.size(); ++p)
-        if (!object.partTracks[p].keys.empty()) text += povTrackPose(object.partTracks[p], partName(name, p));
+    for (int p = part; p >= 0; p = object.model->parts[std::size_t(p)].parent) {
+        const ModelPart& model = object.model->parts[std::size_t(p)];
+        const bool keyed = !object.partTracks[std::size_t(p)].keys.empty();
+        const std::string motion = partName(name, std::size_t(p));
+        if (keyed) text += " rotate " + motion + "_Rotation";
+        text += place(model.restRotation, model.pivot);
+        if (keyed) text += " translate " + motion + "_Position";
+    }
     return text;
 }
 
-std::string povShapeMotion(const SceneObject& object, std::size_t shape, const std::string& name) {
+/// The object's own pose (objectFrame).
+std::string rootPose(const SceneObject& object, const std::string& name) {
+    if (object.track.keys.empty()) return place(object.rest.rotation, object.rest.position);
+    return " rotate " + name + "_Rotation translate " + name + "_Position";
+}
+
+bool povEvaluatesMotion(const SceneDesc& scene, std::size_t index) {
+    const SceneObject& object = scene.objects[index];
+    if (!object.attachChanges.empty()) return false;  // rides that change (SPEC 10.7): per frame
+    if (!povEvaluatesOrStill(object.track) ||
+        !std::all_of(object.partTracks.begin(), object.partTracks.end(), povEvaluatesOrStill))
+        return false;
+    return !object.attachedTo || povEvaluatesMotion(scene, object.attachedTo->object);
+}
+
+std::string povObjectPoses(const SceneDesc& scene, std::size_t index, std::set<std::size_t>& declared) {
+    std::string text;
+    for (std::optional<std::size_t> o = index; o && declared.insert(*o).second;) {
+        const SceneObject& object = scene.objects[*o];
+        const std::string name = objectName(*o);
+        text += "// " + commentText(object.name) + ": its keys\n";
+        if (!object.track.keys.empty()) text += povTrackPose(object.track, name);
+        for (std::size_t p = 0; p < object.partTracks.size(); ++p)
+            if (!object.partTracks[p].keys.empty())
+                text += povTrackPose(object.partTracks[p], partName(name, p));
+        o = object.attachedTo ? std::optional<std::size_t>(object.attachedTo->object) : std::nullopt;
+    }
+    return text;
+}
+
+std::string povShapeMotion(const SceneDesc& scene, std::size_t index, std::size_t shape) {
+    const SceneObject& object = scene.objects[index];
     std::string text;
     if (object.model) {
         const ModelShape& s = object.model->shapes[shape];
-        text += place(s.rotation, s.centre);
-        for (int p = s.part; p >= 0; p = object.model->parts[std::size_t(p)].parent) {
-            const ModelPart& part = object.model->parts[std::size_t(p)];
-            // partFrame: rest · motion rotation, at the pivot plus the motion's offset.
-            const bool keyed = !object.partTracks[std::size_t(p)].keys.empty();
-            const std::string motion = partName(name, std::size_t(p));
-            if (keyed) text += " rotate " + motion + "_Rotation";
-            text += place(part.restRotation, part.pivot);
-            if (keyed) text += " translate " + motion + "_Position";
-        }
+        text += place(s.rotation, s.centre) + partChain(object, s.part, objectName(index));
     }
-    if (object.track.keys.empty()) return text + place(object.rest.rotation, object.rest.position);
-    return text + " rotate " + name + "_Rotation translate " + name + "_Position";
+    text += rootPose(object, objectName(index));
+    // worldFromRef: what it rides on, a part's chain and its object's pose, level by level.
+    for (std::optional<FrameRef> mount = object.attachedTo; mount;) {
+        const SceneObject& holder = scene.objects[mount->object];
+        if (mount->part >= 0) text += partChain(holder, mount->part, objectName(mount->object));
+        text += rootPose(holder, objectName(mount->object));
+        mount = holder.attachedTo;
+    }
+    return text;
 }
 
 }  // namespace f2
