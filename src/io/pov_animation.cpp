@@ -68,7 +68,7 @@ class FrameMerger {
 
 /// The camera's values in `v`: evaluated by POV-Ray from its keys (declared
 /// in `tracks`; true) when it moves by keys alone (no ride, no `/look_at`,
-/// no drive, no bezier), else as `merge` gives them.
+/// no drive), else as `merge` gives them.
 bool povCamera(const SceneDesc& scene, int width, int height, FrameMerger& merge, std::ostringstream& tracks,
                PovValues& v) {
     const CameraDesc& camera = scene.camera;
@@ -283,9 +283,9 @@ PovAnimation povAnimation(const SceneDesc& scene, int width, int height, const s
     // plus the named ones' intensities, from their keys or per frame.
     const std::string ambient =
         lightKeys.ambient(merge.varies([](const PovValues& x) -> const std::string& { return x.ambient; }));
-    // A shape whose object moves by its own keys alone (no ride, no drive,
-    // no bezier) has them evaluated by POV-Ray (pov_track.h); other changing
-    // values are read from their arrays.
+    // A shape whose object, and what it rides on, move by keys alone (no
+    // drive, no changing ride) has them evaluated by POV-Ray (pov_track.h);
+    // other changing values are read from their arrays.
     std::vector<std::size_t> objectOf, firstOf;  // each primitive's object, each object's first primitive
     for (std::size_t o = 0; o < scene.objects.size(); ++o) {
         firstOf.push_back(objectOf.size());

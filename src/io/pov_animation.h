@@ -2,11 +2,12 @@
 /// The whole animation as one POV-Ray 3.7 scene driven by `clock` (seconds)
 /// and an .ini beside it that renders frames 0..lastFrame as numbered PNGs:
 /// `cd DIR && povray NAME.ini`. Every value that holds over the animation is
-/// written as the single-frame export writes it (pov_scene_text.h); a shape
-/// moved by its own keys alone has them evaluated by POV-Ray (pov_track.h);
-/// any other value that changes is read from an array of its per-frame
-/// numbers at the frame nearest `clock * fps` (docs/output.md, "The whole
-/// animation in POV-Ray").
+/// written as the single-frame export writes it (pov_scene_text.h); key
+/// tracks (shapes, rides for good, a free camera, lights, colours,
+/// visibility) are evaluated by POV-Ray (pov_track.h); any other value that
+/// changes (drives, changing rides, `/look_at`) is read from an array of its
+/// per-frame numbers at the frame nearest `clock * fps` (docs/output.md,
+/// "The whole animation in POV-Ray").
 #include <string>
 #include <string_view>
 

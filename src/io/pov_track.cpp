@@ -39,14 +39,28 @@ std::string weight(const Easing& easing) {
     }
     return "F2_U";
 }
+/// bezierFraction's w(u) into `F2_W`: the same 30 halvings of s, so that
+/// POV-Ray takes the same steps as f2.
+std::string bezierWeight(const BezierCurve& c) {
+    auto along = [](const std::string& s, float c1, float c2) {
+        return "3 * (1 - " + s + ") * (1 - " + s + ") * " + s + " * " + formatNumber(c1) + " + 3 * (1 - " +
+               s + ") * " + s + " * " + s + " * " + formatNumber(c2) + " + " + s + " * " + s + " * " + s;
+    };
+    return "  #declare F2_Lo = 0;\n  #declare F2_Hi = 1;\n  #for (F2_Step, 0, 29)\n"
+           "    #declare F2_Mid = 0.5 * (F2_Lo + F2_Hi);\n"
+           "    #declare F2_X = " +
+           along("F2_Mid", c.x1, c.x2) +
+           ";\n"
+           "    #if (F2_X < F2_U)\n      #declare F2_Lo = F2_Mid;\n    #else\n      #declare F2_Hi = "
+           "F2_Mid;\n"
+           "    #end\n  #end\n"
+           "  #declare F2_S = 0.5 * (F2_Lo + F2_Hi);\n"
+           "  #declare F2_W = (F2_U <= 0 ? 0 : " +
+           along("F2_S", c.y1, c.y2) + ");\n";
+}
 }  // namespace
 
-bool povEvaluates(const Track& track) {
-    if (track.drives || track.keys.empty()) return false;
-    for (std::size_t i = 0; i + 1 < track.keys.size(); ++i)
-        if (track.modeAfter(i).mode == Interpolation::Bezier) return false;
-    return true;
-}
+bool povEvaluates(const Track& track) { return !track.drives && !track.keys.empty(); }
 
 std::string povTrackPose(const Track& track, const std::string& name) {
     const std::vector<Key>& keys = track.keys;
@@ -85,7 +99,11 @@ std::string povTrackPose(const Track& track, const std::string& name) {
                     << povVector(p1) << ") * F2_W;\n";
             }
         };
-        if (easing.mode != Interpolation::Spline) out << "  #declare F2_W = " << weight(easing) << ";\n";
+        if (easing.mode == Interpolation::Bezier) {
+            out << bezierWeight(easing.curve);
+        } else if (easing.mode != Interpolation::Spline) {
+            out << "  #declare F2_W = " << weight(easing) << ";\n";
+        }
         blend(position, &Pose::position);
         blend(rotation, &Pose::rotation);
     }

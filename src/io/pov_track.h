@@ -10,8 +10,9 @@
 
 namespace f2 {
 
-/// Whether povTrackPose writes `track` exactly: keys with every mode but
-/// `bezier` (its curve is inverted by bisection), and no drives (SPEC 10.7).
+/// Whether povTrackPose writes `track` exactly: keys (every mode; `bezier`
+/// inverts its curve by the same 30 bisection steps as f2, in an SDL
+/// `#for`) and no drives (SPEC 10.7).
 bool povEvaluates(const Track& track);
 
 /// povEvaluates, or no keys and no drives: a track that holds its rest.

@@ -18,7 +18,7 @@ cp "$scene" "$dir/scene.f2"
 "$f2" export "$dir/scene.f2" --frame 3 --prims -o "$out/scene.prims"
 "$f2" export "$dir/scene.f2" --pov --animation --size 40x30 -o "$out/anim.pov"
 # Its directives: the version, its clock, its arrays, key intervals and visibility tests, nothing else.
-others=$(grep '^[[:space:]]*#' "$out/anim.pov" | grep -Evc '^(#version 3\.7;|[ ]*#declare F2_[A-Za-z0-9_]+ = [^"#]*;|#declare F2_[A-Za-z0-9_]+ = array\[[0-9]+\] \{|#if \(F2_Shape[0-9]+_Visible\[F2_K\]\)|#if \(F2_Visible[0-9]+_Position\.x >= 0\.5( & F2_Visible[0-9]+_Position\.x >= 0\.5)*\)|#(if \(F2_Frame <=|elseif \(F2_Frame <) [-+.e0-9]+\)|#else|#end)$' || true)
+others=$(grep '^[[:space:]]*#' "$out/anim.pov" | grep -Evc '^(#version 3\.7;|[ ]*#declare F2_[A-Za-z0-9_]+ = [^"#]*;|#declare F2_[A-Za-z0-9_]+ = array\[[0-9]+\] \{|#if \(F2_Shape[0-9]+_Visible\[F2_K\]\)|#if \(F2_Visible[0-9]+_Position\.x >= 0\.5( & F2_Visible[0-9]+_Position\.x >= 0\.5)*\)|[ ]*#(if|elseif|for) \(F2_[^"#]*\)|[ ]*#else|[ ]*#end)$' || true)
 [ "$others" = 0 ] || { echo "FAIL: $others directive lines in the animation export are not f2's"; exit 1; }
 grep -q '^#version 3.7;$' "$out/anim.pov" || { echo "FAIL: no #version line in the animation export"; exit 1; }
 grep -qF '\n#fopen F' "$out/anim.pov" || { echo "FAIL: the path is not in the animation's comment, escaped"; exit 1; }
