@@ -122,38 +122,64 @@ std::string partName(const std::string& name, std::size_t part) {
     return name + "_Part" + std::to_string(part);
 }
 
-/// ` rotate <r> translate <p>`, leaving out zeros.
-std::string place(Vec3 rotation, Vec3 position) {
-    std::string text;
-    if (!(rotation == Vec3{})) text += " rotate " + povVector(rotation);
-    if (!(position == Vec3{})) text += " translate " + povVector(position);
-    return text;
-}
-}  // namespace
-
 /// `F2_ObjectN`: the names of object N's poses.
 std::string objectName(std::size_t object) { return "F2_Object" + std::to_string(object); }
 
-/// Part `part` of `object` on its parent, up to the root (partFrame: the
-/// motion's rotation, the rest rotation, the pivot plus the motion's offset).
-std::string partChain(const SceneObject& object, int part, const std::string& name) {
-    std::string text;
-    for (int p = part; p >= 0; p = object.model->parts[std::size_t(p)].parent) {
-        const ModelPart& model = object.model->parts[std::size_t(p)];
-        const bool keyed = !object.partTracks[std::size_t(p)].keys.empty();
-        const std::string motion = partName(name, std::size_t(p));
-        if (keyed) text += " rotate " + motion + "_Rotation";
-        text += place(model.restRotation, model.pivot);
-        if (keyed) text += " translate " + motion + "_Position";
-    }
-    return text;
-}
+/// A chain of `rotate` and `translate` steps, applied first to last: the
+/// text of a transform, or a point carried through it.
+struct Motion {
+    struct Step {
+        bool turn;  ///< rotate (degrees), else translate
+        std::string by;
+    };
+    std::vector<Step> steps;
 
-/// The object's own pose (objectFrame).
-std::string rootPose(const SceneObject& object, const std::string& name) {
-    if (object.track.keys.empty()) return place(object.rest.rotation, object.rest.position);
-    return " rotate " + name + "_Rotation translate " + name + "_Position";
+    void rotate(const std::string& by) { steps.push_back({true, by}); }
+    void translate(const std::string& by) { steps.push_back({false, by}); }
+    /// Leaving out zeros, as f2 makes no matrix of a zero turn.
+    void place(Vec3 rotation, Vec3 position) {
+        if (!(rotation == Vec3{})) rotate(povVector(rotation));
+        if (!(position == Vec3{})) translate(povVector(position));
+    }
+
+    std::string transform() const {
+        std::string text;
+        for (const Step& s : steps) text += (s.turn ? " rotate " : " translate ") + s.by;
+        return text;
+    }
+    std::string point(const std::string& start) const {
+        std::string p = start;
+        for (const Step& s : steps)
+            p = s.turn ? "vrotate(" + p + ", " + s.by + ")" : "(" + p + " + " + s.by + ")";
+        return p;
+    }
+};
+
+/// worldFromRef: part `ref.part` (if any) on its parent up to the root
+/// (partFrame: the motion's rotation, the rest rotation, the pivot plus the
+/// motion's offset), the object's own pose (objectFrame), then the same for
+/// what it rides on, level by level.
+void refChain(const SceneDesc& scene, FrameRef ref, Motion& motion) {
+    for (std::optional<FrameRef> at = ref; at;) {
+        const SceneObject& object = scene.objects[at->object];
+        const std::string name = objectName(at->object);
+        for (int p = at->part; p >= 0; p = object.model->parts[std::size_t(p)].parent) {
+            const ModelPart& part = object.model->parts[std::size_t(p)];
+            const bool keyed = !object.partTracks[std::size_t(p)].keys.empty();
+            if (keyed) motion.rotate(partName(name, std::size_t(p)) + "_Rotation");
+            motion.place(part.restRotation, part.pivot);
+            if (keyed) motion.translate(partName(name, std::size_t(p)) + "_Position");
+        }
+        if (object.track.keys.empty()) {
+            motion.place(object.rest.rotation, object.rest.position);
+        } else {
+            motion.rotate(name + "_Rotation");
+            motion.translate(name + "_Position");
+        }
+        at = object.attachedTo;
+    }
 }
+}  // namespace
 
 bool povEvaluatesMotion(const SceneDesc& scene, std::size_t index) {
     const SceneObject& object = scene.objects[index];
@@ -181,20 +207,28 @@ std::string povObjectPoses(const SceneDesc& scene, std::size_t index, std::set<s
 
 std::string povShapeMotion(const SceneDesc& scene, std::size_t index, std::size_t shape) {
     const SceneObject& object = scene.objects[index];
-    std::string text;
+    Motion motion;
+    int part = -1;
     if (object.model) {
         const ModelShape& s = object.model->shapes[shape];
-        text += place(s.rotation, s.centre) + partChain(object, s.part, objectName(index));
+        motion.place(s.rotation, s.centre);
+        part = s.part;
     }
-    text += rootPose(object, objectName(index));
-    // worldFromRef: what it rides on, a part's chain and its object's pose, level by level.
-    for (std::optional<FrameRef> mount = object.attachedTo; mount;) {
-        const SceneObject& holder = scene.objects[mount->object];
-        if (mount->part >= 0) text += partChain(holder, mount->part, objectName(mount->object));
-        text += rootPose(holder, objectName(mount->object));
-        mount = holder.attachedTo;
+    refChain(scene, {std::uint32_t(index), part}, motion);
+    return motion.transform();
+}
+
+std::string povRefPoint(const SceneDesc& scene, FrameRef ref) {
+    // lookAtPoint: an object's origin, or the centre of a part's main shape.
+    Vec3 start;
+    if (ref.part >= 0) {
+        const SceneObject& object = scene.objects[ref.object];
+        const int shape = object.model->mainShapeOf(ref.part);
+        if (shape >= 0) start = object.model->shapes[std::size_t(shape)].centre;
     }
-    return text;
+    Motion motion;
+    refChain(scene, ref, motion);
+    return motion.point(povVector(start));
 }
 
 }  // namespace f2

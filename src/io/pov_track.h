@@ -42,4 +42,9 @@ std::string povObjectPoses(const SceneDesc& scene, std::size_t index, std::set<s
 /// it rides on, and so on. `rotate <x, y, z>` is f2's Rz·Ry·Rx (SPEC 1).
 std::string povShapeMotion(const SceneDesc& scene, std::size_t index, std::size_t shape);
 
+/// SDL of the point `/look_at` names by `ref` (lookAtPoint: an object's
+/// origin, or the centre of a part's main shape) carried through the same
+/// steps, from the poses povObjectPoses declares for `ref.object`.
+std::string povRefPoint(const SceneDesc& scene, FrameRef ref);
+
 }  // namespace f2
