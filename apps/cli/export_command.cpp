@@ -193,8 +193,9 @@ Command addExportCommand(CLI::App& app) {
            "--animation", args->animation,
            "With --pov: the whole animation as NAME.pov driven by clock (seconds) plus NAME.ini "
            "(cd to it and run: povray NAME.ini -> NAME_000.png...; +SFk +EFk for frame k); no --frame. "
-           "Keys of objects, models, rides, a free camera, lights, colours and visibility are evaluated "
-           "by POV-Ray; changing rides, /look_at and drives are read per frame (docs/output.md)")
+           "Keys of objects, models, rides, the camera, lights, colours and visibility are evaluated "
+           "by POV-Ray (/look_at too); changing rides, a riding camera and drives are read per frame "
+           "(docs/output.md)")
         ->needs(pov)
         ->excludes(frame);
     auto* prims =

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <type_traits>
@@ -67,18 +68,20 @@ class FrameMerger {
 };
 
 /// The camera's values in `v`: evaluated by POV-Ray from its keys (declared
-/// in `tracks`; true) when it moves by keys alone (no ride, no `/look_at`,
-/// no drive), else as `merge` gives them.
+/// in `tracks`; true) when it moves by keys alone (no ride, no drive), its
+/// `/look_at` too when it names a point or an object POV-Ray moves; else as
+/// `merge` gives them.
 bool povCamera(const SceneDesc& scene, int width, int height, FrameMerger& merge, std::ostringstream& tracks,
-               PovValues& v) {
+               std::set<std::size_t>& posed, PovValues& v) {
     const CameraDesc& camera = scene.camera;
     auto field = [](std::string PovValues::*member) {
         return [member](const PovValues& x) -> const std::string& { return x.*member; };
     };
     const bool moves = merge.varies(field(&PovValues::eye)) || merge.varies(field(&PovValues::right)) ||
                        merge.varies(field(&PovValues::direction));
-    if (!moves || camera.attachedTo || camera.lookAt || !povEvaluatesOrStill(camera.track) ||
-        !povEvaluatesOrStill(camera.zoom)) {
+    const std::optional<FrameRef> target = camera.lookAt ? camera.lookAt->target : std::nullopt;
+    if (!moves || camera.attachedTo || (target && !povEvaluatesMotion(scene, target->object)) ||
+        !povEvaluatesOrStill(camera.track) || !povEvaluatesOrStill(camera.zoom)) {
         v.eye = merge.expression("F2_Eye", field(&PovValues::eye));
         v.right = merge.expression("F2_Right", field(&PovValues::right));
         v.up = merge.expression("F2_Up", field(&PovValues::up));
@@ -88,7 +91,22 @@ bool povCamera(const SceneDesc& scene, int width, int height, FrameMerger& merge
     // As povValuesAt: R·x^, R·y^·h/w, R·z^·d, vrotate being f2's Rz·Ry·Rx.
     const bool keyed = !camera.track.keys.empty();
     if (keyed) tracks << "// the camera: its keys\n" << povTrackPose(camera.track, "F2_Camera");
-    const std::string rotation = keyed ? "F2_Camera_Rotation" : povVector(camera.pose.rotation);
+    std::string rotation = keyed ? "F2_Camera_Rotation" : povVector(camera.pose.rotation);
+    const std::string eye = keyed ? "F2_Camera_Position" : povVector(camera.pose.position);
+    if (camera.lookAt) {
+        // cameraFrameAt: rx = -asin(f_y), ry = atan2(f_x, f_z) toward the
+        // point; straight up or down keeps the keyed ry, at the eye the keyed rotation.
+        if (target) tracks << povObjectPoses(scene, target->object, posed);
+        const std::string point = target ? povRefPoint(scene, *target) : povVector(camera.lookAt->point);
+        tracks << "// the camera looks at "
+               << (target ? commentText(scene.objects[target->object].name) : "a point")
+               << "\n#declare F2_To = " << point << " - " << eye << ";\n#declare F2_Dist = vlength(F2_To);\n"
+               << "#if (F2_Dist = 0)\n  #declare F2_Look = " << rotation << ";\n#else\n"
+               << "  #declare F2_Look = <-degrees(asin(min(max(F2_To.y / F2_Dist, -1), 1))), "
+               << "(F2_To.x != 0 | F2_To.z != 0 ? degrees(atan2(F2_To.x, F2_To.z)) : (" << rotation
+               << ").y), 0>;\n#end\n";
+        rotation = "F2_Look";
+    }
     std::string distance = formatNumber(camera.distance);
     if (!camera.zoom.keys.empty()) {
         // cameraDistanceAt: never below a thousandth of the smallest key.
@@ -97,7 +115,7 @@ bool povCamera(const SceneDesc& scene, int width, int height, FrameMerger& merge
         tracks << "// the camera's d: its keys\n" << povTrackPose(camera.zoom, "F2_Zoom");
         distance = "max(F2_Zoom_Position.x, " + formatNumber(smallest / 1000.0) + ")";
     }
-    v.eye = keyed ? "F2_Camera_Position" : povVector(camera.pose.position);
+    v.eye = eye;
     v.right = "vrotate(<1, 0, 0>, " + rotation + ")";
     v.up = "vrotate(<0, 1, 0>, " + rotation + ") * " + formatNumber(float(height) / float(width));
     v.direction = "vrotate(<0, 0, 1>, " + rotation + ") * " + distance;
@@ -227,8 +245,9 @@ PovAnimation povAnimation(const SceneDesc& scene, int width, int height, const s
 
     FrameMerger merge(frames);
     PovValues v;
-    std::ostringstream tracks;  // the key tracks POV-Ray evaluates
-    result.cameraEvaluated = povCamera(scene, width, height, merge, tracks, v);
+    std::ostringstream tracks;    // the key tracks POV-Ray evaluates
+    std::set<std::size_t> posed;  // the objects whose poses are declared
+    result.cameraEvaluated = povCamera(scene, width, height, merge, tracks, posed, v);
     LightKeys lightKeys(scene, tracks);
     const Vec3 centre = bounds.centre();
     const float far = bounds.far();
@@ -291,7 +310,6 @@ PovAnimation povAnimation(const SceneDesc& scene, int width, int height, const s
         firstOf.push_back(objectOf.size());
         objectOf.insert(objectOf.end(), primitiveCountOf(scene.objects[o]), o);
     }
-    std::set<std::size_t> posed;  // the objects whose poses are declared
     const KeyedLooks looks(scene, firstOf, firstPrims.size());
     std::set<std::size_t> colourDeclared, visibleDeclared;  // tracks already written
     const std::size_t shapes = firstPrims.size();

@@ -5,7 +5,7 @@
 /// written as the single-frame export writes it (pov_scene_text.h); key
 /// tracks (shapes, rides for good, a free camera, lights, colours,
 /// visibility) are evaluated by POV-Ray (pov_track.h); any other value that
-/// changes (drives, changing rides, `/look_at`) is read from an array of its
+/// changes (drives, changing rides, a riding camera) is read from an array of its
 /// per-frame numbers at the frame nearest `clock * fps` (docs/output.md,
 /// "The whole animation in POV-Ray").
 #include <string>
