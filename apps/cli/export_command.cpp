@@ -1,6 +1,7 @@
 // f2 export: one evaluated frame as a scene for another renderer — POV-Ray
 // (--pov) or the Embree peer's primitive list (--prims) — or the whole
-// animation as glTF 2.0 (--gltf) for Blender, three.js and the like.
+// animation as glTF 2.0 (--gltf) for Blender, three.js and the like, or as a
+// clock-driven POV-Ray scene and its .ini (--pov --animation).
 #include <cerrno>
 #include <cstring>
 #include <iostream>
@@ -13,6 +14,7 @@
 #include "io/atomic_file.h"
 #include "io/gltf_export.h"
 #include "io/output_target.h"
+#include "io/pov_animation.h"
 #include "io/pov_export.h"
 #include "io/prims_export.h"
 #include "io/tessellate.h"
@@ -25,7 +27,7 @@ namespace {
 struct ExportArgs {
     std::string scene;
     double frame = 0;
-    bool pov = false, prims = false, gltf = false;
+    bool pov = false, prims = false, gltf = false, animation = false;
     int tessellation = 32;
     std::string output = "-";
     std::string size;
@@ -57,6 +59,13 @@ bool endsWith(const std::string& text, const std::string& tail) {
     return text.size() >= tail.size() && text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
 }
 
+/// Frames 0..lastFrame of `scene`, or the first drive problem among them (SPEC 10.7).
+std::optional<std::string> animationDriveProblem(const SceneDesc& scene) {
+    std::vector<double> frames(std::size_t(scene.lastFrame()) + 1);
+    for (std::size_t f = 0; f < frames.size(); ++f) frames[f] = double(f);
+    return firstDriveProblem(scene, frames);
+}
+
 /// --gltf: the whole animation; a .gltf gets its buffer in a .bin beside it.
 int runGltfExport(const ExportArgs& args, const LoadedScene& loaded, const Camera& camera) {
     if (args.output == "-")
@@ -70,9 +79,7 @@ int runGltfExport(const ExportArgs& args, const LoadedScene& loaded, const Camer
     options.source = loaded.name;
     if (text) options.bufferUri = uriOfFileName(binPath.substr(binPath.find_last_of('/') + 1));
     // Every frame is written: a drive without a finite value at any is an error (SPEC 10.7).
-    std::vector<double> frames(std::size_t(loaded.scene.lastFrame()) + 1);
-    for (std::size_t f = 0; f < frames.size(); ++f) frames[f] = double(f);
-    if (std::optional<std::string> problem = firstDriveProblem(loaded.scene, frames)) {
+    if (std::optional<std::string> problem = animationDriveProblem(loaded.scene)) {
         std::cerr << "f2 export: " << *problem << '\n';
         return 1;
     }
@@ -94,6 +101,42 @@ int runGltfExport(const ExportArgs& args, const LoadedScene& loaded, const Camer
     return 0;
 }
 
+/// --pov --animation: NAME.pov driven by clock and NAME.ini beside it.
+int runPovAnimationExport(const ExportArgs& args, const LoadedScene& loaded, const Camera& camera) {
+    const std::string& path = args.output;
+    if (path == "-" || !endsWith(path, ".pov"))
+        return usageError("export", "--animation writes NAME.pov and NAME.ini: give -o NAME.pov");
+    const std::size_t slash = path.find_last_of('/');
+    const std::string directory = slash == std::string::npos ? "" : path.substr(0, slash + 1);
+    const std::string stem = path.substr(directory.size(), path.size() - directory.size() - 4);
+    if (!povIniName(stem))
+        return usageError("export", "--animation: the file name '" + stem +
+                                        "' must be letters, digits and ._+- only (it goes into the .ini)");
+    if (std::optional<std::string> problem = animationDriveProblem(loaded.scene)) {
+        std::cerr << "f2 export: " << *problem << '\n';
+        return 1;
+    }
+    if (!loaded.scene.captions.empty())
+        std::cerr << "f2 export: warning: " << loaded.scene.captions.size()
+                  << (loaded.scene.captions.size() == 1 ? " caption" : " captions")
+                  << " left out (captions are drawn by f2 only)\n";
+    const PovAnimation animation = povAnimation(loaded.scene, camera.width, camera.height, loaded.name, stem);
+    const std::string iniPath = directory + stem + ".ini";
+    std::string error;
+    if (!writeOutput(animation.scene, path, error) || !writeOutput(animation.ini, iniPath, error)) {
+        std::cerr << "f2 export: " << error << '\n';
+        return 1;
+    }
+    std::cerr << "f2 export: " << loaded.name << " frames 0-" << animation.lastFrame << " at "
+              << loaded.scene.fps << " fps -> " << path << " + " << iniPath << " (POV-Ray 3.7, "
+              << loaded.scene.primitiveCount() << " primitives, " << animation.evaluated
+              << (animation.cameraEvaluated ? " shapes and the camera" : " shapes")
+              << " moved by POV-Ray from their keys, " << animation.evaluatedLooks
+              << " colours or visibilities keyed in POV-Ray, " << animation.arrays
+              << " values read per frame, " << camera.width << "x" << camera.height << ")\n";
+    return 0;
+}
+
 int runExport(const ExportArgs& args) {
     if (int(args.pov) + int(args.prims) + int(args.gltf) != 1) {
         return usageError("export",
@@ -112,6 +155,7 @@ int runExport(const ExportArgs& args) {
     if (!args.size.empty() && !parseSize(args.size, camera.width, camera.height, error))
         return usageError("export", error);
     if (args.gltf) return runGltfExport(args, *loaded, camera);
+    if (args.animation) return runPovAnimationExport(args, *loaded, camera);
     // Text over the picture is F2's own (SPEC 10.5): neither output can hold it.
     std::size_t shown = 0;
     for (const Caption& c : loaded->scene.captions) shown += c.shownAt(args.frame);
@@ -138,13 +182,22 @@ Command addExportCommand(CLI::App& app) {
         "export",
         "Write one evaluated frame as a scene for another renderer: POV-Ray (--pov) or the "
         "Embree peer's primitive list (--prims); or the whole animation as glTF 2.0 (--gltf) for "
-        "Blender, three.js and other tools");
+        "Blender, three.js and other tools, or as a clock-driven POV-Ray scene and .ini (--pov --animation)");
     sub->add_option("scene", args->scene, "Scene file; '-' reads standard input; none = the default scene")
         ->check(nonEmptyPath("export the default scene"));
     auto* frame = sub->add_option("--frame", args->frame, "Frame to export; may be fractional (default 0)")
                       ->check(finiteNumberIn(0.0, 1e7, "a frame time"));
     auto* pov = sub->add_flag("--pov", args->pov,
                               "POV-Ray 3.7 scene; render it with: povray +IFILE +Oout.png +WW +HH -A +FN -D");
+    sub->add_flag(
+           "--animation", args->animation,
+           "With --pov: the whole animation as NAME.pov driven by clock (seconds) plus NAME.ini "
+           "(cd to it and run: povray NAME.ini -> NAME_000.png...; +SFk +EFk for frame k); no --frame. "
+           "Keys of objects, models, rides, the camera, lights, colours and visibility are evaluated "
+           "by POV-Ray (/look_at too); changing rides, a riding camera and drives are read per frame "
+           "(docs/output.md)")
+        ->needs(pov)
+        ->excludes(frame);
     auto* prims =
         sub->add_flag("--prims", args->prims, "Plain-text primitive list (Embree peer renderer format)")
             ->excludes(pov);
@@ -158,7 +211,7 @@ Command addExportCommand(CLI::App& app) {
                     "--gltf: segments around each sphere and cylinder (default 32)")
         ->check(CLI::Range(kMinTessellation, kMaxTessellation));
     sub->add_option("-o,--output", args->output,
-                    "Output file; '-' = standard output (default; not for --gltf)")
+                    "Output file; '-' = standard output (default; not for --gltf or --animation)")
         ->check(nonEmptyPath("write to standard output"));
     sub->add_option("--size", args->size,
                     "Image size WIDTHxHEIGHT written into the camera (default: /camera)");

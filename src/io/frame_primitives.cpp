@@ -7,7 +7,7 @@
 
 namespace f2 {
 
-std::vector<PlacedPrimitive> framePrimitives(const SceneDesc& scene, double t) {
+std::vector<PlacedPrimitive> framePrimitives(const SceneDesc& scene, double t, bool keepHidden) {
     std::vector<PlacedPrimitive> out;
     out.reserve(scene.primitiveCount());
     std::vector<std::size_t> firstOf(scene.objects.size());  // each object's first primitive in `out`
@@ -20,7 +20,7 @@ std::vector<PlacedPrimitive> framePrimitives(const SceneDesc& scene, double t) {
         if (!object.model) {
             const Appearance& look = object.appearance[0];
             out.push_back({object.name, shapeKindOf(object.kind), object.size, worldFromObject, look.color,
-                           look.material, look.checker, look.castsShadow});
+                           look.material, look.checker, look.castsShadow, false});
             continue;
         }
         const std::vector<Transform> worldFromPart = modelPartFrames(object, worldFromObject, t);
@@ -31,7 +31,7 @@ std::vector<PlacedPrimitive> framePrimitives(const SceneDesc& scene, double t) {
             // Its full name in the language: `r1.head.leye`.
             out.push_back({object.name + "." + model.parts[std::size_t(shape.part)].name + "." + shape.name,
                            shape.kind, shape.size, modelShapeFrame(object, k, worldFromPart), look.color,
-                           look.material, look.checker, look.castsShadow});
+                           look.material, look.checker, look.castsShadow, false});
         }
     }
     // Colour keys (SPEC 10.3), to the nearest of the formats' whole numbers.
@@ -45,6 +45,10 @@ std::vector<PlacedPrimitive> framePrimitives(const SceneDesc& scene, double t) {
         std::vector<std::uint8_t> hidden(out.size(), 0);
         forEachHiddenShape(
             scene, t, [&](std::size_t object, std::size_t shape) { hidden[firstOf[object] + shape] = 1; });
+        if (keepHidden) {
+            for (std::size_t i = 0; i < out.size(); ++i) out[i].hidden = hidden[i] != 0;
+            return out;
+        }
         std::size_t kept = 0;
         for (std::size_t i = 0; i < out.size(); ++i)
             if (!hidden[i]) out[kept++] = std::move(out[i]);
@@ -53,11 +57,17 @@ std::vector<PlacedPrimitive> framePrimitives(const SceneDesc& scene, double t) {
     return out;
 }
 
-std::string formatNumber(float value) {
+namespace {
+template <class Number>
+std::string shortestText(Number value) {
     if (value == 0) return "0";  // also turns -0 into 0
     char text[32];
     auto result = std::to_chars(text, text + sizeof text, value);
     return std::string(text, result.ptr);
 }
+}  // namespace
+
+std::string formatNumber(float value) { return shortestText(value); }
+std::string formatNumber(double value) { return shortestText(value); }
 
 }  // namespace f2

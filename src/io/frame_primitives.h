@@ -20,14 +20,18 @@ struct PlacedPrimitive {
     Material material;
     Checker checker;          ///< size 0: plain `color`
     bool castsShadow = true;  ///< false under `/no_shadow` (SPEC 10.8)
+    bool hidden = false;      ///< hidden at that time (SPEC 10.7); only with keepHidden
 };
 
-/// Every primitive seen at time `t` (frames; hidden ones, SPEC 10.7, left out): objects as created, a model
-/// instance as its shapes in its model's order (the robot: torso, face, two eyes, two arms), the order of
-/// the renderer and of the Embree peer's format.
-std::vector<PlacedPrimitive> framePrimitives(const SceneDesc& scene, double t);
+/// Every primitive seen at time `t` (frames; hidden ones, SPEC 10.7, left out, or kept and marked with
+/// `keepHidden`, so that the list is the same at every time): objects as created, a model instance as
+/// its shapes in its model's order (the robot: torso, face, two eyes, two arms), the order of the
+/// renderer and of the Embree peer's format.
+std::vector<PlacedPrimitive> framePrimitives(const SceneDesc& scene, double t, bool keepHidden = false);
 
 /// Text of a float that reads back to the same float, in the C locale.
 std::string formatNumber(float value);
+/// The same for a double (key times, the clock's range).
+std::string formatNumber(double value);
 
 }  // namespace f2

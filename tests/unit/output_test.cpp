@@ -10,6 +10,7 @@
 #include "io/comment_text.h"
 #include "io/frame_pattern.h"
 #include "io/frame_primitives.h"
+#include "io/pov_animation.h"
 #include "io/pov_export.h"
 #include "io/prims_export.h"
 #include "io/video_encoder.h"
@@ -191,6 +192,42 @@ TEST(PovExport, CameraVectorsMatchTheSpecRay) {
     EXPECT_EQ(count(pov, "parallel"), 1);
     EXPECT_NE(pov.find("finish { ambient 0.1 diffuse 0.8 phong 0.3 phong_size 16 }"), std::string::npos);
     EXPECT_NE(pov.find("matrix <1, 0, 0,  0, 1, 0,  0, 0, 1,  0, 0, 100>"), std::string::npos);
+}
+
+// --pov --animation (docs/output.md): keys become SDL over their intervals,
+// what never changes is written once as the single-frame export writes it,
+// and only what POV-Ray cannot evaluate is read per frame.
+TEST(PovAnimation, KeysAreEvaluatedInSdlAndOnlyAChangingRideIsReadPerFrame) {
+    SceneDesc scene = test::sceneFromText(
+        "/camera 80 60 0.8\n/fps 30\n/dir_light 0.75 0 -0.2 1\n/box floor 100 10 100 0 -20 0\n"
+        "/sphere s 10 0 0 100\n/key 0 s 0 0 100 0 0 0 bounce\n/key 15 s 50 0 100 0 90 0 step\n"
+        "/key 30 s 50 20 100 0 0 0\n/sphere moon 2 20 0 0\n/attach moon s\n"
+        "/sphere comet 2 0 30 0\n/attach comet s at 10\n");
+    const PovAnimation a = povAnimation(scene, 80, 60, "t.f2", "t");
+    EXPECT_EQ(a.lastFrame, 30);
+    EXPECT_EQ(a.evaluated, 2u);  // s, and the moon on it; the comet's ride changes: read per frame
+    EXPECT_EQ(a.arrays, 1u);
+    EXPECT_EQ(count(a.scene, "array[31]"), 1);
+    EXPECT_NE(a.scene.find("#declare F2_Frame = clock * 30;"), std::string::npos);
+    EXPECT_NE(a.scene.find("#elseif (F2_Frame < 15)"), std::string::npos);
+    EXPECT_NE(a.scene.find("7.5625"), std::string::npos);  // bounce's parabolas
+    EXPECT_NE(a.scene.find("rotate F2_Object1_Rotation translate F2_Object1_Position"), std::string::npos);
+    // The moon: its own place, then s's pose (worldFromRef).
+    EXPECT_NE(
+        a.scene.find("{ translate <20, 0, 0> rotate F2_Object1_Rotation translate F2_Object1_Position }"),
+        std::string::npos);
+    // The floor never moves: its matrix as the single-frame export writes it.
+    const std::string single = povScene(scene, 0, cameraAt(scene, 0).resized(80, 60), "t.f2");
+    EXPECT_NE(single.find("matrix <1, 0, 0,  0, 1, 0,  0, 0, 1,  0, -20, 0>"), std::string::npos);
+    EXPECT_NE(a.scene.find("matrix <1, 0, 0,  0, 1, 0,  0, 0, 1,  0, -20, 0>"), std::string::npos);
+    EXPECT_NE(a.ini.find("\nFinal_Frame=30\nInitial_Clock=0\nFinal_Clock=1\n"), std::string::npos);
+    EXPECT_NE(a.ini.find("\nInput_File_Name=t.pov\nOutput_File_Name=t_.png\n"), std::string::npos);
+}
+
+TEST(PovAnimation, OnlyPlainFileNamesGoIntoTheIni) {
+    EXPECT_TRUE(povIniName("demo_v2.1-final+x"));
+    for (const char* bad : {"", "a b", "a;b", "a\nPost_Frame_Command=x", "a\"b", "a$(x)", "a/b", "a=b"})
+        EXPECT_FALSE(povIniName(bad)) << bad;
 }
 
 TEST(PovExport, EveryPrimitiveOnceWithItsShape) {
