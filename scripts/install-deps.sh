@@ -24,6 +24,9 @@ MORE_PACKAGES=(
   neovim
   # video and POV-Ray output, plots for `f2 bench --study`
   ffmpeg povray gnuplot-nox
+  # Blender opens the glTF export (its importer needs numpy, which Debian's
+  # blender package does not pull in)
+  blender python3-numpy
   # fuzzing (clang's libFuzzer runtime)
   clang libclang-rt-14-dev
   # the formatting check of .ci/run (scripts/check-format.sh)
