@@ -27,7 +27,7 @@ namespace {
 struct ExportArgs {
     std::string scene;
     double frame = 0;
-    bool pov = false, prims = false, gltf = false, animation = false;
+    bool pov = false, prims = false, gltf = false, animation = false, gltfPointer = false;
     int tessellation = 32;
     std::string output = "-";
     std::string size;
@@ -76,6 +76,7 @@ int runGltfExport(const ExportArgs& args, const LoadedScene& loaded, const Camer
     options.width = camera.width;
     options.height = camera.height;
     options.tessellation = args.tessellation;
+    options.pointer = args.gltfPointer;
     options.source = loaded.name;
     if (text) options.bufferUri = uriOfFileName(binPath.substr(binPath.find_last_of('/') + 1));
     // Every frame is written: a drive without a finite value at any is an error (SPEC 10.7).
@@ -201,12 +202,17 @@ Command addExportCommand(CLI::App& app) {
     auto* prims =
         sub->add_flag("--prims", args->prims, "Plain-text primitive list (Embree peer renderer format)")
             ->excludes(pov);
-    sub->add_flag("--gltf", args->gltf,
-                  "glTF 2.0 of the whole animation (every frame, so no --frame): binary .glb, or "
-                  ".gltf + .bin when the output ends in .gltf; what it leaves out: docs/output.md")
-        ->excludes(pov)
-        ->excludes(prims)
-        ->excludes(frame);  // it writes them all: a --frame would be a mistake, not a choice
+    auto* gltf =
+        sub->add_flag("--gltf", args->gltf,
+                      "glTF 2.0 of the whole animation (every frame, so no --frame): binary .glb, or "
+                      ".gltf + .bin when the output ends in .gltf; what it leaves out: docs/output.md")
+            ->excludes(pov)
+            ->excludes(prims)
+            ->excludes(frame);  // it writes them all: a --frame would be a mistake, not a choice
+    sub->add_flag("--gltf-pointer", args->gltfPointer,
+                  "--gltf: colour, light intensity and camera d keys and drives too, as channels of "
+                  "KHR_animation_pointer (sampled at every frame; not every glTF reader plays them)")
+        ->needs(gltf);
     sub->add_option("--tessellation", args->tessellation,
                     "--gltf: segments around each sphere and cylinder (default 32)")
         ->check(CLI::Range(kMinTessellation, kMaxTessellation));

@@ -10,6 +10,7 @@
 #include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <tuple>
 
 #include "core/anim/camera_motion.h"
@@ -165,11 +166,13 @@ class GltfBuilder {
     }
 
     GltfDocument build() {
+        if (options_.pointer) markKeyedColours();
         objects();
         camera();
         lights();
         visibility();
         animation();
+        if (options_.pointer) pointerChannels();
         warnings();
         return finish();
     }
@@ -190,6 +193,18 @@ class GltfBuilder {
     std::vector<MovingNode> moving_;
     std::vector<std::string> warnings_;
     bool emissiveStrength_ = false;
+    bool pointerUsed_ = false;
+    /// --gltf-pointer: each shape (object, index among its primitives) a
+    /// `colour` track reaches, and the material of its own it gets.
+    std::map<std::pair<std::size_t, std::size_t>, int> keyedMaterial_;
+    /// --gltf-pointer: each named light's glTF light, its written intensity
+    /// and the factor from F2's intensity to glTF's (lux or candela).
+    struct PointerLight {
+        std::size_t light = 0;
+        std::int32_t motion = 0;
+        float written = 0, factor = 1;
+    };
+    std::vector<PointerLight> pointerLights_;
 
     /// Per object: its node, each part's moving node, each shape's node.
     std::vector<int> objectNode_;
@@ -315,7 +330,7 @@ class GltfBuilder {
         if (!object.model) {
             // `name.shape`: node names stay unique (Blender and three.js rename duplicates).
             shapeNode_[i].push_back(shapeNode(object.name + ".shape", object.name, shapeKindOf(object.kind),
-                                              object.size, object.appearance[0], node));
+                                              object.size, object.appearance[0], node, {i, 0}));
             return;
         }
         const ModelType& model = *object.model;
@@ -343,7 +358,7 @@ class GltfBuilder {
             const std::string label =
                 object.name + "." + model.parts[std::size_t(shape.part)].name + "." + shape.name;
             const int s = shapeNode(label, label, shape.kind, shape.size, object.appearance[k],
-                                    motionNode_[i][std::size_t(shape.part)]);
+                                    motionNode_[i][std::size_t(shape.part)], {i, k});
             setPose(s, Transform{shape.turn ? *shape.turn : Mat3{}, shape.centre});
             shapeNode_[i].push_back(s);
         }
@@ -352,15 +367,20 @@ class GltfBuilder {
     /// A node holding a shape's mesh; its scale is the shape's visibility.
     /// `label`: the shape's name in the language, as POV-Ray export comments
     /// give it, for tools that match the two up (extras.f2Shape).
+    /// `shape`: the object and the shape's index among its primitives.
     int shapeNode(const std::string& name, const std::string& label, ShapeKind kind, Vec3 size,
-                  const Appearance& look, int parent) {
-        return addNode(
-            {{"name", name}, {"mesh", meshFor(kind, size, look)}, {"extras", {{"f2Shape", label}}}}, parent);
+                  const Appearance& look, int parent, std::pair<std::size_t, std::size_t> shape) {
+        // A shape whose colour is keyed (--gltf-pointer) gets a material of its own.
+        const bool keyed = keyedMaterial_.contains(shape);
+        const int mesh = meshFor(kind, size, look, keyed);
+        if (keyed) keyedMaterial_[shape] = meshes_[std::size_t(mesh)]["primitives"][0]["material"].get<int>();
+        return addNode({{"name", name}, {"mesh", mesh}, {"extras", {{"f2Shape", label}}}}, parent);
     }
 
     // ---- 2. meshes ----------------------------------------------------------
 
-    int meshFor(ShapeKind kind, Vec3 size, const Appearance& look) {
+    /// `own`: the mesh gets a material no other mesh shares.
+    int meshFor(ShapeKind kind, Vec3 size, const Appearance& look, bool own = false) {
         const auto key = std::make_tuple(kind, size.x, size.y, size.z);
         auto found = geometry_.find(key);
         if (found == geometry_.end()) {
@@ -385,7 +405,7 @@ class GltfBuilder {
         // its cells are not squares of any map: the first colour, a warning.
         const bool checkered = look.checker.size > 0, textured = checkered && kind == ShapeKind::Box;
         flatCheckers_ += checkered && !textured;
-        const int material = materialFor(look, textured);
+        const int material = materialFor(look, textured, own);
         const int uv = textured ? checkerUv(size, look.checker.size) : -1;
         const auto meshKey = std::make_tuple(g.id, material, uv);
         if (auto m = meshOf_.find(meshKey); m != meshOf_.end()) return m->second;
@@ -451,12 +471,12 @@ class GltfBuilder {
     // ---- 3. materials -------------------------------------------------------
 
     /// `textured`: the checker as a texture (a box's), else the first colour.
-    int materialFor(const Appearance& look, bool textured) {
+    int materialFor(const Appearance& look, bool textured, bool own = false) {
         const Color8 c = look.color, c2 = textured ? look.checker.color : Color8{0, 0, 0};
         const Material& m = look.material;
         // What the material is made of (not ka or kd).
         const MaterialKey key{c.r, c.g, c.b, m.ks, m.n, m.reflection, m.emission, textured, c2.r, c2.g, c2.b};
-        if (auto found = materialOf_.find(key); found != materialOf_.end()) return found->second;
+        if (auto found = materialOf_.find(key); !own && found != materialOf_.end()) return found->second;
         const float r = linearFromSrgb(c.r), g = linearFromSrgb(c.g), b = linearFromSrgb(c.b);
         // Phong's exponent n as a microfacet roughness (Blinn-Phong n ~ 2/α² - 2,
         // roughness = √α), weighed by how much highlight ks asks for; a mirror
@@ -488,6 +508,7 @@ class GltfBuilder {
                                " " + std::to_string(c2.g) + " " + std::to_string(c2.b);
         }
         materials_.push_back(std::move(material));
+        if (own) return int(materials_.size() - 1);
         return materialOf_[key] = int(materials_.size() - 1);
     }
 
@@ -513,8 +534,11 @@ class GltfBuilder {
     // ---- 4. lights ------------------------------------------------------------
 
     /// A light's node: at `position`, its -Z (glTF's light direction) along `direction`.
-    void lightNode(const std::string& name, json light, std::int32_t motion, Vec3 position, Vec3 direction) {
+    /// `written`, `factor`: its intensity in F2 and the factor to glTF's unit.
+    void lightNode(const std::string& name, json light, std::int32_t motion, Vec3 position, Vec3 direction,
+                   float written, float factor) {
         lights_.push_back(std::move(light));
+        if (motion != kStillLight) pointerLights_.push_back({lights_.size() - 1, motion, written, factor});
         const int node = addNode(
             {{"name", name}, {"extensions", {{"KHR_lights_punctual", {{"light", lights_.size() - 1}}}}}}, -1);
         // F2's +z is glTF's -Z (gltf_frame.h): turn +z onto the direction.
@@ -547,7 +571,7 @@ class GltfBuilder {
             const DirectionalLight& l = scene_.lights[i];
             lightNode(lightName(l.motion, "dir_light", i),
                       {{"type", "directional"}, {"intensity", number(lux(l.intensity))}}, l.motion, Vec3{},
-                      l.direction);
+                      l.direction, l.intensity, lux(1));
         }
         for (std::size_t i = 0; i < scene_.localLights.size(); ++i) {
             const LocalLight& l = scene_.localLights[i];
@@ -555,7 +579,8 @@ class GltfBuilder {
             // 1/d²: candela = π·I·D², with D the light's distance to the
             // scene's centre, gives lux(I) there.
             const float distance = std::max(length(l.position - centre_), size_ * 1e-3f);
-            json light = {{"intensity", number(lux(l.intensity) * distance * distance)}};
+            const float candela = lux(1) * distance * distance;  // per unit of F2's intensity
+            json light = {{"intensity", number(candela * l.intensity)}};
             const bool spot = l.kind == LocalLightKind::Spot;
             light["type"] = spot ? "spot" : "point";
             if (spot) {
@@ -566,7 +591,7 @@ class GltfBuilder {
                                  {"outerConeAngle", number(float(outer))}};
             }
             lightNode(lightName(l.motion, spot ? "spot_light" : "point_light", i), std::move(light), l.motion,
-                      l.position, spot ? l.direction : Vec3{});
+                      l.position, spot ? l.direction : Vec3{}, l.intensity, candela);
         }
     }
 
@@ -582,11 +607,22 @@ class GltfBuilder {
 
     void channel(int node, const char* path, const std::vector<double>& times,
                  const std::vector<float>& values, const char* type, int components, bool step) {
+        channel(json{{"node", node}, {"path", path}}, times, values, type, components, step);
+    }
+    void channel(json target, const std::vector<double>& times, const std::vector<float>& values,
+                 const char* type, int components, bool step) {
         samplers_.push_back({{"input", timeAccessor(times)},
                              {"output", buffer_.floats(values, type, components, 0, false)},
                              {"interpolation", step ? "STEP" : "LINEAR"}});
-        channels_.push_back(
-            {{"sampler", samplers_.size() - 1}, {"target", {{"node", node}, {"path", path}}}});
+        channels_.push_back({{"sampler", samplers_.size() - 1}, {"target", std::move(target)}});
+    }
+    /// A channel of KHR_animation_pointer: `pointer` is a JSON pointer into the file.
+    void pointerChannel(const std::string& pointer, const std::vector<float>& values, const char* type,
+                        int components, bool step) {
+        channel(
+            json{{"path", "pointer"}, {"extensions", {{"KHR_animation_pointer", {{"pointer", pointer}}}}}},
+            frames_, values, type, components, step);
+        pointerUsed_ = true;
     }
 
     /// Visibility (SPEC 10.7) as the scale of the shapes' nodes: 0 while hidden, STEP.
@@ -700,6 +736,66 @@ class GltfBuilder {
         }
     }
 
+    // ---- 6. colours, intensities and zoom (--gltf-pointer) ---------------------------
+
+    /// The shapes a `colour` track reaches get a material of their own (before the objects' nodes).
+    void markKeyedColours() {
+        forEachKeyedColour(scene_, 0, [this](std::size_t object, std::size_t shape, Vec3) {
+            keyedMaterial_.emplace(std::pair{object, shape}, -1);
+        });
+    }
+
+    /// Every frame's value, as F2 computes it, through KHR_animation_pointer;
+    /// a property that never changes gets no channel.
+    void pointerChannels() {
+        const auto changes = [](const std::vector<float>& v, std::size_t width) {
+            for (std::size_t k = width; k < v.size(); ++k)
+                if (v[k] != v[k % width]) return true;
+            return false;
+        };
+        // Colours: the last track to reach a shape is its colour (forEachKeyedColour).
+        std::map<std::pair<std::size_t, std::size_t>, std::vector<float>> colours;
+        for (double f : frames_) {
+            std::map<std::pair<std::size_t, std::size_t>, Vec3> at;
+            forEachKeyedColour(scene_, f, [&](std::size_t object, std::size_t shape, Vec3 rgb) {
+                at[{object, shape}] = rgb;
+            });
+            for (const auto& [shape, rgb] : at) {
+                std::vector<float>& v = colours[shape];
+                // Rounded as the renderer's colours are, then linear as baseColorFactor is.
+                for (float c : {rgb.x, rgb.y, rgb.z})
+                    v.push_back(linearFromSrgb(std::uint8_t(std::lround(c))));
+                v.push_back(1.0f);
+            }
+        }
+        for (const auto& [shape, values] : colours) {
+            const int material = keyedMaterial_.at(shape);
+            if (!materials_[std::size_t(material)]["pbrMetallicRoughness"].contains("baseColorFactor"))
+                continue;
+            if (changes(values, 4))
+                pointerChannel(
+                    "/materials/" + std::to_string(material) + "/pbrMetallicRoughness/baseColorFactor",
+                    values, "VEC4", 4, false);
+        }
+        for (const PointerLight& l : pointerLights_) {
+            const Track& track = scene_.lightMotions[std::size_t(l.motion)].intensity;
+            std::vector<float> values;
+            for (double f : frames_)
+                values.push_back(l.factor * lightIntensityAt(scene_, l.motion, l.written, f));
+            if (changes(values, 1))
+                pointerChannel(
+                    "/extensions/KHR_lights_punctual/lights/" + std::to_string(l.light) + "/intensity",
+                    values, "SCALAR", 1, allSteps(track) && !track.drives);
+        }
+        const Track& zoom = scene_.camera.zoom;
+        std::vector<float> yfov;
+        const double w = options_.width, h = options_.height;
+        for (double f : frames_)
+            yfov.push_back(float(2.0 * std::atan(h / (2.0 * w * cameraDistanceAt(scene_, f)))));
+        if (changes(yfov, 1))
+            pointerChannel("/cameras/0/perspective/yfov", yfov, "SCALAR", 1, allSteps(zoom) && !zoom.drives);
+    }
+
     // ---- what is left out ---------------------------------------------------------
 
     void warnings() {
@@ -707,17 +803,31 @@ class GltfBuilder {
             warnings_.push_back(std::to_string(flatCheckers_) +
                                 " checkered sphere(s) or cylinder(s) exported in their first colour (a box's "
                                 "checker is a texture; a curved shape's cells are no texture's squares)");
-        if (!scene_.colourTracks.empty())
-            warnings_.push_back("colour keys and drives not exported: the shapes keep their /paint colour");
-        bool intensityKeys = false;
-        for (const LightMotion& l : scene_.lightMotions)
-            intensityKeys = intensityKeys || !l.intensity.keys.empty() || l.intensity.drives;
-        if (intensityKeys)
+        const char* without = " (--gltf-pointer exports them)";
+        if (!scene_.colourTracks.empty() && !options_.pointer)
             warnings_.push_back(
-                "light intensity keys and drives not exported: the lights keep their written intensity");
-        if (!scene_.camera.zoom.keys.empty() || scene_.camera.zoom.drives)
+                std::string("colour keys and drives not exported: the shapes keep their /paint "
+                            "colour") +
+                without);
+        bool intensityKeys = false, ambientKeys = false;
+        for (const LightMotion& l : scene_.lightMotions) {
+            const bool keyed = !l.intensity.keys.empty() || l.intensity.drives;
+            (l.ambient ? ambientKeys : intensityKeys) |= keyed;
+        }
+        if (intensityKeys && !options_.pointer)
             warnings_.push_back(
-                "camera d keys and drives not exported: the camera keeps its field of view at frame 0");
+                std::string("light intensity keys and drives not exported: the lights keep their written "
+                            "intensity") +
+                without);
+        if (ambientKeys)  // glTF has no ambient light: an extra of the scene
+            warnings_.push_back(
+                "ambient intensity keys and drives not exported: the scene's extras give the "
+                "written ambient light");
+        if ((!scene_.camera.zoom.keys.empty() || scene_.camera.zoom.drives) && !options_.pointer)
+            warnings_.push_back(
+                std::string("camera d keys and drives not exported: the camera keeps its field "
+                            "of view at frame 0") +
+                without);
         if (!scene_.captions.empty())
             warnings_.push_back(std::to_string(scene_.captions.size()) +
                                 " caption(s) left out (captions are drawn by f2 only)");
@@ -764,6 +874,7 @@ class GltfBuilder {
             used.push_back("KHR_lights_punctual");
         }
         if (emissiveStrength_) used.push_back("KHR_materials_emissive_strength");
+        if (pointerUsed_) used.push_back("KHR_animation_pointer");
         if (!used.empty()) gltf["extensionsUsed"] = used;
         if (!channels_.empty())
             gltf["animations"] = {{{"name", "f2"}, {"samplers", samplers_}, {"channels", channels_}}};

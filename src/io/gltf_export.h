@@ -21,6 +21,10 @@ struct GltfOptions {
     /// .glb, whose buffer is its BIN chunk.
     std::string bufferUri;
     std::string source;  ///< the scene's name, in `asset.extras`
+    /// Colour, light intensity and camera `d` keys and drives as channels of
+    /// KHR_animation_pointer (sampled at every frame; without it they are
+    /// left out, with a warning): `f2 export --gltf-pointer`.
+    bool pointer = false;
 };
 
 struct GltfDocument {

@@ -4,7 +4,8 @@
 #   validator: the Khronos glTF validator (npm gltf-validator) must report 0
 #     errors and 0 warnings on every .glb, and on the first scene written as
 #     .gltf + .bin at another --tessellation, under a name with a space, `#`,
-#     a quote, `%` and a non-ASCII letter;
+#     a quote, `%` and a non-ASCII letter, and on every scene exported with
+#     --gltf-pointer;
 #   three: three.js (npm three, GLTFLoader + AnimationMixer) must place every
 #     shape and the camera where `f2 export --prims` does at 0 s, 1.03 s
 #     (between frames), 2.5 s and the last frame (tests/gltf/three_check.mjs);
@@ -45,8 +46,17 @@ case $mode in
     text="$work/text/a b#\"%é $(basename "$1" .f2).gltf"
     "$f2" export "$1" --gltf --tessellation 12 -o "$text" || fail "f2 export --gltf $1 -o .gltf"
     [ -s "${text%.gltf}.bin" ] || fail "no .bin beside $text"
+    # Every scene again with colour, intensity and d keys as KHR_animation_pointer channels.
+    pointers=()
+    for scene in "$@"; do
+      pointer=$work/pointer/$(basename "$scene" .f2).glb
+      mkdir -p "$work/pointer"
+      "$f2" export "$scene" --gltf --gltf-pointer -o "$pointer" 2>/dev/null || fail "f2 export --gltf-pointer $scene"
+      pointers+=("$pointer")
+    done
     ls -l "${files[@]}" "$text" "${text%.gltf}.bin"
-    (cd "$pkg" && node validate.mjs "${files[@]}" "$text") || fail "the validator found errors or warnings"
+    (cd "$pkg" && node validate.mjs "${files[@]}" "$text" "${pointers[@]}") ||
+      fail "the validator found errors or warnings"
     ;;
   three)
     i=0

@@ -10,6 +10,7 @@
 #include <set>
 #include <vector>
 
+#include "core/anim/camera_motion.h"
 #include "io/gltf_export.h"
 #include "io/gltf_frame.h"
 #include "io/tessellate.h"
@@ -172,8 +173,9 @@ TEST(Tessellate, BoxIsSixFacesOnItsSides) {
 
 // --- The document ----------------------------------------------------------------
 
-json exported(const SceneDesc& scene, GltfDocument* document = nullptr) {
+json exported(const SceneDesc& scene, GltfDocument* document = nullptr, bool pointer = false) {
     GltfOptions options;
+    options.pointer = pointer;
     options.width = scene.camera.width;
     options.height = scene.camera.height;
     GltfDocument doc = gltfScene(scene, options);
@@ -343,7 +345,8 @@ TEST(GltfExport, LightsPointTheirMinusZAlongTheirDirection) {
 /// Accessor `index`'s floats, from the document's buffer.
 std::vector<float> floatsOf(const json& gltf, const GltfDocument& document, int index) {
     const json& accessor = gltf["accessors"][index];
-    const std::size_t components = accessor["type"] == "VEC2" ? 2 : accessor["type"] == "VEC3" ? 3 : 1;
+    const std::string type = accessor["type"];
+    const std::size_t components = type == "VEC2" ? 2 : type == "VEC3" ? 3 : type == "VEC4" ? 4 : 1;
     std::vector<float> out(components * accessor["count"].get<std::size_t>());
     const std::size_t offset = gltf["bufferViews"][accessor["bufferView"].get<int>()]["byteOffset"];
     std::memcpy(out.data(), document.bin.data() + offset, out.size() * sizeof(float));
@@ -391,6 +394,69 @@ TEST(GltfExport, ABoxCheckerIsATextureWithF2sCells) {
         }
     }
     EXPECT_EQ(checked, 1200);
+}
+
+TEST(GltfExport, ColourIntensityAndZoomKeysThroughAnimationPointer) {
+    // --gltf-pointer (issue 26): each keyed property a channel of
+    // KHR_animation_pointer with F2's value at every frame; without it,
+    // no such channel and a warning for each.
+    const SceneDesc scene = test::sceneFromText(
+        "/camera 400 300 1 0 0 -500\n"
+        "/point_light 1 0 100 -100 name lamp\n"
+        "/sphere ball 10 0 0 0\n"
+        "/sphere other 10 50 0 0\n"
+        "/key 0 ball colour 255 0 0\n"
+        "/key 10 ball colour 0 0 255\n"
+        "/key 0 lamp intensity 1\n"
+        "/key 10 lamp intensity 0.2\n"
+        "/key 0 camera d 1\n"
+        "/key 10 camera d 2 ease\n");
+    GltfDocument document;
+    const json gltf = exported(scene, &document, true);
+    EXPECT_TRUE(document.warnings.empty()) << document.warnings.front();
+    EXPECT_NE(
+        std::find(gltf["extensionsUsed"].begin(), gltf["extensionsUsed"].end(), "KHR_animation_pointer"),
+        gltf["extensionsUsed"].end());
+    std::map<std::string, std::vector<float>> byPointer;
+    const json& animation = gltf["animations"][0];
+    for (const json& c : animation["channels"]) {
+        if (c["target"]["path"] != "pointer") continue;
+        const json& sampler = animation["samplers"][c["sampler"].get<int>()];
+        byPointer[c["target"]["extensions"]["KHR_animation_pointer"]["pointer"]] =
+            floatsOf(gltf, document, sampler["output"].get<int>());
+    }
+    ASSERT_EQ(byPointer.size(), 3u);
+    // The ball's colour, on a material of its own (the other sphere keeps the shared one).
+    const int ballMaterial = gltf["meshes"][gltf["nodes"][nodeNamed(gltf, "ball.shape")]["mesh"].get<int>()]
+                                 ["primitives"][0]["material"];
+    const int otherMaterial = gltf["meshes"][gltf["nodes"][nodeNamed(gltf, "other.shape")]["mesh"].get<int>()]
+                                  ["primitives"][0]["material"];
+    EXPECT_NE(ballMaterial, otherMaterial);
+    const auto& colour =
+        byPointer.at("/materials/" + std::to_string(ballMaterial) + "/pbrMetallicRoughness/baseColorFactor");
+    ASSERT_EQ(colour.size(), 4u * 11);
+    EXPECT_EQ(std::vector<float>(colour.begin(), colour.begin() + 4), (std::vector<float>{1, 0, 0, 1}));
+    EXPECT_EQ(std::vector<float>(colour.end() - 4, colour.end()), (std::vector<float>{0, 0, 1, 1}));
+    EXPECT_EQ(colour[20], colour[22]);  // frame 5: halfway, as much red as blue
+    EXPECT_GT(colour[20], 0.0f);
+    EXPECT_LT(colour[20], 1.0f);
+    // The lamp: the light's own intensity at frame 0, a fifth of it at frame 10.
+    const auto& intensity = byPointer.at("/extensions/KHR_lights_punctual/lights/0/intensity");
+    ASSERT_EQ(intensity.size(), 11u);
+    EXPECT_FLOAT_EQ(intensity[0],
+                    gltf["extensions"]["KHR_lights_punctual"]["lights"][0]["intensity"].get<float>());
+    EXPECT_FLOAT_EQ(intensity[10], 0.2f * intensity[0]);
+    // The field of view from d at every frame, eased as F2 eases it.
+    const auto& yfov = byPointer.at("/cameras/0/perspective/yfov");
+    ASSERT_EQ(yfov.size(), 11u);
+    for (int f = 0; f <= 10; ++f)
+        EXPECT_EQ(yfov[std::size_t(f)],
+                  float(2.0 * std::atan(300.0 / (2.0 * 400.0 * cameraDistanceAt(scene, f)))))
+            << "frame " << f;
+
+    const json plain = exported(scene, &document, false);
+    EXPECT_FALSE(plain.contains("animations"));  // nothing here moves but what the pointer carries
+    EXPECT_EQ(document.warnings.size(), 3u);
 }
 
 TEST(GltfExport, AnyFileNameIsEscapedNeverInjected) {
