@@ -358,4 +358,97 @@ double ExpressionCode::run(std::span<const ExprInstruction> code, std::size_t st
     return v == 0 ? 0.0 : v;
 }
 
+bool ExpressionCode::runsInLanes(std::span<const ExprInstruction> code, std::size_t stackSize) {
+    if (code.empty() || stackSize > kLaneStack) return false;
+    return std::none_of(code.begin(), code.end(), [](const ExprInstruction& i) {
+        return i.op == ExprOp::AndJump || i.op == ExprOp::OrJump || i.op == ExprOp::IfJump ||
+               i.op == ExprOp::Jump;
+    });
+}
+
+bool ExpressionCode::sameShape(std::span<const ExprInstruction> a, std::span<const ExprInstruction> b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(),
+                      [](const ExprInstruction& x, const ExprInstruction& y) {
+                          return x.op == y.op && (x.index == y.index || x.op == ExprOp::Load);
+                      });
+}
+
+namespace {
+using LaneStacks = std::array<std::array<double, ExpressionCode::kLaneStack>, ExpressionCode::kMaxLanes>;
+
+/// Binary operator `op` at instruction `pc` of every lane: the switch of
+/// operate() folds away, leaving one operation in the loop.
+template <ExprOp op>
+void operateInLanes(std::span<const ExprLane> lanes, std::size_t pc, std::size_t top, bool constant,
+                    LaneStacks& stack, std::array<bool, ExpressionCode::kMaxLanes>& failed) {
+    for (std::size_t l = 0; l < lanes.size(); ++l) {
+        const double b = constant ? lanes[l].code[pc].number : stack[l][top];
+        const ExprStep s = operate(op, stack[l][top - 1], b);
+        failed[l] = failed[l] || s.problem != ExprProblem::None;
+        stack[l][top - 1] = s.value;
+    }
+}
+
+using LaneOperator = void (*)(std::span<const ExprLane>, std::size_t, std::size_t, bool, LaneStacks&,
+                              std::array<bool, ExpressionCode::kMaxLanes>&);
+/// The binary operators Add … Ge in ExprOp order (jumps never run in lanes: runsInLanes).
+constexpr std::array<LaneOperator, 12> kLaneOperators = {
+    &operateInLanes<ExprOp::Add>, &operateInLanes<ExprOp::Sub>, &operateInLanes<ExprOp::Mul>,
+    &operateInLanes<ExprOp::Div>, &operateInLanes<ExprOp::Mod>, &operateInLanes<ExprOp::Pow>,
+    &operateInLanes<ExprOp::Eq>,  &operateInLanes<ExprOp::Ne>,  &operateInLanes<ExprOp::Lt>,
+    &operateInLanes<ExprOp::Le>,  &operateInLanes<ExprOp::Gt>,  &operateInLanes<ExprOp::Ge>};
+}  // namespace
+
+void ExpressionCode::runLanes(std::span<const ExprLane> lanes, std::size_t length, double* values) {
+    LaneStacks stack;
+    std::array<bool, kMaxLanes> failed{};
+    const std::size_t count = lanes.size();
+    std::size_t top = 0;  // values on each lane's stack
+    for (std::size_t pc = 0; pc < length; ++pc) {
+        const ExprInstruction& shape = lanes[0].code[pc];
+        switch (shape.op) {
+            case ExprOp::Push:
+                for (std::size_t l = 0; l < count; ++l) stack[l][top] = lanes[l].code[pc].number;
+                ++top;
+                break;
+            case ExprOp::Load:
+                for (std::size_t l = 0; l < count; ++l)
+                    stack[l][top] = lanes[l].inputs[lanes[l].code[pc].index];
+                ++top;
+                break;
+            case ExprOp::Neg:
+                for (std::size_t l = 0; l < count; ++l) stack[l][top - 1] = -stack[l][top - 1];
+                break;
+            case ExprOp::Not:
+                for (std::size_t l = 0; l < count; ++l) stack[l][top - 1] = stack[l][top - 1] == 0 ? 1 : 0;
+                break;
+            case ExprOp::ToBool:
+                for (std::size_t l = 0; l < count; ++l) stack[l][top - 1] = stack[l][top - 1] != 0 ? 1 : 0;
+                break;
+            case ExprOp::Call:
+                top -= shape.index;
+                for (std::size_t l = 0; l < count; ++l) {
+                    const ExprStep s = call(lanes[l].code[pc].function, {&stack[l][top], shape.index});
+                    failed[l] = failed[l] || s.problem != ExprProblem::None;
+                    stack[l][top] = s.value;
+                }
+                ++top;
+                break;
+            default: {
+                const bool constant = shape.index != 0;
+                if (!constant) --top;
+                const std::size_t k = std::size_t(shape.op) - std::size_t(ExprOp::Add);
+                if (k < kLaneOperators.size()) kLaneOperators[k](lanes, pc, top, constant, stack, failed);
+            }
+        }
+    }
+    // As run() ends: a failed step or a value that is not finite gives NaN.
+    for (std::size_t l = 0; l < count; ++l) {
+        const double v = stack[l][0];
+        values[l] = failed[l] || !std::isfinite(v) ? std::numeric_limits<double>::quiet_NaN()
+                    : v == 0                       ? 0.0
+                                                   : v;
+    }
+}
+
 }  // namespace f2

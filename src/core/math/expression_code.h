@@ -125,6 +125,12 @@ struct ExpressionFailure {
     std::string message;
 };
 
+/// One of the codes that ExpressionCode::runLanes runs side by side.
+struct ExprLane {
+    const ExprInstruction* code;
+    std::span<const double> inputs;
+};
+
 /// A compiled expression: a constant, or a program over inputs given at
 /// each evaluation (a drive's frame and time).
 class ExpressionCode {
@@ -142,6 +148,20 @@ class ExpressionCode {
     /// evaluate() for `code` (not empty) that needs `stackSize` values of stack.
     static double run(std::span<const ExprInstruction> code, std::size_t stackSize,
                       std::span<const double> inputs, ExpressionFailure* failure);
+
+    /// Most lanes and deepest stack of runLanes.
+    static constexpr std::size_t kMaxLanes = 8, kLaneStack = 8;
+    /// Whether `code` can run in lanes: no jumps, a stack of kLaneStack at most.
+    static bool runsInLanes(std::span<const ExprInstruction> code, std::size_t stackSize);
+    /// Whether two codes that run in lanes can run side by side: the same
+    /// operations on the same stack slots (numbers, functions and inputs may
+    /// differ: `x + 20*sin(time*90)` and `-40 + 15*cos(frame*7.5)` may).
+    static bool sameShape(std::span<const ExprInstruction> a, std::span<const ExprInstruction> b);
+    /// run() without a failure of up to kMaxLanes codes of `length`
+    /// instructions and the same shape, side by side: values[l] is lane l's.
+    /// Each instruction is dispatched once for all lanes, and their function
+    /// calls (a drive's sin) run back to back, not each waiting for the last.
+    static void runLanes(std::span<const ExprLane> lanes, std::size_t length, double* values);
 
    private:
     std::vector<ExprInstruction> code_;
