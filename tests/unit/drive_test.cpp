@@ -155,28 +155,6 @@ TEST(DriveExpressions, ConstantExpressionsAreFoldedToTheEvaluatorsValue) {
     EXPECT_EQ(broken.result.errorOffset, 10u);
 }
 
-TEST(DriveExpressions, TheFastRemainderIsFmodBitForBit) {
-    // sin, cos and tan reduce their degrees with it every frame of a drive.
-    std::mt19937_64 random(test::testSeed(7));
-    std::vector<double> xs = {0.0,   -0.0,  359.99999999999994, 360.0,  -360.0, 719.9999999999999, 720.0,
-                              1e15,  -1e15, 1e15 - 0.5,         9.5e14, 1e300,  -1e-300,           180.0,
-                              540.0, -900.0};
-    for (int k = 0; k < 200000; ++k) {
-        const double scale = std::ldexp(1.0, int(random() % 60) - 10);
-        const double x = (double(random() % 2000001) / 1000000.0 - 1.0) * scale;
-        xs.push_back(x);
-        xs.push_back(std::nextafter(std::round(x / 360) * 360, x));  // just beside a multiple
-        xs.push_back(std::nextafter(std::round(x / 180) * 180, -x));
-    }
-    for (double x : xs) {
-        for (double period : {360.0, 180.0}) {
-            const double want = std::fmod(x, period), got = wholeRemainder(x, period);
-            ASSERT_EQ(std::bit_cast<std::uint64_t>(got), std::bit_cast<std::uint64_t>(want))
-                << std::hexfloat << x << " % " << period;
-        }
-    }
-}
-
 TEST(DriveErrors, EachAtItsPlace) {
     const std::string ball = "/sphere ball 1 0 0 0\n";
     // frame and time are variables of a drive's expression only.

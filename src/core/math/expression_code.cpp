@@ -8,63 +8,13 @@
 #include <numbers>
 #include <optional>
 
+#include "core/math/trig_degrees.h"
+
 namespace f2 {
 
 namespace {
 
 constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
-constexpr double kRadiansPerDegree = std::numbers::pi / 180.0;
-
-}  // namespace
-
-/// std::fmod(x, period) for a whole `period`, bit for bit, without its
-/// general (and slow) loop where the quotient is small: x − period·n with
-/// n = ⌊|x| / period⌋ is exact (period·n is a whole number, and by Sterbenz's
-/// lemma so is the difference, period·n ≤ |x| < 2·period·n); a quotient
-/// rounded up or down by one is put right. A drive's sin(time*90) runs it
-/// every frame (docs/performance.md).
-double wholeRemainder(double x, double period) {
-    const double a = std::fabs(x);
-    if (a < period) return x;  // -0 stays -0, as with fmod
-    if (!(a < 1e15)) return std::fmod(x, period);
-    double n = std::floor(a / period);
-    double r = a - period * n;
-    if (r < 0)
-        r = a - period * (n - 1);
-    else if (r >= period)
-        r = a - period * (n + 1);
-    return std::copysign(r, x);
-}
-
-namespace {
-
-// Trigonometry in degrees. The angle is first reduced exactly (fmod is exact),
-// so that the multiples of 90 give exact 0 and ±1: cos(90) is 0, not 6e-17.
-double sinDegrees(double degrees) {
-    const double r = wholeRemainder(degrees, 360.0);
-    if (r == 0 || r == 180 || r == -180) return 0;
-    if (r == 90 || r == -270) return 1;
-    if (r == 270 || r == -90) return -1;
-    return std::sin(r * kRadiansPerDegree);
-}
-
-double cosDegrees(double degrees) {
-    const double r = wholeRemainder(degrees, 360.0);
-    if (r == 0) return 1;
-    if (r == 180 || r == -180) return -1;
-    if (r == 90 || r == -90 || r == 270 || r == -270) return 0;
-    return std::cos(r * kRadiansPerDegree);
-}
-
-/// tan of an odd multiple of 90 has no value; the caller reports it.
-std::optional<double> tanDegrees(double degrees) {
-    const double r = wholeRemainder(degrees, 180.0);
-    if (r == 90 || r == -90) return std::nullopt;
-    if (r == 0) return 0.0;
-    if (r == 45 || r == -135) return 1.0;
-    if (r == -45 || r == 135) return -1.0;
-    return std::tan(r * kRadiansPerDegree);
-}
 
 constexpr std::array<ExprFunctionInfo, 17> kFunctions = {{
     {"sin", ExprFunction::Sin, 1, 1},
@@ -389,6 +339,14 @@ void operateInLanes(std::span<const ExprLane> lanes, std::size_t pc, std::size_t
     }
 }
 
+/// Whether instruction `pc` of every lane is sin or cos (they never fail).
+bool sinesOrCosines(std::span<const ExprLane> lanes, std::size_t pc) {
+    return std::all_of(lanes.begin(), lanes.end(), [pc](const ExprLane& lane) {
+        return lane.code[pc].function == ExprFunction::Sin || lane.code[pc].function == ExprFunction::Cos;
+    });
+}
+static_assert(ExpressionCode::kMaxLanes <= kTrigBatch);
+
 using LaneOperator = void (*)(std::span<const ExprLane>, std::size_t, std::size_t, bool, LaneStacks&,
                               std::array<bool, ExpressionCode::kMaxLanes>&);
 /// The binary operators Add … Ge in ExprOp order (jumps never run in lanes: runsInLanes).
@@ -427,6 +385,18 @@ void ExpressionCode::runLanes(std::span<const ExprLane> lanes, std::size_t lengt
                 break;
             case ExprOp::Call:
                 top -= shape.index;
+                if (shape.index == 1 && sinesOrCosines(lanes, pc)) {
+                    // A grid's drives: their sines and cosines side by side (SIMD).
+                    std::array<double, kTrigBatch> degrees{}, cosine{}, out;
+                    for (std::size_t l = 0; l < count; ++l) {
+                        degrees[l] = stack[l][top];
+                        cosine[l] = lanes[l].code[pc].function == ExprFunction::Cos ? 1 : 0;
+                    }
+                    trigDegreesBatch(degrees.data(), cosine.data(), out.data());
+                    for (std::size_t l = 0; l < count; ++l) stack[l][top] = out[l];
+                    ++top;
+                    break;
+                }
                 for (std::size_t l = 0; l < count; ++l) {
                     const ExprStep s = call(lanes[l].code[pc].function, {&stack[l][top], shape.index});
                     failed[l] = failed[l] || s.problem != ExprProblem::None;

@@ -18,10 +18,6 @@ namespace f2 {
 /// (parse/expression.h's formatNumber).
 std::string shortestDecimal(double value);
 
-/// std::fmod(x, period) for a whole `period`, bit for bit, and faster where
-/// x / period is below 1e15 (the degrees of sin, cos and tan are reduced so).
-double wholeRemainder(double x, double period);
-
 /// The functions of expressions, in their table's order (expressionFunctions).
 enum class ExprFunction : std::uint8_t {
     Sin,
@@ -159,8 +155,9 @@ class ExpressionCode {
     static bool sameShape(std::span<const ExprInstruction> a, std::span<const ExprInstruction> b);
     /// run() without a failure of up to kMaxLanes codes of `length`
     /// instructions and the same shape, side by side: values[l] is lane l's.
-    /// Each instruction is dispatched once for all lanes, and their function
-    /// calls (a drive's sin) run back to back, not each waiting for the last.
+    /// Each instruction is dispatched once for all lanes; their sines and
+    /// cosines are taken together (trigDegreesBatch), other functions' calls
+    /// back to back.
     static void runLanes(std::span<const ExprLane> lanes, std::size_t length, double* values);
 
    private:
