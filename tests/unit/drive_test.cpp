@@ -19,6 +19,7 @@
 #include "core/anim/light_frame.h"
 #include "core/parse/expression.h"
 #include "core/render/camera.h"
+#include "core/scene/bench_scenes.h"
 #include "core/scene/models.h"
 #include "render_paths.h"
 #include "robot_parts.h"
@@ -79,6 +80,60 @@ TEST(DriveExpressions, CompiledCodeGivesTheTextEvaluatorsBits) {
     }
 }
 
+TEST(DriveExpressions, CodesSideBySideGiveEachCodesOwnBits) {
+    // ExpressionCode::runLanes, as a frame runs the alike drives of a grid:
+    // each lane's numbers, function and inputs, and a failing lane gives NaN
+    // alone.
+    Variables variables;
+    variables.set("a", 3);
+    const std::vector<std::string> texts = {
+        "(a + 20*sin(time*180 + 40))", "(-40 + 15*cos(frame*7.5 + 17))", "(1 + 20*tan(frame*90 + 1))",
+        "(7 + 3*sqrt(time*-1 + 1))",   "(2 + 5*log(frame*-1 + 13))",     "(a + 2*floor(time*2 + 0.5))",
+    };
+    std::vector<CompiledExpression> codes;
+    for (const std::string& text : texts) {
+        codes.push_back(compileParenthesized(text, variables, kDriveInputs));
+        const ExpressionCode& code = codes.back().code;
+        ASSERT_TRUE(codes.back().result.ok) << text;
+        ASSERT_TRUE(ExpressionCode::runsInLanes(code.instructions(), code.stackSize())) << text;
+        EXPECT_TRUE(ExpressionCode::sameShape(code.instructions(), codes[0].code.instructions())) << text;
+    }
+    const CompiledExpression other = compileParenthesized("(20*sin(time*180) + a)", variables, kDriveInputs);
+    EXPECT_FALSE(ExpressionCode::sameShape(other.code.instructions(), codes[0].code.instructions()));
+    const CompiledExpression jumps = compileParenthesized("(if(frame > 3, 1, 2))", variables, kDriveInputs);
+    EXPECT_FALSE(ExpressionCode::runsInLanes(jumps.code.instructions(), jumps.code.stackSize()));
+
+    for (double frame : {0.0, 0.5, 12.0, 13.0, 24.0, 99.5}) {
+        const std::array<double, 2> inputs = {frame, frame / 24};
+        std::vector<ExprLane> lanes;
+        for (const CompiledExpression& c : codes) lanes.push_back({c.code.instructions().data(), inputs});
+        std::vector<double> values(lanes.size());
+        ExpressionCode::runLanes(lanes, codes[0].code.instructions().size(), values.data());
+        bool someFailed = false;
+        for (std::size_t l = 0; l < lanes.size(); ++l) {
+            const double want = codes[l].code.evaluate(inputs);
+            someFailed = someFailed || std::isnan(want);
+            EXPECT_EQ(std::bit_cast<std::uint64_t>(values[l]), std::bit_cast<std::uint64_t>(want))
+                << texts[l] << " at frame " << frame;
+        }
+        EXPECT_EQ(someFailed, frame >= 13) << "at frame " << frame;  // log(0) and below, sqrt(-1)
+    }
+}
+
+TEST(DriveExpressions, AlikeDrivesOfAGridRunSideBySide) {
+    // drives:N's two drives per sphere have the same shape (sin and cos,
+    // time and frame, their numbers aside): all but the first run with the
+    // one before them.
+    const SceneDesc scene = test::sceneFromText(benchSceneText({BenchShape::Drives, 20}));
+    const std::shared_ptr<const AnimationProgram> program = AnimationProgram::compile(scene);
+    ASSERT_EQ(program->drives.size(), 40u);
+    for (std::size_t d = 0; d < program->drives.size(); ++d)
+        EXPECT_EQ(program->drives[d].withPrevious, d > 0) << "drive " << d;
+    ASSERT_EQ(program->firstDrive.size(), 22u);  // the floor and 20 spheres, then the end
+    EXPECT_EQ(program->firstDrive[1], 0u);
+    EXPECT_EQ(program->firstDrive[21], 40u);
+}
+
 TEST(DriveExpressions, ConstantExpressionsAreFoldedToTheEvaluatorsValue) {
     Variables variables;
     variables.set("k", 7);
@@ -98,28 +153,6 @@ TEST(DriveExpressions, ConstantExpressionsAreFoldedToTheEvaluatorsValue) {
     EXPECT_FALSE(broken.result.ok);
     EXPECT_EQ(broken.result.message, "division by zero");
     EXPECT_EQ(broken.result.errorOffset, 10u);
-}
-
-TEST(DriveExpressions, TheFastRemainderIsFmodBitForBit) {
-    // sin, cos and tan reduce their degrees with it every frame of a drive.
-    std::mt19937_64 random(test::testSeed(7));
-    std::vector<double> xs = {0.0,   -0.0,  359.99999999999994, 360.0,  -360.0, 719.9999999999999, 720.0,
-                              1e15,  -1e15, 1e15 - 0.5,         9.5e14, 1e300,  -1e-300,           180.0,
-                              540.0, -900.0};
-    for (int k = 0; k < 200000; ++k) {
-        const double scale = std::ldexp(1.0, int(random() % 60) - 10);
-        const double x = (double(random() % 2000001) / 1000000.0 - 1.0) * scale;
-        xs.push_back(x);
-        xs.push_back(std::nextafter(std::round(x / 360) * 360, x));  // just beside a multiple
-        xs.push_back(std::nextafter(std::round(x / 180) * 180, -x));
-    }
-    for (double x : xs) {
-        for (double period : {360.0, 180.0}) {
-            const double want = std::fmod(x, period), got = wholeRemainder(x, period);
-            ASSERT_EQ(std::bit_cast<std::uint64_t>(got), std::bit_cast<std::uint64_t>(want))
-                << std::hexfloat << x << " % " << period;
-        }
-    }
 }
 
 TEST(DriveErrors, EachAtItsPlace) {

@@ -103,9 +103,17 @@ class Compiler {
             } else {
                 p_.driveCode.insert(p_.driveCode.end(), code.begin(), code.end());
             }
-            p_.drives.push_back({std::uint32_t(slot), first, std::uint32_t(p_.driveCode.size()) - first,
-                                 std::uint32_t(std::max<std::size_t>(drive->code.stackSize(), 1)),
-                                 double(drive->fps)});
+            AnimationProgram::ProgramDrive programDrive{
+                std::uint32_t(slot), first, std::uint32_t(p_.driveCode.size()) - first,
+                std::uint32_t(std::max<std::size_t>(drive->code.stackSize(), 1)), double(drive->fps)};
+            if (!p_.drives.empty()) {
+                const AnimationProgram::ProgramDrive& previous = p_.drives.back();
+                const std::span<const ExprInstruction> mine = codeOf(programDrive), theirs = codeOf(previous);
+                programDrive.withPrevious = ExpressionCode::runsInLanes(mine, programDrive.stackSize) &&
+                                            ExpressionCode::runsInLanes(theirs, previous.stackSize) &&
+                                            ExpressionCode::sameShape(mine, theirs);
+            }
+            p_.drives.push_back(programDrive);
             ++driven.driveCount;
         }
         p_.drivenTracks.push_back(std::move(driven));
@@ -131,6 +139,10 @@ class Compiler {
     }
 
    private:
+    std::span<const ExprInstruction> codeOf(const AnimationProgram::ProgramDrive& drive) const {
+        return {&p_.driveCode[drive.first], drive.count};
+    }
+
     std::uint32_t layoutOf(const Track& track) {
         std::string key;
         for (std::size_t i = 0; i < track.keys.size(); ++i) {
@@ -171,6 +183,7 @@ std::shared_ptr<const AnimationProgram> AnimationProgram::compile(const SceneDes
     p.firstSurface.resize(count);
     p.firstPrimitive.resize(count + 1);
     p.still.resize(count);
+    p.firstDrive.resize(count + 1);
     Compiler compiler(p);
     std::uint32_t primitives = 0;
     for (std::size_t i = 0; i < count; ++i) {
@@ -179,6 +192,7 @@ std::shared_ptr<const AnimationProgram> AnimationProgram::compile(const SceneDes
         p.models[i] = compiler.type(object.model);
         p.sizes[i] = object.size;
         p.firstPrimitive[i] = primitives;
+        p.firstDrive[i] = std::uint32_t(p.drives.size());
         primitives += std::uint32_t(primitiveCountOf(object));
         if (object.mayRide()) {
             p.rootSource[i] = kAttached;
@@ -205,6 +219,7 @@ std::shared_ptr<const AnimationProgram> AnimationProgram::compile(const SceneDes
         p.firstSurface[i] = compiler.surfaces(object);
     }
     p.firstPrimitive[count] = primitives;
+    p.firstDrive[count] = std::uint32_t(p.drives.size());
     const auto shadowless = [](const Appearance& a) { return !a.castsShadow; };
     if (std::any_of(scene.objects.begin(), scene.objects.end(), [&](const SceneObject& o) {
             return std::any_of(o.appearance.begin(), o.appearance.end(), shadowless);
@@ -218,14 +233,37 @@ std::shared_ptr<const AnimationProgram> AnimationProgram::compile(const SceneDes
     return program;
 }
 
-Pose AnimationProgram::drivenPose(std::uint32_t track, double t) const {
+void AnimationProgram::evaluateDrives(std::size_t begin, std::size_t end, double t, double* values) const {
+    std::array<std::array<double, 2>, ExpressionCode::kMaxLanes> inputs;
+    std::array<ExprLane, ExpressionCode::kMaxLanes> lanes;
+    std::size_t d = begin;
+    while (d < end) {
+        // The drive and the alike ones after it (up to kMaxLanes; a drive
+        // withPrevious runs in lanes, and so does the one before it), or the drive alone.
+        std::size_t n = 1;
+        while (n < ExpressionCode::kMaxLanes && d + n < end && drives[d + n].withPrevious) ++n;
+        for (std::size_t l = 0; l < n; ++l) {
+            const ProgramDrive& drive = drives[d + l];
+            inputs[l] = {t, t / drive.fps};  // as Drive::valueAt
+            lanes[l] = {&driveCode[drive.first], inputs[l]};
+        }
+        const ProgramDrive& drive = drives[d];
+        if (n == 1) {
+            values[d] = ExpressionCode::run({&driveCode[drive.first], drive.count}, drive.stackSize,
+                                            inputs[0], nullptr);
+        } else {
+            ExpressionCode::runLanes({lanes.data(), n}, drive.count, &values[d]);
+        }
+        d += n;
+    }
+}
+
+Pose AnimationProgram::drivenPose(std::uint32_t track, double t, const double* values) const {
     const DrivenTrack& driven = drivenTracks[track];
     Pose pose = evaluateTrack(driven.track, t, driven.rest);
     for (std::uint32_t k = 0; k < driven.driveCount; ++k) {
-        const ProgramDrive& drive = drives[driven.firstDrive + k];
-        const std::array<double, 2> inputs = {t, t / drive.fps};
-        const std::span<const ExprInstruction> code(&driveCode[drive.first], drive.count);
-        setDrivenNumber(pose, int(drive.slot), ExpressionCode::run(code, drive.stackSize, inputs, nullptr));
+        const std::uint32_t d = driven.firstDrive + k;
+        setDrivenNumber(pose, int(drives[d].slot), values[d]);
     }
     return pose;
 }
@@ -252,7 +290,7 @@ void AnimationProgram::segmentsAt(double t, std::vector<TrackSegment>& segments)
     } else if (root == kAttached) {
         out.root = frame.attachedRoots[i];
     } else if (root & kDriven) {
-        const Pose pose = drivenPose(root & ~kDriven, frame.time);
+        const Pose pose = drivenPose(root & ~kDriven, frame.time, frame.driveValues.data());
         out.root = Transform::fromPose(pose.position, pose.rotation);
     } else {
         const Pose pose = trackPose(root & ~kAnimated, segments);
@@ -280,7 +318,7 @@ void AnimationProgram::segmentsAt(double t, std::vector<TrackSegment>& segments)
                     partFrame(worldFromParent, part, turn.offset, degrees == 0 ? nullptr : &rotation);
             }
         } else if (source & kDriven) {
-            const Pose motion = drivenPose(source & ~kDriven, frame.time);
+            const Pose motion = drivenPose(source & ~kDriven, frame.time, frame.driveValues.data());
             const bool turned = !(motion.rotation == Vec3{});
             const Mat3 rotation = turned ? rotationFromEulerDegrees(motion.rotation) : Mat3{};
             parts[index] = partFrame(worldFromParent, part, motion.position, turned ? &rotation : nullptr);
@@ -300,6 +338,7 @@ void AnimationProgram::segmentsAt(double t, std::vector<TrackSegment>& segments)
 
 void AnimationProgram::evaluateObjects(std::size_t begin, std::size_t end, const TrackSegment* segments,
                                        bool refill, EvaluatedFrame& frame) const {
+    evaluateDrives(firstDrive[begin], firstDrive[end], frame.time, frame.driveValues.data());
     Transform parts[kMaxModelParts];
     for (std::size_t i = begin; i < end; ++i) {
         if (refill && still[i]) continue;
@@ -325,6 +364,7 @@ void AnimationProgram::evaluateObjectsIntoLeaves(std::size_t begin, std::size_t 
                                                  std::span<Primitive> leaves) const {
     // A large frame does not fit in the caches: both copies are written around
     // them, without first reading each line from memory.
+    evaluateDrives(firstDrive[begin], firstDrive[end], frame.time, frame.driveValues.data());
     Transform parts[kMaxModelParts];
     for (std::size_t i = begin; i < end; ++i) {
         if (still[i]) continue;

@@ -67,6 +67,10 @@ struct AnimationProgram {
     struct ProgramDrive {
         std::uint32_t slot, first, count, stackSize;
         double fps;
+        /// Runs side by side with the drive before it (ExpressionCode::runLanes):
+        /// both run in lanes and have the same shape, as the drives of a grid
+        /// of objects written alike do.
+        bool withPrevious = false;
     };
     /// A part's constant motion (no keys: rest, or one key): offset and rotation.
     struct ConstantMotion {
@@ -100,6 +104,8 @@ struct AnimationProgram {
     std::vector<std::uint32_t> firstSurface;    ///< the object's surfaces in `surfaces`, one per primitive
     std::vector<std::uint32_t> firstPrimitive;  ///< as EvaluatedFrame::firstPrimitive (objects + 1)
     std::vector<std::uint8_t> still;            ///< 1: neither the object nor a part of it ever moves
+    /// The object's drives are [firstDrive[i], firstDrive[i + 1]) of `drives` (objects + 1).
+    std::vector<std::uint32_t> firstDrive;
 
     // Shared tables.
     std::vector<AnimatedTrack> tracks;
@@ -152,12 +158,17 @@ struct AnimationProgram {
         Transform* parts;
     };
     /// The frames of object i with this frame's `segments` and, if it is
-    /// attached, `frame.attachedRoots[i]`; driven tracks at `frame.time`; its
-    /// parts' into `parts`.
+    /// attached, `frame.attachedRoots[i]`; driven tracks at `frame.time` with
+    /// `frame.driveValues`; its parts' into `parts`.
     ObjectFrames objectFrames(std::size_t i, const TrackSegment* segments, const EvaluatedFrame& frame,
                               Transform* parts) const;
-    /// Pose of driven track `track` at time t: evaluateTrack's, bit for bit.
-    Pose drivenPose(std::uint32_t track, double t) const;
+    /// The values of drives [begin, end) at time t into values[begin, end):
+    /// ExpressionCode::evaluate's, bit for bit, runs of alike drives side by
+    /// side (ProgramDrive::withPrevious).
+    void evaluateDrives(std::size_t begin, std::size_t end, double t, double* values) const;
+    /// Pose of driven track `track` at time t with every drive's value in
+    /// `values` (evaluateDrives): evaluateTrack's, bit for bit.
+    Pose drivenPose(std::uint32_t track, double t, const double* values) const;
     /// Primitive `shape` (0 for a primitive object; a model's shapes in
     /// order) of object i whose frames are `frames`.
     Primitive objectPrimitive(std::size_t i, std::uint32_t shape, const ObjectFrames& frames) const {
@@ -168,8 +179,9 @@ struct AnimationProgram {
     }
 
     /// Writes the primitives and surfaces of objects [begin, end) into `frame`
-    /// (sized by the caller), with this frame's `segments` and, for attached
-    /// objects, `frame.attachedRoots`. `refill`: the frame already holds this
+    /// (sized by the caller, `driveValues` too), with this frame's `segments`
+    /// and, for attached objects, `frame.attachedRoots`; their drives' values
+    /// first into `frame.driveValues`. `refill`: the frame already holds this
     /// program's surfaces and still objects (EvaluatedFrame::filledBy), which
     /// are then not written again.
     void evaluateObjects(std::size_t begin, std::size_t end, const TrackSegment* segments, bool refill,

@@ -79,6 +79,9 @@ struct EvaluatedFrame {
     std::vector<TrackSegment> segments;
     /// The time (frames) the evaluation is at: driven tracks (SPEC 10.7) read it.
     double time = 0;
+    /// Every drive's value at `time` (AnimationProgram::evaluateDrives), one per
+    /// AnimationProgram::drives: scratch of the evaluation.
+    std::vector<double> driveValues;
     /// The program that filled this frame last: when it fills it again, the
     /// surfaces and the primitives of objects that never move are in place.
     std::shared_ptr<const AnimationProgram> filledBy;

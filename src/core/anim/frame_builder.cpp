@@ -168,6 +168,7 @@ FrameEvaluation FrameEvaluation::begin(const SceneDesc& scene, double t, Evaluat
     // Where t falls among the keys, once per key layout.
     evaluation.program->segmentsAt(t, frame.segments);
     frame.time = t;
+    frame.driveValues.resize(evaluation.program->drives.size());
     return evaluation;
 }
 

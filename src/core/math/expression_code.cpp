@@ -8,63 +8,13 @@
 #include <numbers>
 #include <optional>
 
+#include "core/math/trig_degrees.h"
+
 namespace f2 {
 
 namespace {
 
 constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
-constexpr double kRadiansPerDegree = std::numbers::pi / 180.0;
-
-}  // namespace
-
-/// std::fmod(x, period) for a whole `period`, bit for bit, without its
-/// general (and slow) loop where the quotient is small: x − period·n with
-/// n = ⌊|x| / period⌋ is exact (period·n is a whole number, and by Sterbenz's
-/// lemma so is the difference, period·n ≤ |x| < 2·period·n); a quotient
-/// rounded up or down by one is put right. A drive's sin(time*90) runs it
-/// every frame (docs/performance.md).
-double wholeRemainder(double x, double period) {
-    const double a = std::fabs(x);
-    if (a < period) return x;  // -0 stays -0, as with fmod
-    if (!(a < 1e15)) return std::fmod(x, period);
-    double n = std::floor(a / period);
-    double r = a - period * n;
-    if (r < 0)
-        r = a - period * (n - 1);
-    else if (r >= period)
-        r = a - period * (n + 1);
-    return std::copysign(r, x);
-}
-
-namespace {
-
-// Trigonometry in degrees. The angle is first reduced exactly (fmod is exact),
-// so that the multiples of 90 give exact 0 and ±1: cos(90) is 0, not 6e-17.
-double sinDegrees(double degrees) {
-    const double r = wholeRemainder(degrees, 360.0);
-    if (r == 0 || r == 180 || r == -180) return 0;
-    if (r == 90 || r == -270) return 1;
-    if (r == 270 || r == -90) return -1;
-    return std::sin(r * kRadiansPerDegree);
-}
-
-double cosDegrees(double degrees) {
-    const double r = wholeRemainder(degrees, 360.0);
-    if (r == 0) return 1;
-    if (r == 180 || r == -180) return -1;
-    if (r == 90 || r == -90 || r == 270 || r == -270) return 0;
-    return std::cos(r * kRadiansPerDegree);
-}
-
-/// tan of an odd multiple of 90 has no value; the caller reports it.
-std::optional<double> tanDegrees(double degrees) {
-    const double r = wholeRemainder(degrees, 180.0);
-    if (r == 90 || r == -90) return std::nullopt;
-    if (r == 0) return 0.0;
-    if (r == 45 || r == -135) return 1.0;
-    if (r == -45 || r == 135) return -1.0;
-    return std::tan(r * kRadiansPerDegree);
-}
 
 constexpr std::array<ExprFunctionInfo, 17> kFunctions = {{
     {"sin", ExprFunction::Sin, 1, 1},
@@ -356,6 +306,119 @@ double ExpressionCode::run(std::span<const ExprInstruction> code, std::size_t st
     const double v = stack[0];
     if (!std::isfinite(v)) return fail(code.back(), "the value is not finite");
     return v == 0 ? 0.0 : v;
+}
+
+bool ExpressionCode::runsInLanes(std::span<const ExprInstruction> code, std::size_t stackSize) {
+    if (code.empty() || stackSize > kLaneStack) return false;
+    return std::none_of(code.begin(), code.end(), [](const ExprInstruction& i) {
+        return i.op == ExprOp::AndJump || i.op == ExprOp::OrJump || i.op == ExprOp::IfJump ||
+               i.op == ExprOp::Jump;
+    });
+}
+
+bool ExpressionCode::sameShape(std::span<const ExprInstruction> a, std::span<const ExprInstruction> b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(),
+                      [](const ExprInstruction& x, const ExprInstruction& y) {
+                          return x.op == y.op && (x.index == y.index || x.op == ExprOp::Load);
+                      });
+}
+
+namespace {
+using LaneStacks = std::array<std::array<double, ExpressionCode::kLaneStack>, ExpressionCode::kMaxLanes>;
+
+/// Binary operator `op` at instruction `pc` of every lane: the switch of
+/// operate() folds away, leaving one operation in the loop.
+template <ExprOp op>
+void operateInLanes(std::span<const ExprLane> lanes, std::size_t pc, std::size_t top, bool constant,
+                    LaneStacks& stack, std::array<bool, ExpressionCode::kMaxLanes>& failed) {
+    for (std::size_t l = 0; l < lanes.size(); ++l) {
+        const double b = constant ? lanes[l].code[pc].number : stack[l][top];
+        const ExprStep s = operate(op, stack[l][top - 1], b);
+        failed[l] = failed[l] || s.problem != ExprProblem::None;
+        stack[l][top - 1] = s.value;
+    }
+}
+
+/// Whether instruction `pc` of every lane is sin or cos (they never fail).
+bool sinesOrCosines(std::span<const ExprLane> lanes, std::size_t pc) {
+    return std::all_of(lanes.begin(), lanes.end(), [pc](const ExprLane& lane) {
+        return lane.code[pc].function == ExprFunction::Sin || lane.code[pc].function == ExprFunction::Cos;
+    });
+}
+static_assert(ExpressionCode::kMaxLanes <= kTrigBatch);
+
+using LaneOperator = void (*)(std::span<const ExprLane>, std::size_t, std::size_t, bool, LaneStacks&,
+                              std::array<bool, ExpressionCode::kMaxLanes>&);
+/// The binary operators Add … Ge in ExprOp order (jumps never run in lanes: runsInLanes).
+constexpr std::array<LaneOperator, 12> kLaneOperators = {
+    &operateInLanes<ExprOp::Add>, &operateInLanes<ExprOp::Sub>, &operateInLanes<ExprOp::Mul>,
+    &operateInLanes<ExprOp::Div>, &operateInLanes<ExprOp::Mod>, &operateInLanes<ExprOp::Pow>,
+    &operateInLanes<ExprOp::Eq>,  &operateInLanes<ExprOp::Ne>,  &operateInLanes<ExprOp::Lt>,
+    &operateInLanes<ExprOp::Le>,  &operateInLanes<ExprOp::Gt>,  &operateInLanes<ExprOp::Ge>};
+}  // namespace
+
+void ExpressionCode::runLanes(std::span<const ExprLane> lanes, std::size_t length, double* values) {
+    LaneStacks stack;
+    std::array<bool, kMaxLanes> failed{};
+    const std::size_t count = lanes.size();
+    std::size_t top = 0;  // values on each lane's stack
+    for (std::size_t pc = 0; pc < length; ++pc) {
+        const ExprInstruction& shape = lanes[0].code[pc];
+        switch (shape.op) {
+            case ExprOp::Push:
+                for (std::size_t l = 0; l < count; ++l) stack[l][top] = lanes[l].code[pc].number;
+                ++top;
+                break;
+            case ExprOp::Load:
+                for (std::size_t l = 0; l < count; ++l)
+                    stack[l][top] = lanes[l].inputs[lanes[l].code[pc].index];
+                ++top;
+                break;
+            case ExprOp::Neg:
+                for (std::size_t l = 0; l < count; ++l) stack[l][top - 1] = -stack[l][top - 1];
+                break;
+            case ExprOp::Not:
+                for (std::size_t l = 0; l < count; ++l) stack[l][top - 1] = stack[l][top - 1] == 0 ? 1 : 0;
+                break;
+            case ExprOp::ToBool:
+                for (std::size_t l = 0; l < count; ++l) stack[l][top - 1] = stack[l][top - 1] != 0 ? 1 : 0;
+                break;
+            case ExprOp::Call:
+                top -= shape.index;
+                if (shape.index == 1 && sinesOrCosines(lanes, pc)) {
+                    // A grid's drives: their sines and cosines side by side (SIMD).
+                    std::array<double, kTrigBatch> degrees{}, cosine{}, out;
+                    for (std::size_t l = 0; l < count; ++l) {
+                        degrees[l] = stack[l][top];
+                        cosine[l] = lanes[l].code[pc].function == ExprFunction::Cos ? 1 : 0;
+                    }
+                    trigDegreesBatch(degrees.data(), cosine.data(), out.data());
+                    for (std::size_t l = 0; l < count; ++l) stack[l][top] = out[l];
+                    ++top;
+                    break;
+                }
+                for (std::size_t l = 0; l < count; ++l) {
+                    const ExprStep s = call(lanes[l].code[pc].function, {&stack[l][top], shape.index});
+                    failed[l] = failed[l] || s.problem != ExprProblem::None;
+                    stack[l][top] = s.value;
+                }
+                ++top;
+                break;
+            default: {
+                const bool constant = shape.index != 0;
+                if (!constant) --top;
+                const std::size_t k = std::size_t(shape.op) - std::size_t(ExprOp::Add);
+                if (k < kLaneOperators.size()) kLaneOperators[k](lanes, pc, top, constant, stack, failed);
+            }
+        }
+    }
+    // As run() ends: a failed step or a value that is not finite gives NaN.
+    for (std::size_t l = 0; l < count; ++l) {
+        const double v = stack[l][0];
+        values[l] = failed[l] || !std::isfinite(v) ? std::numeric_limits<double>::quiet_NaN()
+                    : v == 0                       ? 0.0
+                                                   : v;
+    }
 }
 
 }  // namespace f2

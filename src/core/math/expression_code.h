@@ -18,10 +18,6 @@ namespace f2 {
 /// (parse/expression.h's formatNumber).
 std::string shortestDecimal(double value);
 
-/// std::fmod(x, period) for a whole `period`, bit for bit, and faster where
-/// x / period is below 1e15 (the degrees of sin, cos and tan are reduced so).
-double wholeRemainder(double x, double period);
-
 /// The functions of expressions, in their table's order (expressionFunctions).
 enum class ExprFunction : std::uint8_t {
     Sin,
@@ -125,6 +121,12 @@ struct ExpressionFailure {
     std::string message;
 };
 
+/// One of the codes that ExpressionCode::runLanes runs side by side.
+struct ExprLane {
+    const ExprInstruction* code;
+    std::span<const double> inputs;
+};
+
 /// A compiled expression: a constant, or a program over inputs given at
 /// each evaluation (a drive's frame and time).
 class ExpressionCode {
@@ -142,6 +144,21 @@ class ExpressionCode {
     /// evaluate() for `code` (not empty) that needs `stackSize` values of stack.
     static double run(std::span<const ExprInstruction> code, std::size_t stackSize,
                       std::span<const double> inputs, ExpressionFailure* failure);
+
+    /// Most lanes and deepest stack of runLanes.
+    static constexpr std::size_t kMaxLanes = 8, kLaneStack = 8;
+    /// Whether `code` can run in lanes: no jumps, a stack of kLaneStack at most.
+    static bool runsInLanes(std::span<const ExprInstruction> code, std::size_t stackSize);
+    /// Whether two codes that run in lanes can run side by side: the same
+    /// operations on the same stack slots (numbers, functions and inputs may
+    /// differ: `x + 20*sin(time*90)` and `-40 + 15*cos(frame*7.5)` may).
+    static bool sameShape(std::span<const ExprInstruction> a, std::span<const ExprInstruction> b);
+    /// run() without a failure of up to kMaxLanes codes of `length`
+    /// instructions and the same shape, side by side: values[l] is lane l's.
+    /// Each instruction is dispatched once for all lanes; their sines and
+    /// cosines are taken together (trigDegreesBatch), other functions' calls
+    /// back to back.
+    static void runLanes(std::span<const ExprLane> lanes, std::size_t length, double* values);
 
    private:
     std::vector<ExprInstruction> code_;
