@@ -2,8 +2,10 @@
 # page_check.sh F2 MODULE_DIR WORK: the playground page (both modules from
 # build_modules.sh) served by python3 -m http.server and opened in Debian's
 # chromium by puppeteer-core (web/test/page_check.js), with wasm SIMD and with
-# ?nosimd: no console error, and the canvas holds `f2 render --frame 0` of the
-# default scene at 640x480 byte for byte. Skipped (tests/skip.sh) without
+# ?nosimd: no console error; the canvas holds `f2 render` of the default scene
+# at 640x480 byte for byte, at frame 0 and, from the frame slider, at 120; a
+# line with an error shows `f2 check`'s message at its line and column and
+# keeps the picture. Skipped (tests/skip.sh) without
 # emcc, node, chromium or the npm packages of web/test.
 set -uo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -18,7 +20,14 @@ command -v chromium > /dev/null 2>&1 || skip_missing "chromium is not installed 
 fail() { echo "FAIL: $*"; exit 1; }
 rm -rf "$work" && mkdir -p "$work"
 "$root/scripts/web.sh" dist "$modules/simd" "$modules/scalar" "$work/dist" || fail "the page could not be assembled"
-"$f2" render --frame 0 --size 640x480 -o "$work/native.png" > /dev/null 2>&1 || fail "f2 render"
+for frame in 0 120; do
+  "$f2" render --frame $frame --size 640x480 -o "$work/frame$frame.png" > /dev/null 2>&1 || fail "f2 render --frame $frame"
+done
+# The page shows LINE:COL: error: message, f2 check FILE:LINE:COL: error: message.
+error_line="/sphere s1 1 2"
+expected=$({ cat "$root/scenes/demo.f2"; echo "$error_line"; } | "$f2" check - 2>&1 | head -1)
+expected=${expected#<stdin>:}
+[ -n "$expected" ] || fail "f2 check found no error in the demo with '$error_line'"
 
 # A free port: http.server exits at once when its port is taken.
 server=
@@ -34,7 +43,9 @@ done
 trap 'kill "$server" 2> /dev/null' EXIT
 
 status=0
-node "$root/web/test/page_check.js" "http://127.0.0.1:$port/" "$work/native.png" "$work/page.png" || status=1
-node "$root/web/test/page_check.js" "http://127.0.0.1:$port/?nosimd" "$work/native.png" || status=1
+for query in "" "?nosimd"; do
+  node "$root/web/test/page_check.js" "http://127.0.0.1:$port/$query" "$work/frame0.png" "$work/frame120.png" \
+    "$error_line" "$expected" "$work/page${query#?}.png" || status=1
+done
 [ $status -eq 0 ] || fail "the page's picture or console"
 echo "PASS"

@@ -1,15 +1,22 @@
-// node page_check.js URL NATIVE.png [SCREENSHOT.png]: opens the playground in
-// Debian's chromium (puppeteer-core), waits for its first picture, and checks
-// that the page logged no error and that the canvas holds `f2 render`'s bytes
-// of the default scene's frame 0 at the canvas size (docs/web.md).
+// node page_check.js URL FRAME0.png FRAME120.png ERROR_LINE ERROR [SCREENSHOT.png]:
+// opens the playground in Debian's chromium (puppeteer-core) and checks
+// (docs/web.md) that
+//  - the first picture is `f2 render --frame 0` of the default scene at the
+//    canvas size (FRAME0.png), byte for byte;
+//  - appending the line ERROR_LINE to the text lists the diagnostic ERROR
+//    (`f2 check`'s LINE:COL: error: message) and keeps the picture;
+//  - removing it again renders again, and the frame slider at 120 shows
+//    FRAME120.png;
+//  - the page logged no error and threw no exception.
 'use strict';
 const fs = require('fs');
 const puppeteer = require('puppeteer-core');
 const {readPng} = require('./png');
 
 async function main() {
-  const [url, pngPath, screenshot] = process.argv.slice(2);
-  const native = readPng(fs.readFileSync(pngPath));
+  const [url, frame0Path, frame120Path, errorLine, expectedError, screenshot] = process.argv.slice(2);
+  const native = readPng(fs.readFileSync(frame0Path));
+  const native120 = readPng(fs.readFileSync(frame120Path));
   const browser = await puppeteer.launch({
     executablePath: process.env.F2_CHROMIUM || '/usr/bin/chromium',
     args: ['--no-sandbox', '--headless=new'],
@@ -24,25 +31,61 @@ async function main() {
     page.on('pageerror', (e) => problems.push(`uncaught: ${e.message}`));
     await page.goto(url);
     await page.waitForFunction(() => window.f2Page && window.f2Page.renders > 0, {timeout: 60000});
-    const result = await page.evaluate(() => {
+    const canvasBytes = () => page.evaluate(() => {
       const canvas = document.getElementById('picture');
       const data = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height).data;
       return {width: canvas.width, height: canvas.height, pixels: Array.from(data),
-              build: document.getElementById('build').textContent, ms: window.f2Page.lastRender.ms};
+              build: document.getElementById('build').textContent, ms: window.f2Page.lastRender.ms,
+              renders: window.f2Page.renders};
     });
+    const compare = (what, result, expected) => {
+      if (result.width !== expected.width || result.height !== expected.height) {
+        problems.push(`${what}: canvas ${result.width}x${result.height}, f2 render ${expected.width}x${expected.height}`);
+        return;
+      }
+      let differing = 0, largest = 0;
+      for (let p = 0; p < result.width * result.height; ++p) {
+        let d = 0;
+        for (let k = 0; k < 4; ++k) d = Math.max(d, Math.abs(result.pixels[p * 4 + k] - expected.rgba[p * 4 + k]));
+        if (d > 0) ++differing;
+        largest = Math.max(largest, d);
+      }
+      console.log(`${url}: ${what}: ${result.build}; rendered in ${result.ms.toFixed(0)} ms; ` +
+                  `${differing} of ${result.width * result.height} pixels differ from f2 render, by at most ${largest}`);
+      if (differing > 0) problems.push(`${what}: the canvas differs from f2 render`);
+    };
+    const setText = (text) => page.evaluate((t) => {
+      const area = document.getElementById('scene');
+      area.value = t;
+      area.dispatchEvent(new Event('input'));
+    }, text);
+
+    const first = await canvasBytes();
+    compare('frame 0', first, native);
     if (screenshot) await page.screenshot({path: screenshot});
-    if (result.width !== native.width || result.height !== native.height)
-      throw new Error(`canvas ${result.width}x${result.height}, f2 render ${native.width}x${native.height}`);
-    let differing = 0, largest = 0;
-    for (let p = 0; p < result.width * result.height; ++p) {
-      let d = 0;
-      for (let k = 0; k < 4; ++k) d = Math.max(d, Math.abs(result.pixels[p * 4 + k] - native.rgba[p * 4 + k]));
-      if (d > 0) ++differing;
-      largest = Math.max(largest, d);
-    }
-    console.log(`${url}: ${result.build}; first picture in ${result.ms.toFixed(0)} ms; ` +
-                `${differing} of ${result.width * result.height} pixels differ from f2 render, by at most ${largest}`);
-    if (differing > 0) problems.push('the canvas differs from f2 render');
+
+    const text = await page.evaluate(() => document.getElementById('scene').value);
+    await setText(`${text}${text.endsWith('\n') ? '' : '\n'}${errorLine}\n`);
+    await page.waitForFunction(() => document.querySelectorAll('#diagnostics li').length > 0, {timeout: 30000});
+    const shown = await page.evaluate(() => document.querySelector('#diagnostics li').textContent);
+    console.log(`${url}: with '${errorLine}': ${shown}`);
+    if (shown !== expectedError) problems.push(`the page shows '${shown}', f2 check '${expectedError}'`);
+    const kept = await canvasBytes();
+    if (kept.renders !== first.renders) problems.push('the picture was rendered again from a scene with an error');
+    compare('frame 0 kept while the text has an error', kept, native);
+
+    await setText(text);
+    await page.waitForFunction((n) => window.f2Page.renders > n && !document.querySelector('#diagnostics li'),
+                               {timeout: 30000}, kept.renders);
+    const fixed = await canvasBytes();
+    await page.evaluate(() => {
+      const slider = document.getElementById('frame');
+      slider.value = '120';
+      slider.dispatchEvent(new Event('input'));
+    });
+    await page.waitForFunction((n) => window.f2Page.renders > n && window.f2Page.lastRender.frame === 120,
+                               {timeout: 30000}, fixed.renders);
+    compare('frame 120 from the slider', await canvasBytes(), native120);
   } finally {
     await browser.close();
   }
