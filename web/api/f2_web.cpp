@@ -1,6 +1,7 @@
 // The WebAssembly module's C API (docs/web.md): a page's worker sets the scene
 // text, reads its diagnostics as JSON, and renders bands of rows of a frame as
 // RGBA bytes. One scene and one renderer per module instance; one thread.
+#include <charconv>
 #include <cstdint>
 #include <cstdio>
 #include <optional>
@@ -12,6 +13,7 @@
 #include "core/render/camera.h"
 #include "core/render/renderer.h"
 #include "core/scene/default_scene.h"
+#include "core/scene/drive.h"
 
 namespace {
 
@@ -61,19 +63,46 @@ std::string_view lineOf(std::string_view text, int line) {
     return rest;
 }
 
+/// What `f2 check` reports after parsing: the first frame at which a
+/// `/drive` has no finite value, as a diagnostic ("FILE:LINE:COL: error: …").
+std::optional<f2::Diagnostic> driveProblem(const f2::SceneDesc& scene) {
+    for (int frame = 0; !scene.drives.empty() && frame <= scene.lastFrame(); ++frame) {
+        const std::optional<std::string> problem = f2::firstDriveProblem(scene, double(frame));
+        if (!problem) continue;
+        const std::size_t error = problem->find(": error: ");
+        const std::size_t colon2 = problem->rfind(':', error - 1);
+        const std::size_t colon1 = problem->rfind(':', colon2 - 1);
+        f2::Diagnostic d;
+        d.message = problem->substr(error + 9);
+        d.loc.file = problem->substr(0, colon1);
+        std::from_chars(problem->data() + colon1 + 1, problem->data() + colon2, d.loc.line);
+        std::from_chars(problem->data() + colon2 + 1, problem->data() + error, d.loc.column);
+        return d;
+    }
+    return std::nullopt;
+}
+
 }  // namespace
 
 extern "C" {
 
 /// Parses `text` (UTF-8; empty: the default scene). Returns the diagnostics as
-/// JSON: {"ok":bool,"lastFrame":N,"diagnostics":[{"file","line","column","endColumn",
-/// "severity","message"}]}, columns 1-based in bytes, endColumn exclusive (the
-/// bytes an editor marks, as the language server's range). The scene is kept
-/// only without errors; otherwise the last good one stays.
+/// JSON: {"ok":bool,"lastFrame":N,"diagnostics":[{"file","line","column","markColumn",
+/// "endColumn","severity","message"}]}: `f2 check`'s line, column and message;
+/// [markColumn, endColumn) the bytes an editor marks, as the language server's
+/// range (markedBytes). Columns are 1-based, in bytes. As `f2 check`, a
+/// `/drive` without a finite value at a frame is an error too. The scene is
+/// kept only without errors; otherwise the last good one stays.
 const char* f2_set_scene(const char* text) {
     Module& m = module();
     const std::string_view source = *text ? std::string_view(text) : f2::defaultSceneText();
     f2::ParseResult result = f2::parseScene(source, kSceneName);
+    if (result.scene) {
+        if (std::optional<f2::Diagnostic> problem = driveProblem(*result.scene)) {
+            result.diagnostics.push_back(std::move(*problem));
+            result.scene.reset();
+        }
+    }
     const bool ok = result.scene.has_value();
     if (ok) m.scene = std::move(result.scene);
     std::string& out = m.text;
@@ -90,7 +119,8 @@ const char* f2_set_scene(const char* text) {
         out += "\"file\":";
         appendJsonString(out, d.loc.file);
         out += ",\"line\":" + std::to_string(d.loc.line);
-        out += ",\"column\":" + std::to_string(span.first + 1);
+        out += ",\"column\":" + std::to_string(d.loc.column);
+        out += ",\"markColumn\":" + std::to_string(span.first + 1);
         out += ",\"endColumn\":" + std::to_string(span.first + span.length + 1);
         out += ",\"severity\":";
         out += d.severity == f2::Severity::Error ? "\"error\"" : "\"warning\"";
