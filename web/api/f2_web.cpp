@@ -2,6 +2,7 @@
 // text, reads its diagnostics as JSON, and renders bands of rows of a frame as
 // RGBA bytes. One scene and one renderer per module instance; one thread.
 #include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <optional>
@@ -135,11 +136,11 @@ const char* f2_set_scene(const char* text) {
 /// Renders rows [y0, y1) of frame `frame` (scene frames, may be fractional)
 /// of the kept scene at width x height, through the scene's camera, as
 /// `f2 render --frame` does. Returns (y1 - y0) * width RGBA pixels, or null
-/// without a scene or with a bad size.
+/// without a scene, with a frame that is not finite or with a bad size.
 const std::uint8_t* f2_render(double frame, int width, int height, int y0, int y1) {
     Module& m = module();
-    if (!m.scene || width < 1 || height < 1 || width > 16384 || height > 16384 || y0 < 0 || y1 > height ||
-        y0 >= y1)
+    if (!m.scene || !std::isfinite(frame) || width < 1 || height < 1 || width > 16384 || height > 16384 ||
+        y0 < 0 || y1 > height || y0 >= y1)
         return nullptr;
     f2::RenderOptions options;
     options.firstRow = y0;

@@ -37,6 +37,13 @@ async function main() {
   if (differing > 0) {
     process.exitCode = 1;
   }
+  // Requests the module cannot honour give no picture rather than a wrong one.
+  for (const [frame, y0, y1] of [[NaN, 0, 1], [Infinity, 0, 1], [0, 0, height + 1], [0, 5, 5], [0, -1, 3]]) {
+    if (f2.render(frame, width, height, y0, y1) !== null) {
+      console.log(`FAIL: a picture for frame ${frame}, rows ${y0}..${y1}`);
+      process.exitCode = 1;
+    }
+  }
 }
 
 main().catch((error) => {
