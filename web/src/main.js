@@ -28,11 +28,12 @@ const state = {
   lastFrame: 0,
   frame: Number(params.get('frame')) || 0,
   playing: false,
-  job: 0,            // the render in flight, if any
+  job: 0,            // the last render started
   busy: false,
-  again: false,      // a render was asked for while one ran
-  renders: 0,        // finished renders (tests wait on it)
-  lastRender: null,  // {frame, width, height, ms}
+  renders: 0,        // finished renders, previews included
+  fullRenders: 0,    // finished full-resolution renders (tests wait on them)
+  lastRender: null,  // {frame, scale, width, height, ms}
+  lastPreviewMs: 0,  // the last quarter-resolution picture's time
 };
 window.f2Page = state;
 
@@ -88,19 +89,28 @@ function showDiagnostics(result) {
   }
 }
 
-let band = null;  // the render in flight: its image and how many bands are left
+// Progressive: after an edit or a scrub a quarter-resolution picture comes
+// first (a sixteenth of the work), then the full one; playing renders full.
+const kPreviewScale = 4;
+const preview = document.createElement('canvas');
+
+let band = null;     // the render in flight: its image and how many bands are left
+let pending = [];    // the scales still to render for the current scene and frame
 function render() {
   if (!state.sceneOk) return;
-  if (state.busy) {
-    state.again = true;
-    return;
-  }
+  pending = state.playing ? [1] : [kPreviewScale, 1];
+  if (!state.busy) startNext();
+}
+
+function startNext() {
+  const scale = pending.shift();
+  if (scale === undefined) return;
   state.busy = true;
-  const width = canvas.width, height = canvas.height;
+  const width = Math.ceil(canvas.width / scale), height = Math.ceil(canvas.height / scale);
   const job = ++state.job;
   // Bands of whole 32-row tiles, one per worker.
   const rowsPerBand = Math.ceil(height / state.workers.length / 32) * 32;
-  band = {job, frame: state.frame, width, height, left: 0, start: performance.now(),
+  band = {job, frame: state.frame, scale, width, height, left: 0, start: performance.now(),
           image: new ImageData(width, height)};
   state.workers.forEach((worker, i) => {
     const y0 = i * rowsPerBand, y1 = Math.min(height, y0 + rowsPerBand);
@@ -114,18 +124,29 @@ function onBand(m) {
   if (!band || m.job !== band.job) return;
   if (m.pixels) band.image.data.set(m.pixels, m.y0 * band.width * 4);
   if (--band.left > 0) return;
-  context.putImageData(band.image, 0, 0);
+  if (band.scale === 1) {
+    context.putImageData(band.image, 0, 0);
+  } else {
+    preview.width = band.width;
+    preview.height = band.height;
+    preview.getContext('2d').putImageData(band.image, 0, 0);
+    context.imageSmoothingEnabled = false;
+    context.drawImage(preview, 0, 0, canvas.width, canvas.height);
+  }
   const ms = performance.now() - band.start;
-  state.lastRender = {frame: band.frame, width: band.width, height: band.height, ms};
+  state.lastRender = {frame: band.frame, scale: band.scale, width: band.width, height: band.height, ms};
   ++state.renders;
-  statusText.textContent = `${ms.toFixed(0)} ms (${(1000 / ms).toFixed(1)} frames/s)`;
+  if (band.scale !== 1) state.lastPreviewMs = ms;
+  if (band.scale === 1) {
+    ++state.fullRenders;
+    statusText.textContent = `${ms.toFixed(0)} ms (${(1000 / ms).toFixed(1)} frames/s)`;
+  }
   state.busy = false;
-  if (state.playing) {
+  if (pending.length) {
+    startNext();
+  } else if (state.playing) {
     state.frame = state.frame >= state.lastFrame ? 0 : state.frame + 1;
     showFrame();
-    render();
-  } else if (state.again) {
-    state.again = false;
     render();
   }
 }

@@ -5,8 +5,8 @@
 //    canvas size (FRAME0.png), byte for byte;
 //  - appending the line ERROR_LINE to the text lists the diagnostic ERROR
 //    (`f2 check`'s LINE:COL: error: message) and keeps the picture;
-//  - removing it again renders again, and the frame slider at 120 shows
-//    FRAME120.png;
+//  - removing it again renders a quarter-resolution picture, then the full
+//    one (FRAME0.png again), and the frame slider at 120 shows FRAME120.png;
 //  - the page logged no error and threw no exception.
 'use strict';
 const fs = require('fs');
@@ -30,13 +30,14 @@ async function main() {
     });
     page.on('pageerror', (e) => problems.push(`uncaught: ${e.message}`));
     await page.goto(url);
-    await page.waitForFunction(() => window.f2Page && window.f2Page.renders > 0, {timeout: 60000});
+    await page.waitForFunction(() => window.f2Page && window.f2Page.fullRenders > 0, {timeout: 60000});
     const canvasBytes = () => page.evaluate(() => {
       const canvas = document.getElementById('picture');
       const data = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height).data;
       return {width: canvas.width, height: canvas.height, pixels: Array.from(data),
               build: document.getElementById('build').textContent, ms: window.f2Page.lastRender.ms,
-              renders: window.f2Page.renders};
+              renders: window.f2Page.renders, fullRenders: window.f2Page.fullRenders,
+              previewMs: window.f2Page.lastPreviewMs};
     });
     const compare = (what, result, expected) => {
       if (result.width !== expected.width || result.height !== expected.height) {
@@ -75,16 +76,21 @@ async function main() {
     compare('frame 0 kept while the text has an error', kept, native);
 
     await setText(text);
-    await page.waitForFunction((n) => window.f2Page.renders > n && !document.querySelector('#diagnostics li'),
-                               {timeout: 30000}, kept.renders);
+    await page.waitForFunction((n) => window.f2Page.fullRenders > n && !document.querySelector('#diagnostics li'),
+                               {timeout: 30000}, kept.fullRenders);
     const fixed = await canvasBytes();
+    if (fixed.renders < kept.renders + 2) problems.push('no quarter-resolution picture before the full one');
+    console.log(`${url}: the text fixed: a quarter-resolution picture in ${fixed.previewMs.toFixed(0)} ms, ` +
+                `the full one in ${fixed.ms.toFixed(0)} ms (after the page's 150 ms pause for typing)`);
+    compare('frame 0 again after the fix', fixed, native);
     await page.evaluate(() => {
       const slider = document.getElementById('frame');
       slider.value = '120';
       slider.dispatchEvent(new Event('input'));
     });
-    await page.waitForFunction((n) => window.f2Page.renders > n && window.f2Page.lastRender.frame === 120,
-                               {timeout: 30000}, fixed.renders);
+    await page.waitForFunction((n) => window.f2Page.fullRenders > n && window.f2Page.lastRender.frame === 120 &&
+                                          window.f2Page.lastRender.scale === 1,
+                               {timeout: 30000}, fixed.fullRenders);
     compare('frame 120 from the slider', await canvasBytes(), native120);
   } finally {
     await browser.close();
