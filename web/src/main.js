@@ -186,8 +186,46 @@ playButton.addEventListener('click', () => {
   if (state.playing) render();
 });
 
+// Share links: the scene deflated into the URL's fragment (never sent to a
+// server), with the frame: #frame=120&scene=<base64url of deflate-raw>.
+async function pipeBytes(bytes, stream) {
+  return new Uint8Array(await new Response(new Blob([bytes]).stream().pipeThrough(stream)).arrayBuffer());
+}
+function toBase64Url(bytes) {
+  let binary = '';
+  for (const b of bytes) binary += String.fromCharCode(b);
+  return btoa(binary).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
+}
+function fromBase64Url(text) {
+  const binary = atob(text.replace(/-/g, '+').replace(/_/g, '/'));
+  return Uint8Array.from(binary, (c) => c.charCodeAt(0));
+}
+async function shareLink() {
+  const packed = await pipeBytes(new TextEncoder().encode(textArea.value), new CompressionStream('deflate-raw'));
+  return `${location.origin}${location.pathname}${location.search}#frame=${state.frame}&scene=${toBase64Url(packed)}`;
+}
+/// The shared scene and frame of the URL's fragment, or null.
+async function sharedScene() {
+  const fragment = new URLSearchParams(location.hash.slice(1));
+  if (!fragment.has('scene')) return null;
+  const bytes = await pipeBytes(fromBase64Url(fragment.get('scene')), new DecompressionStream('deflate-raw'));
+  return {text: new TextDecoder().decode(bytes), frame: Number(fragment.get('frame')) || 0};
+}
+document.getElementById('share').addEventListener('click', async () => {
+  const link = await shareLink();
+  history.replaceState(null, '', link);
+  try {
+    await navigator.clipboard.writeText(link);
+    statusText.textContent = 'link copied';
+  } catch (_) {
+    statusText.textContent = 'the link is in the address bar';
+  }
+});
+
 async function start() {
-  const [text] = await Promise.all([fetch('demo.f2').then((r) => r.text()), startWorkers()]);
+  const shared = await sharedScene().catch(() => null);
+  if (shared) state.frame = shared.frame;
+  const [text] = await Promise.all([shared ? shared.text : fetch('demo.f2').then((r) => r.text()), startWorkers()]);
   textArea.value = text;
   await sceneChanged();
 }

@@ -7,6 +7,8 @@
 //    (`f2 check`'s LINE:COL: error: message) and keeps the picture;
 //  - removing it again renders a quarter-resolution picture, then the full
 //    one (FRAME0.png again), and the frame slider at 120 shows FRAME120.png;
+//  - its share link opens, in another page, the same text at frame 120 with
+//    FRAME120.png's pixels;
 //  - the page logged no error and threw no exception.
 'use strict';
 const fs = require('fs');
@@ -92,6 +94,31 @@ async function main() {
                                           window.f2Page.lastRender.scale === 1,
                                {timeout: 30000}, fixed.fullRenders);
     compare('frame 120 from the slider', await canvasBytes(), native120);
+
+    // Share: the link opens the same text at the same frame, the same pixels.
+    await page.click('#share');
+    await page.waitForFunction(() => location.hash.includes('scene='), {timeout: 30000});
+    const link = page.url();
+    const opened = await browser.newPage();
+    opened.on('console', (m) => {
+      if (m.type() === 'error') problems.push(`shared page: console error: ${m.text()}`);
+    });
+    opened.on('pageerror', (e) => problems.push(`shared page: uncaught: ${e.message}`));
+    await opened.setViewport({width: 1400, height: 650});
+    await opened.goto(link);
+    await opened.waitForFunction(() => window.f2Page && window.f2Page.fullRenders > 0, {timeout: 60000});
+    const shared = await opened.evaluate(() => ({text: document.getElementById('scene').value,
+                                                 slider: document.getElementById('frame').value}));
+    console.log(`${url}: a share link of ${link.length} characters opens frame ${shared.slider}`);
+    if (shared.text !== text) problems.push('the share link opened another text');
+    if (shared.slider !== '120') problems.push(`the share link opened frame ${shared.slider}, not 120`);
+    const sharedPicture = await opened.evaluate(() => {
+      const canvas = document.getElementById('picture');
+      const data = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height).data;
+      return {width: canvas.width, height: canvas.height, pixels: Array.from(data),
+              build: document.getElementById('build').textContent, ms: window.f2Page.lastRender.ms};
+    });
+    compare('frame 120 from the share link', sharedPicture, native120);
   } finally {
     await browser.close();
   }
