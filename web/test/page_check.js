@@ -8,7 +8,7 @@
 //  - removing it again renders a quarter-resolution picture, then the full
 //    one (FRAME0.png again), and the frame slider at 120 shows FRAME120.png;
 //  - its share link opens, in another page, the same text at frame 120 with
-//    FRAME120.png's pixels;
+//    FRAME120.png's pixels, and its Play button advances the frames;
 //  - the page logged no error and threw no exception.
 'use strict';
 const fs = require('fs');
@@ -119,6 +119,17 @@ async function main() {
               build: document.getElementById('build').textContent, ms: window.f2Page.lastRender.ms};
     });
     compare('frame 120 from the share link', sharedPicture, native120);
+
+    // Play advances frame by frame from 120, each a full picture; Pause stops.
+    const before = await opened.evaluate(() => window.f2Page.fullRenders);
+    await opened.click('#play');
+    await opened.waitForFunction((n) => window.f2Page.fullRenders >= n + 4, {timeout: 60000}, before);
+    await opened.click('#play');
+    const played = await opened.evaluate(() => ({frame: window.f2Page.frame,
+                                                 status: document.getElementById('status').textContent}));
+    console.log(`${url}: playing reached frame ${played.frame}: ${played.status}`);
+    if (!(played.frame >= 123)) problems.push(`playing from 120 reached only frame ${played.frame}`);
+    if (!/frames\/s/.test(played.status)) problems.push(`no frame rate shown while playing: '${played.status}'`);
   } finally {
     await browser.close();
   }
