@@ -41,6 +41,10 @@ assemble() {
   rm -rf "$out" && mkdir -p "$out"
   cp "$1/f2-simd.js" "$1/f2-simd.wasm" "$2/f2.js" "$2/f2.wasm" \
      "$root"/web/src/*.html "$root"/web/src/*.js "$root"/web/src/*.css "$root/scenes/demo.f2" "$out/"
+  # The Examples menu: the gallery's scenes and their list.
+  mkdir -p "$out/examples"
+  cp "$root"/scenes/gallery/*.f2 "$out/examples/"
+  (cd "$out/examples" && printf '%s\n' *.f2 > index.txt)
 }
 
 if [ "${1:-}" = dist ]; then

@@ -222,7 +222,22 @@ document.getElementById('share').addEventListener('click', async () => {
   }
 });
 
+// The Examples menu: the gallery's scenes (examples/index.txt lists them).
+const examples = document.getElementById('examples');
+async function fillExamples() {
+  const names = (await (await fetch('examples/index.txt')).text()).split('\n').filter((n) => n);
+  for (const name of names) examples.append(new Option(name.replace(/\.f2$/, ''), name));
+}
+examples.addEventListener('change', async () => {
+  if (!examples.value) return;
+  textArea.value = await (await fetch(`examples/${examples.value}`)).text();
+  examples.value = '';
+  state.frame = 0;
+  await sceneChanged();
+});
+
 async function start() {
+  fillExamples().catch((error) => console.warn(`no examples: ${error}`));
   const shared = await sharedScene().catch(() => null);
   if (shared) state.frame = shared.frame;
   const [text] = await Promise.all([shared ? shared.text : fetch('demo.f2').then((r) => r.text()), startWorkers()]);

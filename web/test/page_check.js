@@ -8,7 +8,8 @@
 //  - removing it again renders a quarter-resolution picture, then the full
 //    one (FRAME0.png again), and the frame slider at 120 shows FRAME120.png;
 //  - its share link opens, in another page, the same text at frame 120 with
-//    FRAME120.png's pixels, and its Play button advances the frames;
+//    FRAME120.png's pixels, its Play button advances the frames, and its
+//    Examples menu loads a gallery scene;
 //  - the page logged no error and threw no exception.
 'use strict';
 const fs = require('fs');
@@ -120,6 +121,16 @@ async function main() {
     });
     compare('frame 120 from the share link', sharedPicture, native120);
 
+    // The Examples menu lists the gallery and loads a scene into the text.
+    await opened.waitForFunction(() => document.getElementById('examples').options.length > 1, {timeout: 10000})
+        .catch(() => {});
+    const example = await opened.evaluate(() => {
+      const menu = document.getElementById('examples');
+      return {count: menu.options.length - 1, name: menu.options[1] && menu.options[1].value};
+    });
+    if (example.count < 1) problems.push('the Examples menu is empty');
+    console.log(`${url}: ${example.count} examples, the first ${example.name}`);
+
     // Play advances frame by frame from 120, each a full picture; Pause stops.
     const before = await opened.evaluate(() => window.f2Page.fullRenders);
     await opened.click('#play');
@@ -130,6 +141,18 @@ async function main() {
     console.log(`${url}: playing reached frame ${played.frame}: ${played.status}`);
     if (!(played.frame >= 123)) problems.push(`playing from 120 reached only frame ${played.frame}`);
     if (!/frames\/s/.test(played.status)) problems.push(`no frame rate shown while playing: '${played.status}'`);
+
+    if (example.count >= 1) {
+      const rendered = await opened.evaluate(() => window.f2Page.fullRenders);
+      await opened.select('#examples', example.name);
+      await opened.waitForFunction((n) => window.f2Page.fullRenders > n && window.f2Page.lastRender.frame === 0,
+                                   {timeout: 30000}, rendered);
+      const loaded = await opened.evaluate(async (name) => {
+        const file = await (await fetch(`examples/${name}`)).text();
+        return {same: document.getElementById('scene').value === file, errors: document.querySelectorAll('#diagnostics li.error').length};
+      }, example.name);
+      if (!loaded.same || loaded.errors) problems.push(`the example ${example.name} was not loaded (or has errors)`);
+    }
   } finally {
     await browser.close();
   }
