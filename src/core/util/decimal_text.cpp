@@ -30,7 +30,7 @@ bool startsWith(const char* p, const char* last, const char* word) {
 
 /// Reads the decimal number digits × 10^exponent (digits without a point).
 template <class Number>
-Number readScaled(const std::string& digits, long exponent) {
+Number readScaled(const std::string& digits, std::int64_t exponent) {
     const std::string text = digits + "e" + std::to_string(exponent);
     if constexpr (sizeof(Number) == sizeof(float)) {
         return std::strtof(text.c_str(), nullptr);
@@ -77,7 +77,7 @@ Digits shortestDigits(Number value) {
     for (int count = 1; count < most; ++count) {
         Digits d = roundedDigits(double(value), count);
         const auto readsBack = [&](const std::string& digits) {
-            return readScaled<Number>(digits, long(d.exponent) - (count - 1)) == value;
+            return readScaled<Number>(digits, std::int64_t(d.exponent) - (count - 1)) == value;
         };
         if (readsBack(d.digits)) return d;
         // Just above a power of two the values below lie closer together, so
@@ -148,7 +148,7 @@ DecimalRead readDecimal(const char* first, const char* last, double& value) {
     }
 
     std::string digits = negative ? "-" : "";
-    long exponent = 0;
+    std::int64_t exponent = 0;  // 64 bits also where long has 32 (WebAssembly)
     int count = 0;
     for (; p != last && isDigit(*p); ++p, ++count) digits += *p;
     if (p != last && *p == '.') {
@@ -162,8 +162,9 @@ DecimalRead readDecimal(const char* first, const char* last, double& value) {
         if (q != last && (*q == '-' || *q == '+')) ++q;
         if (q != last && isDigit(*q)) {
             // Saturated: far beyond any double either way, and no overflow.
-            long written = 0;
-            for (; q != last && isDigit(*q); ++q) written = std::min(written * 10 + (*q - '0'), 1000000000L);
+            std::int64_t written = 0;
+            for (; q != last && isDigit(*q); ++q)
+                written = std::min<std::int64_t>(written * 10 + (*q - '0'), 1000000000);
             exponent += minus ? -written : written;
             p = q;
         }
