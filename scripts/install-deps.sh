@@ -33,6 +33,8 @@ MORE_PACKAGES=(
   clang-format
   # one build's objects serve the next preset's (CMakeLists.txt: F2_CCACHE)
   ccache
+  # the browser playground and its tests (web/, docs/web.md)
+  emscripten chromium
 )
 
 mode=${1:-all}

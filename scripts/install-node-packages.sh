@@ -2,14 +2,15 @@
 # Installs the npm packages of the repository's Node.js tool chains from their
 # committed lock files (`npm ci`), again whenever a lock file changed:
 # editors/vscode (the VS Code extension's tests and packaging) and tests/gltf
-# (the Khronos glTF validator and three.js, which check `f2 export --gltf`).
+# (the Khronos glTF validator and three.js, which check `f2 export --gltf`) and
+# web/test (puppeteer-core, which drives chromium against the web page).
 #
 # Offline it says so and exits 0: the Node tests are then skipped with their
 # reason. Under F2_REQUIRE_ALL_TESTS=1 (.ci/run), where the registry is
 # reachable, a failed install is an error (exit 1).
 set -uo pipefail
 cd "$(dirname "$0")/.."
-dirs=(editors/vscode tests/gltf)
+dirs=(editors/vscode tests/gltf web/test)
 
 status=0
 for dir in "${dirs[@]}"; do

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/math/transform.h"
+#include "core/util/decimal_text.h"
 
 namespace f2 {
 
@@ -15,9 +16,7 @@ namespace {
 /// numbers in the C locale).
 std::string num(double v) {
     if (std::fabs(v) < 1e-9) v = 0;  // no "-0" or 1e-15 noise in the text
-    std::array<char, 32> buf{};
-    auto [end, ec] = std::to_chars(buf.data(), buf.data() + buf.size(), v, std::chars_format::general, 9);
-    return ec == std::errc{} ? std::string(buf.data(), end) : std::string("0");
+    return generalText(v, 9);
 }
 
 void append(std::string& out, std::initializer_list<std::string_view> parts) {

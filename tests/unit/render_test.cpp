@@ -141,6 +141,41 @@ TEST(Render, ImagesAreIdenticalForAnyThreadCount) {
     }
 }
 
+// A web page's workers each render a band of rows (RenderOptions::firstRow):
+// the band's pixels are the whole frame's, whatever tiles the band cuts, and
+// no pixel outside it is written.
+TEST(Render, ABandOfRowsIsThatPartOfTheWholeFrame) {
+    SceneDesc scene = test::sceneFromRepo("demo.f2");
+    scene.camera.width = 200;
+    scene.camera.height = 150;
+    const Camera camera = Camera::fromDesc(scene.camera);
+    const Image whole = renderScene(scene, 40);
+    const Rgb8 unwritten{1, 2, 3};
+    for (auto [first, end] : {std::pair{0, 150}, {0, 32}, {40, 77}, {77, 150}, {149, 150}, {100, 1000}}) {
+        Renderer renderer(2);
+        Image band;
+        band.resize(200, 150);
+        std::fill(band.pixels.begin(), band.pixels.end(), unwritten);
+        RenderOptions options;
+        options.firstRow = first;
+        options.endRow = end;
+        renderer.render(scene, 40, camera, band, options);
+        for (int y = 0; y < 150; ++y) {
+            const bool inside = y >= first && y < end;
+            for (int x = 0; x < 200; ++x) {
+                if (inside) {
+                    ASSERT_EQ(band.at(x, y), whole.at(x, y))
+                        << x << "," << y << " in rows " << first << ".." << end;
+                } else {
+                    // (Captions are drawn over the whole image; the demo has none.)
+                    ASSERT_EQ(band.at(x, y), unwritten)
+                        << x << "," << y << " outside rows " << first << ".." << end;
+                }
+            }
+        }
+    }
+}
+
 TEST(Render, DefaultSceneShowsTheRobotAndBothPeople) {
     SceneDesc scene = test::sceneFromRepo("demo.f2");
     scene.camera.width = 320;

@@ -6,7 +6,6 @@
 /// exits. That form has no cracks on cap rims or box edges: a ray that grazes
 /// an edge hits one face or the other, never slips between them.
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 
@@ -133,7 +132,7 @@ inline bool intersectPrimitive(const Primitive& prim, const Ray& ray, float tMin
 /// The smallest float above t (t >= 0; infinity stays): a bound that lets a
 /// hit at exactly t through, for breaking ties between equal distances.
 inline float nextUp(float t) {
-    return t < kInfinity ? std::bit_cast<float>(std::bit_cast<std::uint32_t>(t) + 1u) : t;
+    return t < kInfinity ? __builtin_bit_cast(float, __builtin_bit_cast(std::uint32_t, t) + 1u) : t;
 }
 
 /// Unit outward normal at world point `p` on surface `face` of the primitive.

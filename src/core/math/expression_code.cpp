@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <optional>
 
 #include "core/math/trig_degrees.h"
+#include "core/util/decimal_text.h"
 
 namespace f2 {
 
@@ -43,12 +43,7 @@ constexpr ExprStep kUndefined{0, ExprProblem::Undefined};
 
 }  // namespace
 
-std::string shortestDecimal(double value) {
-    std::array<char, 32> buffer{};
-    const auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-    if (ec != std::errc()) return "?";
-    return std::string(buffer.data(), end);
-}
+std::string shortestDecimal(double value) { return shortestText(value); }
 
 std::span<const ExprFunctionInfo> expressionFunctions() { return kFunctions; }
 

@@ -1,7 +1,8 @@
 #include "core/parse/language.h"
 
 #include <array>
-#include <charconv>
+
+#include "core/util/decimal_text.h"
 
 namespace f2 {
 
@@ -269,11 +270,8 @@ std::string easingText(const Easing& easing) {
     if (easing.mode == Interpolation::Bezier) {
         for (float v : {easing.curve.x1, easing.curve.y1, easing.curve.x2, easing.curve.y2}) {
             // The float's own shortest form: 0.1, not 0.10000000149011612.
-            std::array<char, 32> buffer{};
-            const auto written =
-                std::to_chars(buffer.data(), buffer.data() + buffer.size(), v == 0 ? 0.0f : v);
             text += ' ';
-            text.append(buffer.data(), written.ptr);
+            text += shortestText(v == 0 ? 0.0f : v);
         }
     }
     return text;

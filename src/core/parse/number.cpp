@@ -1,10 +1,10 @@
 #include "core/parse/number.h"
 
-#include <charconv>
 #include <cmath>
 #include <system_error>
 
 #include "core/parse/lexer.h"
+#include "core/util/decimal_text.h"
 
 namespace f2 {
 
@@ -27,7 +27,7 @@ ParsedNumber parseNumber(std::string_view token) {
 
     double value = 0;
     const char* end = digits.data() + digits.size();
-    auto [ptr, ec] = std::from_chars(digits.data(), end, value, std::chars_format::general);
+    const auto [ptr, ec] = readDecimal(digits.data(), end, value);
     if (ec == std::errc::result_out_of_range && ptr == end) {
         result.status = NumberStatus::OutOfRange;
         return result;

@@ -24,8 +24,8 @@ struct ParsedNumber {
 inline constexpr double kMaxNumberMagnitude = 3.4028234663852886e38;
 
 /// Parses a whole token as a finite decimal number (optional sign, digits,
-/// optional fraction and exponent). Uses std::from_chars, so the C locale's
-/// '.' is the decimal point regardless of setlocale().
+/// optional fraction and exponent). Reads with readDecimal (decimal_text.h), so
+/// the C locale's '.' is the decimal point regardless of setlocale().
 ParsedNumber parseNumber(std::string_view token);
 
 /// The message for a token that is not a number (status is not Ok), such as

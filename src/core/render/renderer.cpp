@@ -27,7 +27,7 @@ Vec3 renderSample(const FrameScene& frame, const Camera& camera, float px, float
 
 namespace {
 // A packet covers a block of kBlockWidth x kBlockHeight pixels (4x4 with
-// AVX-512, 4x2 with AVX2, 1x1 without SIMD); tiles are whole blocks.
+// AVX-512, 4x2 with AVX2, 4x1 with wasm SIMD, 1x1 without SIMD); tiles are whole blocks.
 constexpr int kBlockWidth = simd::kWidth >= 4 ? 4 : 1;
 constexpr int kBlockHeight = simd::kWidth / kBlockWidth;
 static_assert(kTileSize % kBlockWidth == 0 && kTileSize % kBlockHeight == 0);
@@ -231,17 +231,21 @@ class TileRenderer {
 
 namespace {
 /// Runs `renderTile(x0, y0, x1, y1, rays)` for every tile of the camera's image
-/// on the pool; false if any tile was cancelled (renderTile returned false).
+/// that has a row in [firstRow, endRow), on the pool; false if any tile was
+/// cancelled (renderTile returned false).
 template <class RenderTile>
-bool forEachTile(ThreadPool& pool, const Camera& camera, RayCounts* rays, RenderTile&& renderTile) {
+bool forEachTile(ThreadPool& pool, const Camera& camera, int firstRow, int endRow, RayCounts* rays,
+                 RenderTile&& renderTile) {
     const int tilesX = (camera.width + kTileSize - 1) / kTileSize;
-    const int tilesY = (camera.height + kTileSize - 1) / kTileSize;
+    const int firstTileRow = std::max(firstRow, 0) / kTileSize;
+    const int tilesY =
+        std::max((std::min(endRow, camera.height) + kTileSize - 1) / kTileSize - firstTileRow, 0);
     std::atomic<bool> cancelled{false};
     std::atomic<std::uint64_t> primaryRays{0}, shadowRays{0}, reflectedRays{0};
 
     pool.parallelFor(std::uint32_t(tilesX * tilesY), [&](std::uint32_t tile) {
         const int x0 = int(tile % std::uint32_t(tilesX)) * kTileSize;
-        const int y0 = int(tile / std::uint32_t(tilesX)) * kTileSize;
+        const int y0 = (int(tile / std::uint32_t(tilesX)) + firstTileRow) * kTileSize;
         const int x1 = std::min(x0 + kTileSize, camera.width);
         const int y1 = std::min(y0 + kTileSize, camera.height);
         RayCounts tileRays;
@@ -270,16 +274,19 @@ bool Renderer::trace(const FrameScene& frame, const Camera& camera, Image& out, 
     const int aa = options.antialias < 1 ? 1 : options.antialias;
     primaryBins_.build(frame.bvh, camera, &pool_, primaryBinsFrom_);
     const PrimaryBins* bins = primaryBins_.active() ? &primaryBins_ : nullptr;
-    return forEachTile(pool_, camera, rays, [&](int x0, int y0, int x1, int y1, RayCounts& tileRays) {
-        // The tile is rendered into a local buffer and copied out whole: the
-        // image rows of neighbouring tiles share cache lines, which two threads
-        // writing pixel by pixel would pass back and forth.
-        Rgb8 local[kTileSize * kTileSize];
-        if (!TileRenderer(frame, camera, bins, aa, tileRays).render(x0, y0, x1, y1, local, cancel))
-            return false;
-        for (int y = y0; y < y1; ++y) std::copy_n(&local[(y - y0) * kTileSize], x1 - x0, &out.at(x0, y));
-        return true;
-    });
+    const int firstRow = options.firstRow, endRow = options.endRow;
+    return forEachTile(
+        pool_, camera, firstRow, endRow, rays, [&](int x0, int y0, int x1, int y1, RayCounts& tileRays) {
+            // The tile is rendered into a local buffer and copied out whole (but the
+            // rows outside the band): the image rows of neighbouring tiles share cache
+            // lines, which two threads writing pixel by pixel would pass back and forth.
+            Rgb8 local[kTileSize * kTileSize];
+            if (!TileRenderer(frame, camera, bins, aa, tileRays).render(x0, y0, x1, y1, local, cancel))
+                return false;
+            for (int y = std::max(y0, firstRow); y < std::min(y1, endRow); ++y)
+                std::copy_n(&local[(y - y0) * kTileSize], x1 - x0, &out.at(x0, y));
+            return true;
+        });
 }
 
 bool Renderer::traceAdding(const FrameScene& frame, const Camera& camera, LinearImage& sum,
@@ -287,19 +294,20 @@ bool Renderer::traceAdding(const FrameScene& frame, const Camera& camera, Linear
     const int aa = options.antialias < 1 ? 1 : options.antialias;
     primaryBins_.build(frame.bvh, camera, &pool_, primaryBinsFrom_);
     const PrimaryBins* bins = primaryBins_.active() ? &primaryBins_ : nullptr;
-    return forEachTile(pool_, camera, rays, [&](int x0, int y0, int x1, int y1, RayCounts& tileRays) {
-        LinearRgb local[kTileSize * kTileSize];
-        if (!TileRenderer(frame, camera, bins, aa, tileRays).render(x0, y0, x1, y1, local, cancel))
-            return false;
-        // Each pixel belongs to one tile, so the sums do not depend on the thread that adds.
-        for (int y = y0; y < y1; ++y)
-            for (int x = x0; x < x1; ++x) {
-                const LinearRgb& c = local[(y - y0) * kTileSize + (x - x0)];
-                LinearRgb& s = sum.at(x, y);
-                s = {s.r + c.r, s.g + c.g, s.b + c.b};
-            }
-        return true;
-    });
+    return forEachTile(
+        pool_, camera, 0, camera.height, rays, [&](int x0, int y0, int x1, int y1, RayCounts& tileRays) {
+            LinearRgb local[kTileSize * kTileSize];
+            if (!TileRenderer(frame, camera, bins, aa, tileRays).render(x0, y0, x1, y1, local, cancel))
+                return false;
+            // Each pixel belongs to one tile, so the sums do not depend on the thread that adds.
+            for (int y = y0; y < y1; ++y)
+                for (int x = x0; x < x1; ++x) {
+                    const LinearRgb& c = local[(y - y0) * kTileSize + (x - x0)];
+                    LinearRgb& s = sum.at(x, y);
+                    s = {s.r + c.r, s.g + c.g, s.b + c.b};
+                }
+            return true;
+        });
 }
 
 /// The single-ray reference path over the whole image (tests compare it with trace()).

@@ -4,6 +4,7 @@
 /// SIMD type appears here, so users compile without the core's CPU flags.
 #include <atomic>
 #include <functional>
+#include <limits>
 #include <span>
 
 #include "core/render/camera.h"
@@ -22,6 +23,10 @@ struct RenderOptions {
     /// What the pixels show. The diagnostic modes trace one ray per pixel
     /// centre by the reference path (diagnostic_view.h); antialias is for Shaded.
     ViewMode view = ViewMode::Shaded;
+    /// Only the image rows [firstRow, endRow) are traced, the others
+    /// unwritten (a web page's worker renders a band); shaded view, render() only.
+    int firstRow = 0;
+    int endRow = std::numeric_limits<int>::max();
 };
 
 /// Wall-clock split of one frame, in milliseconds, and the rays it cast.

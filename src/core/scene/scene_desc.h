@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <iterator>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -257,14 +258,30 @@ class AnimationCache {
     AnimationCache() = default;
     AnimationCache(const AnimationCache&) {}
     AnimationCache& operator=(const AnimationCache&) {
-        program_.store(nullptr);
+        set(nullptr);
         return *this;
     }
+#if defined(__cpp_lib_atomic_shared_ptr)
     std::shared_ptr<const AnimationProgram> get() const { return program_.load(); }
     void set(std::shared_ptr<const AnimationProgram> program) const { program_.store(std::move(program)); }
 
    private:
     mutable std::atomic<std::shared_ptr<const AnimationProgram>> program_;
+#else
+    // libc++ 14 (the WebAssembly build) has no std::atomic<std::shared_ptr>.
+    std::shared_ptr<const AnimationProgram> get() const {
+        std::lock_guard lock(mutex_);
+        return program_;
+    }
+    void set(std::shared_ptr<const AnimationProgram> program) const {
+        std::lock_guard lock(mutex_);
+        program_.swap(program);
+    }
+
+   private:
+    mutable std::mutex mutex_;
+    mutable std::shared_ptr<const AnimationProgram> program_;
+#endif
 };
 
 struct SceneDesc {

@@ -1,6 +1,7 @@
 #pragma once
 /// Lane types for packet tracing: a float, an int and a mask per lane, chosen
-/// at build time — 16 lanes with AVX-512, 8 with AVX2, 1 (plain C++) otherwise.
+/// at build time — 16 lanes with AVX-512, 8 with AVX2, 4 with wasm SIMD (the
+/// browser build, docs/web.md), 1 (plain C++) otherwise.
 /// Every operation is the lane-wise IEEE operation (no FMA, no approximate
 /// reciprocal), so a packet computes what the same code computes on floats.
 /// Private to the core: the lane count depends on -march, so only targets
@@ -9,6 +10,8 @@
 
 #if defined(__AVX512F__) || defined(__AVX2__)
 #include <immintrin.h>
+#elif defined(__wasm_simd128__)
+#include <wasm_simd128.h>
 #endif
 
 namespace f2::simd {
@@ -154,6 +157,74 @@ inline Int operator&(Int a, Int b) { return _mm256_and_si256(a.v, b.v); }
 inline Int operator|(Int a, Int b) { return _mm256_or_si256(a.v, b.v); }
 inline Int shiftLeft23(Int a) { return _mm256_slli_epi32(a.v, 23); }
 inline Int shiftRight23(Int a) { return _mm256_srli_epi32(a.v, 23); }
+
+#elif defined(__wasm_simd128__)
+
+inline constexpr int kWidth = 4;
+inline constexpr const char* kIsaName = "wasm SIMD";
+
+struct Mask {
+    v128_t m;
+};
+struct Float {
+    v128_t v;
+    Float() = default;
+    Float(v128_t x) : v(x) {}
+    Float(float x) : v(wasm_f32x4_splat(x)) {}
+};
+struct Int {
+    v128_t v;
+    Int() = default;
+    Int(v128_t x) : v(x) {}
+    Int(std::int32_t x) : v(wasm_i32x4_splat(x)) {}
+};
+
+inline Float operator+(Float a, Float b) { return wasm_f32x4_add(a.v, b.v); }
+inline Float operator-(Float a, Float b) { return wasm_f32x4_sub(a.v, b.v); }
+inline Float operator*(Float a, Float b) { return wasm_f32x4_mul(a.v, b.v); }
+inline Float operator/(Float a, Float b) { return wasm_f32x4_div(a.v, b.v); }
+inline Float operator-(Float a) { return wasm_f32x4_neg(a.v); }
+inline Float sqrt(Float a) { return wasm_f32x4_sqrt(a.v); }
+inline Float abs(Float a) { return wasm_f32x4_abs(a.v); }
+// pmin(x, y) is y < x ? y : x: with the operands swapped, SSE's a < b ? a : b.
+inline Float min(Float a, Float b) { return wasm_f32x4_pmin(b.v, a.v); }
+inline Float max(Float a, Float b) { return wasm_f32x4_pmax(b.v, a.v); }
+inline Float floor(Float a) { return wasm_f32x4_floor(a.v); }
+
+inline Mask operator<(Float a, Float b) { return {wasm_f32x4_lt(a.v, b.v)}; }
+inline Mask operator<=(Float a, Float b) { return {wasm_f32x4_le(a.v, b.v)}; }
+inline Mask operator>(Float a, Float b) { return {wasm_f32x4_gt(a.v, b.v)}; }
+inline Mask operator>=(Float a, Float b) { return {wasm_f32x4_ge(a.v, b.v)}; }
+inline Mask operator==(Float a, Float b) { return {wasm_f32x4_eq(a.v, b.v)}; }
+inline Mask operator==(Int a, Int b) { return {wasm_i32x4_eq(a.v, b.v)}; }
+inline Mask operator<(Int a, Int b) { return {wasm_i32x4_lt(a.v, b.v)}; }
+
+inline Mask operator&(Mask a, Mask b) { return {wasm_v128_and(a.m, b.m)}; }
+inline Mask operator|(Mask a, Mask b) { return {wasm_v128_or(a.m, b.m)}; }
+inline Mask andNot(Mask a, Mask b) { return {wasm_v128_andnot(a.m, b.m)}; }
+inline std::uint32_t bits(Mask a) { return std::uint32_t(wasm_i32x4_bitmask(a.m)); }
+inline bool any(Mask a) { return wasm_v128_any_true(a.m); }
+inline bool none(Mask a) { return !wasm_v128_any_true(a.m); }
+inline int firstLane(Mask a) { return __builtin_ctz(bits(a)); }
+inline Mask allLanes() { return {wasm_i32x4_splat(-1)}; }
+inline Mask noLanes() { return {wasm_i32x4_splat(0)}; }
+
+inline Float select(Mask m, Float a, Float b) { return wasm_v128_bitselect(a.v, b.v, m.m); }
+inline Int select(Mask m, Int a, Int b) { return wasm_v128_bitselect(a.v, b.v, m.m); }
+
+inline Float load(const float* p) { return wasm_v128_load(p); }
+inline void store(float* p, Float a) { wasm_v128_store(p, a.v); }
+inline void store(std::int32_t* p, Int a) { wasm_v128_store(p, a.v); }
+inline Int truncateToInt(Float a) { return wasm_i32x4_trunc_sat_f32x4(a.v); }
+inline Float toFloat(Int a) { return wasm_f32x4_convert_i32x4(a.v); }
+inline Int bitsOf(Float a) { return a.v; }
+inline Float fromBits(Int a) { return a.v; }
+inline Int operator+(Int a, Int b) { return wasm_i32x4_add(a.v, b.v); }
+inline Int operator-(Int a, Int b) { return wasm_i32x4_sub(a.v, b.v); }
+inline Int operator&(Int a, Int b) { return wasm_v128_and(a.v, b.v); }
+inline Int operator|(Int a, Int b) { return wasm_v128_or(a.v, b.v); }
+inline Int shiftLeft23(Int a) { return wasm_i32x4_shl(a.v, 23); }
+inline Int shiftRight23(Int a) { return wasm_u32x4_shr(a.v, 23); }
 
 #else  // portable fallback: one lane
 

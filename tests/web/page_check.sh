@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# page_check.sh F2 MODULE_DIR WORK: the playground page (both modules from
+# build_modules.sh) served by python3 -m http.server and opened in Debian's
+# chromium by puppeteer-core (web/test/page_check.js), with wasm SIMD and with
+# ?nosimd: no console error; the canvas holds `f2 render` of the default scene
+# at 640x480 byte for byte, at frame 0 and, from the frame slider, at 120; a
+# line with an error shows `f2 check`'s message at its line and column and
+# keeps the picture. Skipped (tests/skip.sh) without
+# emcc, node, chromium or the npm packages of web/test.
+set -uo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/../.." && pwd)
+. "$here/../skip.sh"
+f2=$1 modules=$2 work=$3
+command -v emcc > /dev/null 2>&1 || skip_missing "emcc is not installed (apt-get install emscripten; scripts/web.sh --install)"
+command -v node > /dev/null 2>&1 || skip_missing "node is not installed (scripts/install-deps.sh installs nodejs)"
+command -v chromium > /dev/null 2>&1 || skip_missing "chromium is not installed (apt-get install chromium)"
+[ -d "$root/web/test/node_modules/puppeteer-core" ] ||
+  skip_missing "npm package puppeteer-core is missing in web/test: run scripts/install-node-packages.sh"
+fail() { echo "FAIL: $*"; exit 1; }
+rm -rf "$work" && mkdir -p "$work"
+"$root/scripts/web.sh" dist "$modules/simd" "$modules/scalar" "$work/dist" || fail "the page could not be assembled"
+for frame in 0 120; do
+  "$f2" render --frame $frame --size 640x480 -o "$work/frame$frame.png" > /dev/null 2>&1 || fail "f2 render --frame $frame"
+done
+# The page shows LINE:COL: error: message, f2 check FILE:LINE:COL: error: message.
+error_line="/sphere s1 1 2"
+expected=$({ cat "$root/scenes/demo.f2"; echo "$error_line"; } | "$f2" check - 2>&1 | head -1)
+expected=${expected#<stdin>:}
+[ -n "$expected" ] || fail "f2 check found no error in the demo with '$error_line'"
+
+# A free port: http.server exits at once when its port is taken.
+server=
+for attempt in 1 2 3 4 5; do
+  port=$(( 20000 + RANDOM % 20000 ))
+  python3 -m http.server "$port" --bind 127.0.0.1 --directory "$work/dist" > "$work/server.log" 2>&1 &
+  server=$!
+  sleep 1
+  kill -0 "$server" 2> /dev/null && break
+  server=
+done
+[ -n "$server" ] || fail "python3 -m http.server did not start"
+trap 'kill "$server" 2> /dev/null' EXIT
+
+status=0
+for query in "" "?nosimd"; do
+  node "$root/web/test/page_check.js" "http://127.0.0.1:$port/$query" "$work/frame0.png" "$work/frame120.png" \
+    "$error_line" "$expected" "$work/page${query#?}.png" || status=1
+done
+[ $status -eq 0 ] || fail "the page's picture or console"
+echo "PASS"

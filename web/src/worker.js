@@ -1,0 +1,34 @@
+// One render worker: its own instance of the module (wasm SIMD or the
+// fallback, as the page chose), rendering the bands of rows it is handed.
+'use strict';
+let f2 = null;
+const pending = [];
+
+function handle(message) {
+  const m = message.data;
+  if (m.type === 'scene') {
+    const result = f2.setScene(m.text);
+    postMessage({type: 'scene', id: m.id, result});
+  } else if (m.type === 'render') {
+    const start = performance.now();
+    const pixels = f2.render(m.frame, m.width, m.height, m.y0, m.y1);
+    const ms = performance.now() - start;
+    const buffer = pixels ? pixels.buffer : null;
+    postMessage({type: 'band', job: m.job, y0: m.y0, y1: m.y1, pixels, ms}, buffer ? [buffer] : []);
+  }
+}
+
+onmessage = (message) => {
+  if (message.data.type === 'load') {
+    importScripts('f2_module.js', message.data.script);
+    createF2Module().then((instance) => {
+      f2 = wrapF2Module(instance);
+      postMessage({type: 'loaded', build: f2.buildName()});
+      pending.splice(0).forEach(handle);
+    });
+  } else if (f2) {
+    handle(message);
+  } else {
+    pending.push(message);
+  }
+};
