@@ -1,6 +1,7 @@
 #include "io/gltf_export.h"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -225,7 +226,8 @@ class GltfBuilder {
              int>
         textureOf_;
     std::map<std::tuple<float, float, float, float>, int> checkerUvOf_;
-    std::size_t flatCheckers_ = 0;  ///< checkered shapes drawn in their first colour (not boxes)
+    /// A checkered sphere's or cylinder's triangles by cell parity (index accessors, -1: none).
+    std::map<std::tuple<ShapeKind, float, float, float, float>, std::array<int, 2>> checkerSplitOf_;
 
     void measureScene() {
         Vec3 lo{1e30f, 1e30f, 1e30f}, hi = -lo;
@@ -402,9 +404,9 @@ class GltfBuilder {
         }
         const Geometry& g = found->second;
         // A box's checker is exact as a texture (checkerUv); on a curved shape
-        // its cells are not squares of any map: the first colour, a warning.
+        // its cells are no squares of any map: its triangles split by cell.
         const bool checkered = look.checker.size > 0, textured = checkered && kind == ShapeKind::Box;
-        flatCheckers_ += checkered && !textured;
+        if (checkered && !textured) return checkerSplitMesh(kind, size, look, g, own);
         const int material = materialFor(look, textured, own);
         const int uv = textured ? checkerUv(size, look.checker.size) : -1;
         const auto meshKey = std::make_tuple(g.id, material, uv);
@@ -414,6 +416,53 @@ class GltfBuilder {
         meshes_.push_back(
             {{"name", std::string(shapeKindName(kind))},
              {"primitives", {{{"attributes", attributes}, {"indices", g.indices}, {"material", material}}}}});
+        return meshOf_[meshKey] = int(meshes_.size() - 1);
+    }
+
+    /// A checkered sphere or cylinder (docs/output.md): two primitives over
+    /// the shape's vertices, the triangles whose centre lies in an even cell
+    /// of F2's 3D checker (docs/rendering.md, in the shape's own frame) in the
+    /// paint's material, the others in the checker colour's. Exact at the
+    /// triangles' centres; a cell's edge follows the triangles' edges.
+    int checkerSplitMesh(ShapeKind kind, Vec3 size, const Appearance& look, const Geometry& g, bool own) {
+        const float s = look.checker.size;
+        const auto key = std::make_tuple(kind, size.x, size.y, size.z, s);
+        auto found = checkerSplitOf_.find(key);
+        if (found == checkerSplitOf_.end()) {
+            const TriangleMesh mesh = tessellate(kind, size, options_.tessellation);
+            std::array<std::vector<std::uint32_t>, 2> byParity;
+            const auto parity = [s](float x) {
+                const float cell = std::floor(x / s);
+                return int(cell - 2 * std::floor(cell / 2));
+            };
+            for (std::size_t t = 0; t < mesh.indices.size(); t += 3) {
+                const std::uint32_t a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
+                const Vec3 centre = (mesh.positions[a] + mesh.positions[b] + mesh.positions[c]) / 3.0f;
+                const int odd = (parity(centre.x) + parity(centre.y) + parity(centre.z)) % 2;
+                byParity[std::size_t(odd)].insert(byParity[std::size_t(odd)].end(), {a, c, b});  // mirrored
+            }
+            std::array<int, 2> accessors{-1, -1};
+            for (int k = 0; k < 2; ++k)
+                if (!byParity[std::size_t(k)].empty())
+                    accessors[std::size_t(k)] =
+                        buffer_.indices(byParity[std::size_t(k)], mesh.positions.size());
+            found = checkerSplitOf_.emplace(key, accessors).first;
+        }
+        Appearance even = look, odd = look;
+        even.checker.size = odd.checker.size = 0;
+        odd.color = look.checker.color;
+        const std::array<int, 2> materials{materialFor(even, false, own), materialFor(odd, false, own)};
+        const auto meshKey = std::make_tuple(g.id, materials[0], -2 - materials[1]);  // no uv is ever < -1
+        if (auto m = meshOf_.find(meshKey); m != meshOf_.end()) return m->second;
+        json primitives = json::array();
+        for (int k = 0; k < 2; ++k) {
+            if (found->second[std::size_t(k)] < 0) continue;
+            primitives.push_back({{"attributes", {{"POSITION", g.position}, {"NORMAL", g.position + 1}}},
+                                  {"indices", found->second[std::size_t(k)]},
+                                  {"material", materials[std::size_t(k)]}});
+        }
+        meshes_.push_back(
+            {{"name", std::string(shapeKindName(kind)) + " checker"}, {"primitives", primitives}});
         return meshOf_[meshKey] = int(meshes_.size() - 1);
     }
 
@@ -799,10 +848,6 @@ class GltfBuilder {
     // ---- what is left out ---------------------------------------------------------
 
     void warnings() {
-        if (flatCheckers_ > 0)
-            warnings_.push_back(std::to_string(flatCheckers_) +
-                                " checkered sphere(s) or cylinder(s) exported in their first colour (a box's "
-                                "checker is a texture; a curved shape's cells are no texture's squares)");
         const char* without = " (--gltf-pointer exports them)";
         if (!scene_.colourTracks.empty() && !options_.pointer)
             warnings_.push_back(

@@ -459,6 +459,52 @@ TEST(GltfExport, ColourIntensityAndZoomKeysThroughAnimationPointer) {
     EXPECT_EQ(document.warnings.size(), 3u);
 }
 
+TEST(GltfExport, ACheckeredSphereIsSplitByCell) {
+    // A curved shape's checker (issue 26): its triangles in two primitives,
+    // those whose centre is in an even cell of F2's checker (docs/rendering.md,
+    // the shape's own frame) in the paint's material, the others in the
+    // checker colour's; the two together are every triangle of the sphere.
+    const SceneDesc scene = test::sceneFromText(
+        "/camera 400 300 1 0 0 -500\n"
+        "/sphere ball 50 0 0 0 0 30 0\n"
+        "/paint ball 255 0 0\n"
+        "/checker ball 0 0 255 20\n");
+    GltfDocument document;
+    const json gltf = exported(scene, &document);
+    EXPECT_TRUE(document.warnings.empty());
+    const json& mesh = gltf["meshes"][gltf["nodes"][nodeNamed(gltf, "ball.shape")]["mesh"].get<int>()];
+    ASSERT_EQ(mesh["primitives"].size(), 2u);
+    const std::vector<float> positions =
+        floatsOf(gltf, document, mesh["primitives"][0]["attributes"]["POSITION"].get<int>());
+    std::size_t triangles = 0;
+    for (int k = 0; k < 2; ++k) {
+        const json& primitive = mesh["primitives"][k];
+        const json& material = gltf["materials"][primitive["material"].get<int>()];
+        EXPECT_EQ(material["pbrMetallicRoughness"]["baseColorFactor"],
+                  k == 0 ? json::parse("[1.0, 0.0, 0.0, 1.0]") : json::parse("[0.0, 0.0, 1.0, 1.0]"));
+        const json& accessor = gltf["accessors"][primitive["indices"].get<int>()];
+        const std::size_t count = accessor["count"],
+                          offset = gltf["bufferViews"][accessor["bufferView"].get<int>()]["byteOffset"];
+        ASSERT_EQ(accessor["componentType"], 5123);  // unsigned short: few vertices
+        std::vector<std::uint16_t> indices(count);
+        std::memcpy(indices.data(), document.bin.data() + offset, count * 2);
+        for (std::size_t t = 0; t < count; t += 3) {
+            // Back in F2's frame (z mirrored) and the shape's own: the cell of the triangle's centre.
+            Vec3 centre{};
+            for (std::size_t v = 0; v < 3; ++v) {
+                const float* p = &positions[3 * indices[t + v]];
+                centre = centre + Vec3{p[0], p[1], -p[2]} / 3.0f;
+            }
+            const int cells =
+                int(std::floor(centre.x / 20) + std::floor(centre.y / 20) + std::floor(centre.z / 20));
+            EXPECT_EQ(((cells % 2) + 2) % 2, k) << "triangle " << t / 3 << " of primitive " << k;
+        }
+        triangles += count / 3;
+    }
+    EXPECT_EQ(triangles,
+              tessellate(ShapeKind::Sphere, {50, 0, 0}, GltfOptions{}.tessellation).indices.size() / 3);
+}
+
 TEST(GltfExport, AnyFileNameIsEscapedNeverInjected) {
     // Not UTF-8, a quote, a backslash, a newline: the JSON still parses and
     // holds the name (the bad byte as U+FFFD).
