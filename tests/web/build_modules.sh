@@ -6,8 +6,9 @@ set -uo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 . "$here/../skip.sh"
+. "$here/needs.sh"
 work=$1
-command -v emcc > /dev/null 2>&1 || skip_missing "emcc is not installed (apt-get install emscripten; scripts/web.sh --install)"
+needs emcc
 mkdir -p "$work"
 for variant in simd scalar; do
   start=$(date +%s)

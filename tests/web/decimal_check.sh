@@ -7,9 +7,9 @@
 set -uo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../skip.sh"
+. "$here/needs.sh"
 native=$1 modules=$2 work=$3
-command -v emcc > /dev/null 2>&1 || skip_missing "emcc is not installed (apt-get install emscripten; scripts/web.sh --install)"
-command -v node > /dev/null 2>&1 || skip_missing "node is not installed (scripts/install-deps.sh installs nodejs)"
+needs emcc node
 fail() { echo "FAIL: $*"; exit 1; }
 mkdir -p "$work"
 "$native" > "$work/native.txt" || fail "the native probe failed"

@@ -7,9 +7,9 @@ set -uo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 . "$here/../skip.sh"
+. "$here/needs.sh"
 f2=$1 modules=$2 drives=$3
-command -v emcc > /dev/null 2>&1 || skip_missing "emcc is not installed (apt-get install emscripten; scripts/web.sh --install)"
-command -v node > /dev/null 2>&1 || skip_missing "node is not installed (scripts/install-deps.sh installs nodejs)"
+needs emcc node
 module=$modules/simd/f2-simd.js
 [ -f "$module" ] || { echo "FAIL: no $module: the web.modules test builds it"; exit 1; }
 node --no-experimental-fetch "$root/web/test/diagnostics_match.js" "$module" "$f2" "$drives" ||

@@ -11,12 +11,9 @@ set -uo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 . "$here/../skip.sh"
+. "$here/needs.sh"
 f2=$1 modules=$2 work=$3
-command -v emcc > /dev/null 2>&1 || skip_missing "emcc is not installed (apt-get install emscripten; scripts/web.sh --install)"
-command -v node > /dev/null 2>&1 || skip_missing "node is not installed (scripts/install-deps.sh installs nodejs)"
-command -v chromium > /dev/null 2>&1 || skip_missing "chromium is not installed (apt-get install chromium)"
-[ -d "$root/web/test/node_modules/puppeteer-core" ] ||
-  skip_missing "npm package puppeteer-core is missing in web/test: run scripts/install-node-packages.sh"
+needs emcc node chromium puppeteer
 fail() { echo "FAIL: $*"; exit 1; }
 rm -rf "$work" && mkdir -p "$work"
 "$root/scripts/web.sh" dist "$modules/simd" "$modules/scalar" "$work/dist" || fail "the page could not be assembled"

@@ -8,10 +8,10 @@ set -uo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 . "$here/../skip.sh"
+. "$here/needs.sh"
 variant=$1 f2=$2 modules=$3 work=$4
+needs emcc node
 shift 4
-command -v emcc > /dev/null 2>&1 || skip_missing "emcc is not installed (apt-get install emscripten; scripts/web.sh --install)"
-command -v node > /dev/null 2>&1 || skip_missing "node is not installed (scripts/install-deps.sh installs nodejs)"
 fail() { echo "FAIL: $*"; exit 1; }
 module=$modules/$variant/f2.js
 [ "$variant" = simd ] && module=$modules/simd/f2-simd.js
