@@ -105,6 +105,11 @@ struct CommandSpec {
     int cameraArgument() const;
 };
 
+/// Whether the command makes a shape in a `/model` block (SPEC 10.1): /sphere, /cylinder, /box.
+constexpr bool createsModelShape(CommandId id) {
+    return id == CommandId::Sphere || id == CommandId::Cylinder || id == CommandId::Box;
+}
+
 /// Every command of the language, in CommandId order.
 std::span<const CommandSpec> commands();
 const CommandSpec& command(CommandId id);
