@@ -13,7 +13,7 @@ root=$(cd "$here/../.." && pwd)
 . "$here/../skip.sh"
 . "$here/needs.sh"
 f2=$1 modules=$2 work=$3
-needs emcc node chromium puppeteer
+needs emcc node chromium puppeteer esbuild
 fail() { echo "FAIL: $*"; exit 1; }
 rm -rf "$work" && mkdir -p "$work"
 "$root/scripts/web.sh" dist "$modules/simd" "$modules/scalar" "$work/dist" || fail "the page could not be assembled"
