@@ -7,7 +7,7 @@
 import {autocompletion} from '@codemirror/autocomplete';
 import {defaultKeymap, history, historyKeymap, indentWithTab} from '@codemirror/commands';
 import {HighlightStyle, StreamLanguage, syntaxHighlighting} from '@codemirror/language';
-import {lintGutter, setDiagnostics} from '@codemirror/lint';
+import {forEachDiagnostic, lintGutter, setDiagnostics} from '@codemirror/lint';
 import {EditorState} from '@codemirror/state';
 import {EditorView, hoverTooltip, keymap, lineNumbers, highlightActiveLine} from '@codemirror/view';
 import {tags} from '@lezer/highlight';
@@ -171,12 +171,15 @@ function create(parent, {text, lists, lsp, onChange}) {
   const ask = (doc, method, params) => lsp('open', {text: doc.toString()}).then(() => lsp(method, params));
 
   async function complete(context) {
-    const word = context.matchBefore(/[\/A-Za-z0-9_.]*/);
-    if (!context.explicit && (!word || word.from === word.to)) return null;
+    // Typing opens the list on a command or a name, not on a number.
+    const word = context.matchBefore(/[\/A-Za-z_][\/A-Za-z0-9_.]*/);
+    if (!context.explicit && !word) return null;
     const items = await ask(context.state.doc, 'textDocument/completion',
                             {position: position(context.state.doc, context.pos)});
     if (!Array.isArray(items) || !items.length) return null;
-    const from = word ? word.from : context.pos;
+    // The server's edit range says where the word it completes begins (after a '.' in name.part).
+    const edit = items[0].textEdit;
+    const from = edit && edit.range ? offset(context.state.doc, edit.range.start) : word ? word.from : context.pos;
     return {
       from,
       options: items.map((item) => {
@@ -244,9 +247,21 @@ function create(parent, {text, lists, lsp, onChange}) {
         return {from, to, severity: d.severity, message: `${d.line}:${d.column}: ${d.message}`};
       });
       view.dispatch(setDiagnostics(view.state, marks));
-      return marks;
+    },
+    /// The squiggles the editor holds: 1-based line, [column, endColumn) in
+    /// UTF-16 units (as the language server's 0-based characters + 1), message.
+    squiggles() {
+      const doc = view.state.doc;
+      const out = [];
+      forEachDiagnostic(view.state, (d, from, to) => {
+        const line = doc.lineAt(from);
+        out.push({line: line.number, column: from - line.from + 1, endLine: doc.lineAt(to).number,
+                  endColumn: to - doc.lineAt(to).from + 1, severity: d.severity, message: d.message});
+      });
+      return out;
     },
   };
 }
 
-window.F2Editor = {create};
+// scrollTo: an effect that scrolls a position into view (the page test hovers there).
+window.F2Editor = {create, scrollTo: (pos) => EditorView.scrollIntoView(pos, {y: 'center'})};

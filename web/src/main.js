@@ -113,7 +113,7 @@ function setScene(text) {
 }
 
 function showDiagnostics(result) {
-  state.marks = editor.setDiagnostics(result.diagnostics);
+  editor.setDiagnostics(result.diagnostics);
   diagnosticsList.replaceChildren();
   for (const d of result.diagnostics) {
     const item = document.createElement('li');
@@ -180,6 +180,8 @@ function onBand(m) {
     context.drawImage(preview, 0, 0, canvas.width, canvas.height);
   }
   if (recorder) recorder.frameShown();
+  // For tests and tools: a picture is on the canvas (its lastRender follows).
+  const shown = {frame: band.frame, scale: band.scale, antialias: band.antialias, view: band.view};
   const now = performance.now();
   const ms = now - band.start;
   state.lastRender = {frame: band.frame, scale: band.scale, antialias: band.antialias, width: band.width,
@@ -205,6 +207,7 @@ function onBand(m) {
     }
   }
   state.busy = false;
+  window.dispatchEvent(new CustomEvent('f2picture', {detail: shown}));
   if (pending.length) {
     startNext();
   } else if (state.playing) {
@@ -227,9 +230,11 @@ function showFrame() {
 
 async function sceneChanged() {
   const start = performance.now();
-  const {id, result} = await setScene(editor.text());
+  const text = editor.text();
+  const {id, result} = await setScene(text);
   if (id !== state.sceneId) return;  // a newer text is on its way
   state.lastSceneMs = performance.now() - start;
+  state.lastSceneText = text;
   showDiagnostics(result);
   state.lastDiagnostics = result.diagnostics;
   // With errors the workers keep the last good scene, and so does the picture.
@@ -396,6 +401,7 @@ async function start() {
                                            lsp('f2/languageLists', {}), startWorkers()]);
   state.languageLists = lists;
   editor = window.F2Editor.create(document.getElementById('editor'), {text, lists, lsp, onChange: textEdited});
+  state.editor = editor;
   await sceneChanged();
 }
 start().catch((error) => {
