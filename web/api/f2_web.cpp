@@ -12,6 +12,7 @@
 
 #include "core/parse/parser.h"
 #include "core/render/camera.h"
+#include "core/render/captions.h"
 #include "core/render/renderer.h"
 #include "core/scene/default_scene.h"
 #include "core/scene/drive.h"
@@ -23,7 +24,10 @@ constexpr std::string_view kSceneName = "scene.f2";
 
 struct Module {
     std::optional<f2::SceneDesc> scene;  ///< the last scene without errors
-    f2::Renderer renderer{1};            ///< no threads: the page runs one module per worker
+    /// The frame time the renderer last evaluated and built for this scene:
+    /// the page renders a frame in many pieces (bands, previews, anti-aliasing).
+    std::optional<double> preparedFrame;
+    f2::Renderer renderer{1};  ///< no threads: the page runs one module per worker
     f2::Image image;
     std::vector<std::uint8_t> rgba;
     std::string text;  ///< returned strings live here until the next call
@@ -106,7 +110,10 @@ const char* f2_set_scene(const char* text) {
         }
     }
     const bool ok = result.scene.has_value();
-    if (ok) m.scene = std::move(result.scene);
+    if (ok) {
+        m.scene = std::move(result.scene);
+        m.preparedFrame.reset();
+    }
     std::string& out = m.text;
     out = "{\"ok\":";
     out += ok ? "true" : "false";
@@ -162,7 +169,14 @@ const std::uint8_t* f2_render(double frame, int width, int height, int y0, int y
         orbit.zoom(float(zoom));
         camera = orbit.apply(camera);
     }
-    m.renderer.render(*m.scene, frame, camera, m.image, options);
+    if (m.preparedFrame == frame) {
+        // The frame is evaluated and its BVH built: render()'s last steps only.
+        m.renderer.trace(m.renderer.frame(), camera, m.image, options);
+        f2::drawCaptions(m.image, m.scene->captions, frame);
+    } else {
+        m.renderer.render(*m.scene, frame, camera, m.image, options);
+        m.preparedFrame = frame;
+    }
     m.rgba.resize(std::size_t(y1 - y0) * std::size_t(width) * 4);
     std::uint8_t* p = m.rgba.data();
     for (int y = y0; y < y1; ++y) {

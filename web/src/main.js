@@ -10,14 +10,16 @@ const kSimdProbe = new Uint8Array([0, 97, 115, 109, 1, 0, 0, 0, 1, 5, 1, 96, 0, 
 const params = new URLSearchParams(location.search);
 const useSimd = !params.has('nosimd') && WebAssembly.validate(kSimdProbe);
 const workerCount = Math.max(1, Math.min(Number(params.get('workers')) || navigator.hardwareConcurrency || 2, 8));
-const kDebounceMs = 150;
 // The paused picture's samples per pixel: N x N, as `f2 render --aa N`.
 const kPausedAntialias = Math.max(1, Math.min(Number(params.get('aa')) || 3, 16));
 const embed = params.has('embed');
+// ?size=WxH: the picture's size (default 640x480).
+const size = /^(\d+)x(\d+)$/.exec(params.get('size') || '');
 if (embed) document.body.classList.add('embed');
 
 let editor = null;  // the CodeMirror editor (editor.js), made once the module's word lists are in
 const canvas = document.getElementById('picture');
+if (size) [canvas.width, canvas.height] = [Math.min(Number(size[1]), 4096), Math.min(Number(size[2]), 4096)];
 const context = canvas.getContext('2d');
 const frameSlider = document.getElementById('frame');
 const frameText = document.getElementById('frameText');
@@ -106,6 +108,12 @@ function onWorkerMessage(m) {
 /// Every worker reads the text; resolves with its diagnostics when all have.
 function setScene(text) {
   const id = ++state.sceneId;
+  // Chunks handed out after the text would be of the new scene: the picture
+  // in flight starts again (of the last good scene, if this one has errors).
+  if (state.busy && !band.cancelled) {
+    band.cancelled = true;
+    pending.unshift({scale: band.scale, antialias: band.antialias});
+  }
   return new Promise((resolve) => {
     sceneReplies.set(id, {left: state.workers.length, resolve});
     for (const worker of state.workers) worker.postMessage({type: 'scene', id, text});
@@ -128,7 +136,7 @@ function showDiagnostics(result) {
 const kPreviewScale = 4;
 const preview = document.createElement('canvas');
 
-let band = null;     // the render in flight: its image and how many bands are left
+let band = null;     // the picture in flight: its image, its chunks of rows, how many are out
 let pending = [];    // the pictures still to render for the current scene and frame: {scale, antialias}
 function render() {
   if (!state.sceneOk) return;
@@ -137,9 +145,15 @@ function render() {
                           : [{scale: kPreviewScale, antialias: 1}, {scale: 1, antialias: 1}];
   if (!state.playing && kPausedAntialias > 1) pending.push({scale: 1, antialias: kPausedAntialias});
   if (dragging) pending = [{scale: kPreviewScale, antialias: 1}];
-  if (!state.busy) startNext();
+  // A picture in flight is dropped: its chunks not yet handed out never are.
+  if (state.busy) band.cancelled = true;
+  else startNext();
 }
 
+// The workers take chunks of rows one at a time, the next as each returns:
+// a busy core (the machine's other work) gets fewer, and a new picture waits
+// for one chunk per worker at most, not for a whole anti-aliased frame.
+const kChunkRows = 32;  // one row of the renderer's tiles (kTileSize)
 function startNext() {
   const next = pending.shift();
   if (next === undefined) {
@@ -150,26 +164,35 @@ function startNext() {
   const {scale, antialias} = next;
   const width = Math.ceil(canvas.width / scale), height = Math.ceil(canvas.height / scale);
   const job = ++state.job;
-  // Bands of whole 32-row tiles, one per worker.
-  const rowsPerBand = Math.ceil(height / state.workers.length / 32) * 32;
   const view = {...state.view};
-  band = {job, frame: state.frame, scale, antialias, width, height, left: 0, start: performance.now(),
-          image: new ImageData(width, height), view, bandMs: []};
-  state.workers.forEach((worker, i) => {
-    const y0 = i * rowsPerBand, y1 = Math.min(height, y0 + rowsPerBand);
-    if (y0 >= y1) return;
-    ++band.left;
-    worker.postMessage({type: 'render', job, frame: state.frame, width, height, y0, y1,
-                        view: {antialias, ...view}});
-  });
+  band = {job, frame: state.frame, scale, antialias, width, height, start: performance.now(),
+          image: new ImageData(width, height), view, bandMs: [], nextRow: 0, out: 0, cancelled: false};
+  state.workers.forEach((worker, i) => sendChunk(i));
+}
+
+function sendChunk(worker) {
+  if (band.cancelled || band.nextRow >= band.height) return;
+  const y0 = band.nextRow, y1 = Math.min(band.height, y0 + kChunkRows);
+  band.nextRow = y1;
+  ++band.out;
+  state.workers[worker].postMessage({type: 'render', job: band.job, worker, frame: band.frame, width: band.width,
+                                     height: band.height, y0, y1, view: {antialias: band.antialias, ...band.view}});
 }
 
 const playTimes = [];  // when each frame played showed, for the frame rate of the last second
 function onBand(m) {
   if (!band || m.job !== band.job) return;
+  --band.out;
+  if (band.cancelled) {
+    if (band.out > 0) return;
+    state.busy = false;
+    startNext();
+    return;
+  }
   if (m.pixels) band.image.data.set(m.pixels, m.y0 * band.width * 4);
   band.bandMs.push(m.ms);
-  if (--band.left > 0) return;
+  sendChunk(m.worker);
+  if (band.out > 0) return;
   if (band.scale === 1) {
     context.putImageData(band.image, 0, 0);
   } else {
@@ -250,12 +273,22 @@ async function sceneChanged() {
   render();
 }
 
-// Typing waits kDebounceMs for the next key, then renders the text.
-let debounce = 0;
+// Each edit goes to the workers at once unless one is on its way; then the
+// newest text follows when that one is answered (no fixed pause for typing).
+let sceneInFlight = false, sceneAgain = false;
+async function runScene() {
+  sceneInFlight = true;
+  await sceneChanged();
+  sceneInFlight = false;
+  if (sceneAgain) {
+    sceneAgain = false;
+    runScene();
+  }
+}
 function textEdited() {
-  clearTimeout(debounce);
   state.editedAt = performance.now();
-  debounce = setTimeout(sceneChanged, kDebounceMs);
+  if (sceneInFlight) sceneAgain = true;
+  else runScene();
 }
 frameSlider.addEventListener('input', () => {
   state.frame = Number(frameSlider.value);
@@ -386,10 +419,7 @@ examples.addEventListener('change', async () => {
   const text = await (await fetch(`examples/${examples.value}`)).text();
   examples.value = '';
   state.frame = 0;
-  clearTimeout(debounce);
-  editor.setText(text);
-  clearTimeout(debounce);
-  await sceneChanged();
+  editor.setText(text);  // textEdited renders it
 });
 
 async function start() {
@@ -402,7 +432,7 @@ async function start() {
   state.languageLists = lists;
   editor = window.F2Editor.create(document.getElementById('editor'), {text, lists, lsp, onChange: textEdited});
   state.editor = editor;
-  await sceneChanged();
+  await runScene();
 }
 start().catch((error) => {
   statusText.textContent = `failed to start: ${error}`;

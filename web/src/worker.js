@@ -17,7 +17,7 @@ function handle(message) {
     const pixels = f2.render(m.frame, m.width, m.height, m.y0, m.y1, m.view);
     const ms = performance.now() - start;
     const buffer = pixels ? pixels.buffer : null;
-    postMessage({type: 'band', job: m.job, y0: m.y0, y1: m.y1, pixels, ms}, buffer ? [buffer] : []);
+    postMessage({type: 'band', job: m.job, worker: m.worker, y0: m.y0, y1: m.y1, pixels, ms}, buffer ? [buffer] : []);
   }
 }
 
