@@ -150,9 +150,9 @@ function render() {
   else startNext();
 }
 
-// The workers take chunks of rows one at a time, the next as each returns:
-// a busy core (the machine's other work) gets fewer, and a new picture waits
-// for one chunk per worker at most, not for a whole anti-aliased frame.
+// The workers take chunks of rows, the next as each returns: a busy core (the
+// machine's other work) gets fewer, and a new picture waits for the chunks
+// already handed out, not for a whole anti-aliased frame.
 const kChunkRows = 32;  // one row of the renderer's tiles (kTileSize)
 function startNext() {
   const next = pending.shift();
@@ -167,7 +167,10 @@ function startNext() {
   const view = {...state.view};
   band = {job, frame: state.frame, scale, antialias, width, height, start: performance.now(),
           image: new ImageData(width, height), view, bandMs: [], nextRow: 0, out: 0, cancelled: false};
-  state.workers.forEach((worker, i) => sendChunk(i));
+  // Two chunks a worker, so it starts the next while the page takes the last;
+  // one while anti-aliasing, whose chunks are long: an edit waits for one.
+  const queued = antialias > 1 ? 1 : 2;
+  for (let k = 0; k < queued; ++k) state.workers.forEach((worker, i) => sendChunk(i));
 }
 
 function sendChunk(worker) {
