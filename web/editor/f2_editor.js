@@ -107,7 +107,7 @@ const theme = EditorView.theme({
   '.cm-activeLine': {backgroundColor: '#ffffff0a'},
   '&.cm-focused .cm-cursor': {borderLeftColor: '#fff'},
   '.cm-tooltip': {backgroundColor: '#252526', color: '#ddd', border: '1px solid #454545', maxWidth: '36em'},
-  '.cm-tooltip.cm-f2-hover': {padding: '4px 8px', whiteSpace: 'pre-wrap'},
+  '.cm-f2-hover': {padding: '4px 8px', whiteSpace: 'pre-wrap'},
   '.cm-f2-hover code, .cm-completionInfo code': {fontFamily: 'ui-monospace, monospace', color: '#9cdcfe'},
   '.cm-completionInfo': {whiteSpace: 'pre-wrap', maxWidth: '36em'},
 }, {dark: true});
