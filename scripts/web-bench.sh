@@ -49,7 +49,8 @@ const f = (x) => x.toFixed(1);
 console.log(`medians of ${runs} runs (${page[0].build}, ${page[0].width}x${page[0].height}, ${page[0].frames} frames):`);
 console.log(`  native f2 bench --threads 2: ${f(m(native, 'fps'))} frames/s, ${f(m(native, 'ms_median'))} ms a frame ` +
             `(evaluate ${f(m(native, 'ms_eval'))}, build ${f(m(native, 'ms_build'))}, trace ${f(m(native, 'ms_trace'))})`);
-console.log(`  page, 2 workers:             ${f(m(page, 'fps'))} frames/s, ${f(m(page, 'msMedian'))} ms a frame ` +
+console.log(`  page, 2 workers:             ${f(m(page, 'fps'))} frames/s (${f(m(page, 'fpsMean'))} over the run), ` +
+            `${f(m(page, 'msMedian'))} ms a frame ` +
             `(each worker computes ${f(m(page, 'workerMs'))}, the rest ${f(m(page, 'overheadMs'))}; ${page[0].chunks} chunks)`);
 console.log(`  page / native: ${median(ratios).toFixed(2)} (per run: ${ratios.map((r) => r.toFixed(2)).join(' ')})`);
 console.log(`  keystroke to quarter-resolution picture: ${f(m(page, 'latencyMs'))} ms idle, ` +

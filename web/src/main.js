@@ -35,7 +35,6 @@ const state = {
   frame: Number(params.get('frame')) || 0,
   playing: false,
   job: 0,            // the last render started
-  busy: false,
   renders: 0,        // finished renders, previews included
   fullRenders: 0,    // finished full-resolution renders (tests wait on them)
   lastRender: null,  // {frame, scale, antialias, width, height, ms, view}
@@ -109,15 +108,18 @@ function onWorkerMessage(m) {
 function setScene(text) {
   const id = ++state.sceneId;
   // Chunks handed out after the text would be of the new scene: the picture
-  // in flight starts again (of the last good scene, if this one has errors).
-  if (state.busy && !band.cancelled) {
-    band.cancelled = true;
-    pending.unshift({scale: band.scale, antialias: band.antialias});
-  }
-  return new Promise((resolve) => {
+  // in flight starts again after it (of the last good scene, if this one has errors).
+  const live = liveBands();
+  for (const b of live) b.cancelled = true;
+  const reply = new Promise((resolve) => {
     sceneReplies.set(id, {left: state.workers.length, resolve});
     for (const worker of state.workers) worker.postMessage({type: 'scene', id, text});
   }).then((result) => ({id, result}));
+  if (live.length) {
+    pending.unshift({scale: live[0].scale, antialias: live[0].antialias});
+    startNext();
+  }
+  return reply;
 }
 
 function showDiagnostics(result) {
@@ -136,8 +138,9 @@ function showDiagnostics(result) {
 const kPreviewScale = 4;
 const preview = document.createElement('canvas');
 
-let band = null;     // the picture in flight: its image, its chunks of rows, how many are out
+let bands = [];      // the pictures in flight, oldest first: their images, rows handed out, chunks out
 let pending = [];    // the pictures still to render for the current scene and frame: {scale, antialias}
+const liveBands = () => bands.filter((b) => !b.cancelled);
 function render() {
   if (!state.sceneOk) return;
   state.settled = false;
@@ -145,57 +148,99 @@ function render() {
                           : [{scale: kPreviewScale, antialias: 1}, {scale: 1, antialias: 1}];
   if (!state.playing && kPausedAntialias > 1) pending.push({scale: 1, antialias: kPausedAntialias});
   if (dragging) pending = [{scale: kPreviewScale, antialias: 1}];
-  // A picture in flight is dropped: its chunks not yet handed out never are.
-  if (state.busy) band.cancelled = true;
-  else startNext();
+  // The pictures in flight are dropped: their chunks not yet handed out never are.
+  for (const b of bands) b.cancelled = true;
+  startNext();
 }
 
 // The workers take chunks of rows, the next as each returns: a busy core (the
 // machine's other work) gets fewer, and a new picture waits for the chunks
-// already handed out, not for a whole anti-aliased frame.
+// already handed out, not for a whole anti-aliased frame. Two chunks a
+// worker, so it starts the next while the page takes the last; one while
+// anti-aliasing, whose chunks are long. While playing, the next frame's
+// chunks follow the last of this frame's, so no worker waits for the page
+// to show a frame.
 const kChunkRows = 32;  // one row of the renderer's tiles (kTileSize)
+let held = [];          // chunks each worker holds
 function startNext() {
   const next = pending.shift();
   if (next === undefined) {
-    state.settled = true;
+    if (!liveBands().length) state.settled = true;
     return;
   }
-  state.busy = true;
-  const {scale, antialias} = next;
-  const width = Math.ceil(canvas.width / scale), height = Math.ceil(canvas.height / scale);
-  const job = ++state.job;
-  const view = {...state.view};
-  band = {job, frame: state.frame, scale, antialias, width, height, start: performance.now(),
-          image: new ImageData(width, height), view, bandMs: [], nextRow: 0, out: 0, cancelled: false};
-  // Two chunks a worker, so it starts the next while the page takes the last;
-  // one while anti-aliasing, whose chunks are long: an edit waits for one.
-  const queued = antialias > 1 ? 1 : 2;
-  for (let k = 0; k < queued; ++k) state.workers.forEach((worker, i) => sendChunk(i));
+  addBand(next, state.frame);
+  handOut();
 }
 
-function sendChunk(worker) {
-  if (band.cancelled || band.nextRow >= band.height) return;
-  const y0 = band.nextRow, y1 = Math.min(band.height, y0 + kChunkRows);
-  band.nextRow = y1;
-  ++band.out;
-  state.workers[worker].postMessage({type: 'render', job: band.job, worker, frame: band.frame, width: band.width,
-                                     height: band.height, y0, y1, view: {antialias: band.antialias, ...band.view}});
+function addBand({scale, antialias}, frame) {
+  const width = Math.ceil(canvas.width / scale), height = Math.ceil(canvas.height / scale);
+  const band = {job: ++state.job, frame, scale, antialias, width, height, start: performance.now(),
+                image: new ImageData(width, height), view: {...state.view}, bandMs: [], nextRow: 0, out: 0,
+                cancelled: false};
+  bands.push(band);
+  return band;
+}
+
+/// The picture the next chunk comes from: the oldest with rows left, or,
+/// while playing, the next frame once the last one's rows are all handed out.
+function nextBand() {
+  const live = liveBands();
+  const open = live.find((b) => b.nextRow < b.height);
+  if (open || !state.playing || live.length !== 1 || live[0].scale !== 1) return open;
+  const last = live[0];
+  if (recorder && last.frame >= state.lastFrame) return undefined;  // the recording ends there
+  return addBand({scale: 1, antialias: 1}, last.frame >= state.lastFrame ? 0 : last.frame + 1);
+}
+
+function handOut() {
+  if (held.length !== state.workers.length) held = state.workers.map(() => 0);
+  for (let k = 0; k < 2; ++k) {
+    state.workers.forEach((worker, i) => {
+      const band = nextBand();
+      if (!band || held[i] >= (band.antialias > 1 ? 1 : 2)) return;
+      const y0 = band.nextRow, y1 = Math.min(band.height, y0 + kChunkRows);
+      band.nextRow = y1;
+      ++band.out;
+      ++held[i];
+      worker.postMessage({type: 'render', job: band.job, worker: i, frame: band.frame, width: band.width,
+                          height: band.height, y0, y1, view: {antialias: band.antialias, ...band.view}});
+    });
+  }
 }
 
 const playTimes = [];  // when each frame played showed, for the frame rate of the last second
 function onBand(m) {
-  if (!band || m.job !== band.job) return;
-  --band.out;
-  if (band.cancelled) {
-    if (band.out > 0) return;
-    state.busy = false;
-    startNext();
-    return;
+  --held[m.worker];
+  const band = bands.find((b) => b.job === m.job);
+  if (band) {
+    --band.out;
+    if (!band.cancelled && m.pixels) band.image.data.set(m.pixels, m.y0 * band.width * 4);
+    band.bandMs.push(m.ms);
   }
-  if (m.pixels) band.image.data.set(m.pixels, m.y0 * band.width * 4);
-  band.bandMs.push(m.ms);
-  sendChunk(m.worker);
-  if (band.out > 0) return;
+  // Finished pictures go on the canvas in the order they were asked for.
+  while (bands.length && bands[0].out === 0 && (bands[0].cancelled || bands[0].nextRow >= bands[0].height)) {
+    const done = bands.shift();
+    if (!done.cancelled) show(done);
+  }
+  if (!liveBands().length) {
+    if (recorder && state.playing && state.frame >= state.lastFrame) {
+      recorder.finish();
+      return;
+    }
+    if (pending.length) {
+      startNext();
+    } else if (state.playing) {
+      state.frame = state.frame >= state.lastFrame ? 0 : state.frame + 1;
+      showFrame();
+      render();
+    } else {
+      state.settled = true;
+    }
+  }
+  handOut();
+}
+
+function show(band) {
   if (band.scale === 1) {
     context.putImageData(band.image, 0, 0);
   } else {
@@ -206,8 +251,10 @@ function onBand(m) {
     context.drawImage(preview, 0, 0, canvas.width, canvas.height);
   }
   if (recorder) recorder.frameShown();
-  // For tests and tools: a picture is on the canvas (its lastRender follows).
-  const shown = {frame: band.frame, scale: band.scale, antialias: band.antialias, view: band.view};
+  if (state.playing && band.frame !== state.frame) {
+    state.frame = band.frame;
+    showFrame();
+  }
   const now = performance.now();
   const ms = now - band.start;
   state.lastRender = {frame: band.frame, scale: band.scale, antialias: band.antialias, width: band.width,
@@ -219,8 +266,7 @@ function onBand(m) {
       state.lastEditMs = now - state.editedAt;
       state.editedAt = 0;
     }
-  }
-  if (band.scale === 1) {
+  } else {
     ++state.fullRenders;
     if (state.playing) {
       playTimes.push(now);
@@ -232,21 +278,10 @@ function onBand(m) {
                                                   : `${ms.toFixed(0)} ms`;
     }
   }
-  state.busy = false;
-  window.dispatchEvent(new CustomEvent('f2picture', {detail: shown}));
-  if (pending.length) {
-    startNext();
-  } else if (state.playing) {
-    if (recorder && state.frame >= state.lastFrame) {
-      recorder.finish();
-      return;
-    }
-    state.frame = state.frame >= state.lastFrame ? 0 : state.frame + 1;
-    showFrame();
-    render();
-  } else {
-    state.settled = true;
-  }
+  // For tests and tools: a picture is on the canvas (state.lastRender says which).
+  window.dispatchEvent(new CustomEvent('f2picture',
+                                       {detail: {frame: band.frame, scale: band.scale, antialias: band.antialias,
+                                                 view: band.view}}));
 }
 
 function showFrame() {
