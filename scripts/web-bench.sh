@@ -5,7 +5,9 @@
 # chromium at 800x600 with 2 workers (web/test/bench_page.js) playing the
 # same frames; then keystroke-to-picture latencies. Prints each run and the
 # medians. Needs the native build (build/release), the page (scripts/web.sh
-# builds it), chromium and web/test's npm packages.
+# builds it), chromium and web/test's npm packages. Where the time goes: each
+# run also times one thread, `f2 bench --threads 1` against the wasm SIMD
+# module alone in node (web/test/bench_module.js), whole frames and chunks.
 #
 # Usage: scripts/web-bench.sh [RUNS] [FRAMES]
 set -euo pipefail
@@ -33,8 +35,13 @@ echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
 for run in $(seq "$runs"); do
   "$f2" bench --threads 2 --size 800x600 --frame 0 --step 1 --frames "$frames" --json > "$work/native$run.json"
   node "$root/web/test/bench_page.js" "http://127.0.0.1:$port/?size=800x600&workers=2" "$frames" 7 > "$work/page$run.json"
+  # Where the time goes: one thread, native against the wasm SIMD module in node.
+  "$f2" bench --threads 1 --size 800x600 --frame 0 --step 1 --frames "$frames" --json > "$work/native1_$run.json"
+  node --no-experimental-fetch "$root/web/test/bench_module.js" "$root/web/dist/f2-simd.js" "$frames" > "$work/module$run.json"
   echo "run $run: native $(cat "$work/native$run.json")"
   echo "run $run: page   $(cat "$work/page$run.json")"
+  echo "run $run: native, 1 thread $(cat "$work/native1_$run.json")"
+  echo "run $run: module in node, 1 thread $(cat "$work/module$run.json")"
 done
 echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
 node - "$work" "$runs" << 'JS'
@@ -42,7 +49,7 @@ const fs = require('fs');
 const [dir, runs] = process.argv.slice(2);
 const read = (name) => Array.from({length: Number(runs)}, (_, i) => JSON.parse(fs.readFileSync(`${dir}/${name}${i + 1}.json`)));
 const median = (values) => [...values].sort((a, b) => a - b)[Math.floor((values.length - 1) / 2)];
-const native = read('native'), page = read('page');
+const native = read('native'), page = read('page'), native1 = read('native1_'), module = read('module');
 const m = (list, key) => median(list.map((r) => r[key]));
 const ratios = page.map((p, i) => p.fps / native[i].fps);
 const f = (x) => x.toFixed(1);
@@ -55,5 +62,8 @@ console.log(`  page, 2 workers:             ${f(m(page, 'fps'))} frames/s (${f(m
 console.log(`  page / native: ${median(ratios).toFixed(2)} (per run: ${ratios.map((r) => r.toFixed(2)).join(' ')})`);
 console.log(`  keystroke to quarter-resolution picture: ${f(m(page, 'latencyMs'))} ms idle, ` +
             `${f(m(page, 'latencyDuringAaMs'))} ms while the anti-aliased picture renders`);
+console.log(`  one thread: native ${f(m(native1, 'ms_median'))} ms a frame (CPU ${f(m(native1, 'cpu_ms'))}), ` +
+            `the wasm SIMD module in node ${f(m(module, 'wholeMs'))} ms in one call, ${f(m(module, 'chunkedMs'))} ms ` +
+            `in 32-row chunks; native 2 threads: CPU ${f(m(native, 'cpu_ms'))} ms a frame`);
 console.log(`  keystroke to full picture: ${f(m(page, 'latencyFullMs'))} ms idle, ${f(m(page, 'latencyDuringAaFullMs'))} ms`);
 JS
