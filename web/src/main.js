@@ -1,6 +1,6 @@
-// The playground page: the scene text, its diagnostics, and the picture
-// rendered by several workers, each with its own module instance and its own
-// band of rows (no SharedArrayBuffer, so any static host serves it).
+// The playground page: the editor (editor.js), the diagnostics, and the
+// picture rendered by several workers, each with its own module instance,
+// taking chunks of rows (no SharedArrayBuffer, so any static host serves it).
 'use strict';
 
 // A module using one wasm SIMD instruction (i8x16.splat etc.): it validates
