@@ -33,18 +33,27 @@ Json languageLists() {
     return lists;
 }
 
+/// params.position, {0, 0} where it is missing or not numbers (the module
+/// has no exceptions to catch: nlohmann-json's type errors must not happen).
 f2::lsp::Position positionOf(const Json& params) {
-    const Json& p = params.value("position", Json::object());
-    return {p.value("line", 0), p.value("character", 0)};
+    const auto position = params.find("position");
+    if (position == params.end() || !position->is_object()) return {};
+    auto number = [&](const char* key) {
+        const auto it = position->find(key);
+        return it != position->end() && it->is_number_integer() ? it->get<int>() : 0;
+    };
+    return {number("line"), number("character")};
 }
 
 Json answer(std::string_view method, const Json& params) {
     LanguageModule& m = languageModule();
     if (method == "f2/languageLists") return languageLists();
     if (method == "open") {
+        const auto text = params.find("text");
+        if (text == params.end() || !text->is_string()) return {{"error", "open: no text"}};
         // The editor's text as an unsaved document: includes resolve against nothing.
         m.analysis =
-            f2::lsp::analyze("untitled:scene.f2", f2::lsp::TextDocument(params.value("text", ""), 0));
+            f2::lsp::analyze("untitled:scene.f2", f2::lsp::TextDocument(text->get<std::string>(), 0));
         return nullptr;
     }
     if (!m.analysis) return {{"error", "no document: call open first"}};
@@ -64,8 +73,8 @@ extern "C" {
 const char* f2_lsp(const char* method, const char* params) {
     const Json parsed = Json::parse(params, nullptr, false);  // no exceptions: a bad text is discarded
     LanguageModule& m = languageModule();
-    m.text = parsed.is_discarded() ? R"({"error":"params are not JSON"})"
-                                   : f2::lsp::dumpJson(answer(method, parsed));
+    m.text = parsed.is_object() ? f2::lsp::dumpJson(answer(method, parsed))
+                                : R"({"error":"params are not a JSON object"})";
     return m.text.c_str();
 }
 
