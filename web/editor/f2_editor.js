@@ -174,9 +174,12 @@ function create(parent, {text, lists, lsp, onChange}) {
     // Typing opens the list on a command or a name, not on a number.
     const word = context.matchBefore(/[\/A-Za-z_][\/A-Za-z0-9_.]*/);
     if (!context.explicit && !word) return null;
-    const items = await ask(context.state.doc, 'textDocument/completion',
+    let items = await ask(context.state.doc, 'textDocument/completion',
                             {position: position(context.state.doc, context.pos)});
-    if (!Array.isArray(items) || !items.length) return null;
+    // Files (after /include) would be the module's empty virtual file system: the page has one text.
+    const kFile = 17;
+    items = Array.isArray(items) ? items.filter((item) => item.kind !== kFile) : [];
+    if (!items.length) return null;
     // The server's edit range says where the word it completes begins (after a '.' in name.part).
     const edit = items[0].textEdit;
     const from = edit && edit.range ? offset(context.state.doc, edit.range.start) : word ? word.from : context.pos;

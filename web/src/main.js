@@ -386,6 +386,10 @@ document.getElementById('png').addEventListener('click', () => {
 let recorder = null;
 document.getElementById('webm').addEventListener('click', () => {
   if (recorder || !state.sceneOk) return;
+  if (typeof MediaRecorder === 'undefined' || !MediaRecorder.isTypeSupported('video/webm')) {
+    statusText.textContent = 'this browser cannot record WebM';
+    return;
+  }
   const stream = canvas.captureStream(0);
   const track = stream.getVideoTracks()[0];
   const media = new MediaRecorder(stream, {mimeType: 'video/webm'});
