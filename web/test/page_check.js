@@ -10,7 +10,8 @@
 //    also after a non-ASCII character), and the picture stays; fixing the
 //    text renders a quarter-resolution picture, then the full one again;
 //  - completion after `/` offers the language server's items (the commands),
-//    and hovering a command shows its hover text;
+//    hovering a command shows its hover text, and the highlighting colours
+//    each command by its group from the module's word lists;
 //  - the frame slider at 120 shows `f2 render --frame 120`'s bytes; dragging
 //    turns the view and "Scene camera" brings the same bytes back;
 //  - the PNG download decodes to the canvas's pixels; the WebM download is a
@@ -193,6 +194,32 @@ async function main() {
     const lists = await page.evaluate(() => window.f2Page.languageLists.commands);
     check(lists.every((c) => offered.includes(`/${c}`)), 'completion after / misses commands');
     await page.keyboard.press('Escape');
+    await setText(page, text);
+    await settled(page, 'window.f2Page.lastSceneText === window.f2Page.editor.text()');
+
+    // Highlighting from the module's word lists (the TextMate grammar's):
+    // every command in its group's colour, an unknown one as invalid.
+    const colours = await page.evaluate(async () => {
+      const {editor, languageLists: lists} = window.f2Page;
+      const words = [...lists.commands, 'no_such_command'];
+      editor.setText(words.map((w) => `/${w} x`).join('\n'));
+      await new Promise(requestAnimationFrame);
+      const shown = {};
+      for (const line of document.querySelectorAll('#editor .cm-line')) {
+        const span = line.querySelector('span');
+        if (span) shown[span.textContent] = getComputedStyle(span).color;
+      }
+      const creating = new Set([...lists.creating, ...lists['variable-commands'], ...lists['path-commands']]);
+      return words.map((w) => ({word: w, colour: shown[`/${w}`],
+                                expected: w === 'no_such_command' ? 'rgb(244, 71, 71)'
+                                          : creating.has(w) ? 'rgb(197, 134, 192)' : 'rgb(86, 156, 214)'}));
+    });
+    const shownWords = colours.filter((c) => c.colour);
+    const wrong = shownWords.filter((c) => c.colour !== c.expected);
+    console.log(`${url}: highlighting: ${shownWords.length} of ${colours.length} command lines drawn, ` +
+                `${wrong.length} in another colour than their group's`);
+    check(shownWords.length >= 10 && wrong.length === 0,
+          `highlighting: ${JSON.stringify(wrong.slice(0, 3))} (${shownWords.length} lines drawn)`);
     await setText(page, text);
     await settled(page, 'window.f2Page.lastSceneText === window.f2Page.editor.text()');
 
