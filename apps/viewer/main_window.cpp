@@ -15,10 +15,10 @@
 #include <QVBoxLayout>
 #include <QWindow>
 
+#include "core/render/orbit_camera.h"
 #include "editor_dock.h"
 #include "help_windows.h"
 #include "opening_indicator.h"
-#include "orbit_camera.h"
 #include "playback.h"
 #include "problems_dock.h"
 #include "scene_document.h"

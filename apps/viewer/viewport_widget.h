@@ -9,7 +9,7 @@
 #include <optional>
 
 #include "core/render/camera.h"
-#include "orbit_camera.h"
+#include "core/render/orbit_camera.h"
 
 namespace f2::viewer {
 

@@ -13,10 +13,10 @@
 #include "core/parse/parser.h"
 #include "core/render/camera.h"
 #include "core/render/captions.h"
+#include "core/render/orbit_camera.h"
 #include "core/render/renderer.h"
 #include "core/scene/default_scene.h"
 #include "core/scene/drive.h"
-#include "orbit_camera.h"
 
 namespace {
 
@@ -163,8 +163,8 @@ const std::uint8_t* f2_render(double frame, int width, int height, int y0, int y
     f2::Camera camera = f2::cameraAt(*m.scene, frame).resized(width, height);
     if (yawDeg != 0 || pitchDeg != 0 || zoom != 1) {
         // The same orbit in every worker: the target depends only on the scene and the frame.
-        f2::viewer::OrbitCamera orbit =
-            f2::viewer::OrbitCamera::fromCamera(camera, f2::viewer::orbitTargetDistance(*m.scene, camera));
+        f2::OrbitCamera orbit =
+            f2::OrbitCamera::fromCamera(camera, f2::orbitTargetDistance(*m.scene, camera));
         orbit.orbit(float(yawDeg), float(pitchDeg));
         orbit.zoom(float(zoom));
         camera = orbit.apply(camera);

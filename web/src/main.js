@@ -342,7 +342,7 @@ function setPlaying(playing) {
 playButton.addEventListener('click', () => setPlaying(!state.playing));
 
 // Orbit: dragging on the picture turns the view about the scene (the
-// viewer's look-around, apps/viewer/orbit_camera.h), the wheel moves closer;
+// viewer's look-around, core/render/orbit_camera.h), the wheel moves closer;
 // the scene text keeps its camera. Quarter resolution while dragging.
 let dragging = null;
 const kDegreesPerPixel = 0.4;
