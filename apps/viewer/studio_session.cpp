@@ -1,5 +1,6 @@
 #include "studio_session.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "camera_key_writer.h"
@@ -40,6 +41,10 @@ StudioSession::StudioSession(QObject* parent)
     frameTimer_.setInterval(0);
     connect(&frameTimer_, &QTimer::timeout, this, &StudioSession::requestFrame);
     connect(document_, &SceneDocument::sceneChanged, this, &StudioSession::onSceneChanged);
+    // A written key that does not parse (the text had errors): show the text's last good scene.
+    connect(document_, &SceneDocument::diagnosticsChanged, this, [this] {
+        if (document_->hasErrors() && previewScene_ && !dragging_) cancelPreview();
+    });
     connect(controller_.get(), &RenderController::frameReady, this, &StudioSession::onFrameReady);
     connect(playback_, &Playback::timeChanged, this, &StudioSession::scheduleFrame);
     // Pausing shows the frame again, then refines it.
@@ -51,6 +56,8 @@ StudioSession::StudioSession(QObject* parent)
 StudioSession::~StudioSession() = default;
 
 void StudioSession::onSceneChanged(bool newDocument) {
+    // The text now holds the released key (or changed under a drag: the drag goes on over its copy).
+    if (!dragging_) previewScene_.reset();
     const auto scene = document_->scene();
     playback_->setRange(scene->lastFrame(), scene->fps);
     // A playing frame may take one tick of the clock; another scene's cost is not known yet.
@@ -74,15 +81,17 @@ void StudioSession::scheduleFrame() {
 }
 
 void StudioSession::requestFrame() {
-    auto scene = document_->scene();
+    auto scene = sceneShown();
     if (!scene) return;
     const double time = playback_->time();
     const Camera sceneCamera = cameraAt(*scene, time);
     RenderOptions options;
     options.view = viewMode_;
     const std::optional<BoundsOf> outlined = selectionIn(*scene);
-    lastRequest_ = {std::move(scene), time, viewCamera_ ? viewCamera_(sceneCamera) : sceneCamera, options,
-                    outlined};
+    Camera camera = viewCamera_ ? viewCamera_(sceneCamera) : sceneCamera;
+    // A drag's frames come at a quarter of the size (the same view), to keep up with the mouse.
+    if (dragging_) camera = camera.resized(std::max(1, camera.width / 4), std::max(1, camera.height / 4));
+    lastRequest_ = {std::move(scene), time, camera, options, outlined};
     RenderRequest request = lastRequest_;
     if (playback_->isPlaying() && options.view == ViewMode::Shaded)
         request.options.antialias = playbackAntialias_.level();
@@ -98,7 +107,7 @@ void StudioSession::setRefinement(bool on) {
 }
 
 bool StudioSession::isRefining() const {
-    return refinement_ && !playback_->isPlaying() && shownFrame_.serial != 0 &&
+    return refinement_ && !playback_->isPlaying() && !dragging_ && shownFrame_.serial != 0 &&
            shownFrame_.view == ViewMode::Shaded && shownFrame_.antialias < kRefinedAntialias;
 }
 
@@ -161,8 +170,12 @@ void StudioSession::updateSelectionView() {
     if (!object) {
         selection_.reset();  // deleted or renamed in the text
         selectionView_.reset();
+        motionPath_.reset();
         return;
     }
+    // A preview is a copy of the document's scene with one key changed: the same objects.
+    const auto shown = sceneShown();
+    updateMotionPath(shown, *object);
     const SceneObject& target = scene->objects[*object];
     SelectionView view;
     // The timeline's steps are whole frames: a key at a fractional time
@@ -172,13 +185,13 @@ void StudioSession::updateSelectionView() {
         view.keyFrames << int(std::lround(key.time));
     // The frame shown brings the bounds when it was rendered from this scene
     // with this selection; otherwise (a click, an edit since) evaluate it here.
-    if (shownFrame_.bounds && shownFrame_.scene == scene &&
+    if (shownFrame_.bounds && (shownFrame_.scene == scene || shownFrame_.scene == shown) &&
         shownFrame_.boundsOf == BoundsOf{*object, selection_->part}) {
         view.bounds = *shownFrame_.bounds;
     } else {
         EvaluatedFrame frame;
-        evaluateFrame(*scene, shownFrame_.time, frame);
-        view.bounds = selectionBounds(*scene, frame, *object, selection_->part);
+        evaluateFrame(*shown, shownFrame_.time, frame);
+        view.bounds = selectionBounds(*shown, frame, *object, selection_->part);
     }
     const Vec3 centre = (view.bounds.lo + view.bounds.hi) * 0.5f;
     view.label = tr("%1 at (%2, %3, %4)")
@@ -274,8 +287,14 @@ StudioSession::Capture StudioSession::keySelectionHere(const QString& text) cons
     const auto scene = document_->scene();
     const auto object = selection_ ? findObject(*scene, *selection_) : std::nullopt;
     if (!object) return {{}, tr("Select an object or part first (click it in the picture)."), 5000};
+    return keyCapture(text, selectionKeyPose(*scene, *object, selection_->part, playback_->frame()));
+}
+
+StudioSession::Capture StudioSession::keyCapture(const QString& text, const Pose& pose) const {
+    const auto scene = document_->scene();
+    const auto object = selection_ ? findObject(*scene, *selection_) : std::nullopt;
+    if (!object) return {};
     const int frame = playback_->frame();
-    const Pose pose = selectionKeyPose(*scene, *object, selection_->part, frame);
     // A new target's first key goes after its creating line, unless a loop
     // made it (inside the loop it would be read on every pass) or it is in
     // another file: then at the end.
@@ -296,6 +315,74 @@ StudioSession::Capture StudioSession::keyCameraHere(const QString& text,
     if (lookAround && scene->camera.lookAt)
         notes << tr("The camera's /look_at turns it: the key moves the eye, not where it looks.");
     return {std::move(write.edits), notes.join(u' '), 8000};
+}
+
+std::shared_ptr<const SceneDesc> StudioSession::sceneShown() const {
+    return previewScene_ ? previewScene_ : document_->scene();
+}
+
+std::optional<GizmoFrame> StudioSession::selectionKeyFrame() const {
+    const auto scene = sceneShown();
+    const auto object = selection_ && scene ? findObject(*scene, *selection_) : std::nullopt;
+    if (!object) return std::nullopt;
+    return f2::viewer::selectionKeyFrame(*scene, *object, selection_->part, playback_->frame());
+}
+
+void StudioSession::previewKey(const Pose& key) {
+    // Rendering a changed copy of the parsed scene rather than the edited text:
+    // no parse per mouse move, no undo step per move, and the text is left
+    // byte for byte as it was if the drag is cancelled.
+    const auto scene = document_->scene();
+    const auto object = selection_ && scene ? findObject(*scene, *selection_) : std::nullopt;
+    if (!object) return;
+    if (!dragging_) {
+        dragging_ = true;
+        playback_->pause();
+        // The key goes at the frame on the timeline: show that frame exactly.
+        if (playback_->time() != playback_->frame()) playback_->seek(playback_->frame());
+    }
+    previewScene_ = sceneWithKey(*scene, *object, selection_->part, playback_->frame(), key);
+    scheduleFrame();
+}
+
+void StudioSession::cancelPreview() {
+    dragging_ = false;
+    previewScene_.reset();
+    scheduleFrame();
+}
+
+StudioSession::Capture StudioSession::releaseKey(const QString& text, const Pose& key) {
+    Capture capture = keyCapture(text, key);
+    QString written = text;
+    for (const TextEdit& edit : capture.edits) written = withEdit(written, edit);
+    if (written == text) {
+        cancelPreview();  // nothing to parse: back to the text's picture now
+        return {};
+    }
+    dragging_ = false;
+    scheduleFrame();  // the preview at full size, refined, until the text's scene comes
+    return capture;
+}
+
+void StudioSession::updateMotionPath(const std::shared_ptr<const SceneDesc>& scene, std::size_t object) {
+    if (motionPath_ && pathScene_ == scene && pathSelection_ == selection_) return;
+    pathScene_ = scene;
+    pathSelection_ = selection_;
+    const SceneObject& target = scene->objects[object];
+    const std::optional<int> part = selection_->part;
+    const FrameRef ref{std::uint32_t(object), part.value_or(-1)};
+    const auto at = [&](double t) {
+        const Transform world = worldFromRef(*scene, ref, t);
+        return part ? partShapeCentre(target, *part, world) : world.translation;
+    };
+    MotionPath path;
+    const int last = scene->lastFrame();
+    const int step = std::max(1, (last + kMaxPathPoints - 1) / kMaxPathPoints);
+    for (int frame = 0; frame <= last; frame += step) path.points.push_back(at(frame));
+    if (last % step != 0) path.points.push_back(at(last));
+    for (const Key& key : (part ? target.partTracks[std::size_t(*part)] : target.track).keys)
+        path.keys.push_back({int(std::lround(key.time)), at(key.time)});
+    motionPath_ = std::move(path);
 }
 
 }  // namespace f2::viewer

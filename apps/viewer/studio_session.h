@@ -17,6 +17,7 @@
 
 #include "core/render/camera.h"
 #include "core/render/image.h"
+#include "gizmo.h"
 #include "playback_antialias.h"
 #include "render_controller.h"
 #include "scene_locations.h"
@@ -114,6 +115,37 @@ class StudioSession : public QObject {
     /// there (capture_pose.h, camera_key_writer.h).
     Capture keyCameraHere(const QString& text, const std::optional<Pose>& lookAround) const;
 
+    /// The selection's key as the handles drag it: at the frame on the
+    /// timeline, in the scene on screen. Nothing without a selection.
+    std::optional<GizmoFrame> selectionKeyFrame() const;
+    /// A handle is being dragged: the frame on the timeline is rendered with
+    /// the selection's key there set to `key`, at a quarter of the view's size
+    /// and without refinement, while the text stays as it is. The first call
+    /// pauses playback.
+    void previewKey(const Pose& key);
+    /// The drag ended without writing (Esc): the text's picture again, at full size.
+    void cancelPreview();
+    /// The drag ended: the edits that write `key` into `text` as Key Selection
+    /// Here does (one undo step). The picture keeps showing `key`, at full
+    /// size, until the edited text has parsed (no flash of the old pose).
+    Capture releaseKey(const QString& text, const Pose& key);
+    bool isDragging() const { return dragging_; }
+
+    /// The selection's path over the animation in the scene on screen: its
+    /// origin (a part: its shape's centre) at every frame, and where it is at
+    /// each of its keys.
+    struct MotionPath {
+        std::vector<Vec3> points;  ///< frames 0..last, at most kMaxPathPoints evenly spaced
+        struct Dot {
+            int frame;  ///< the key's time, to the nearest whole frame (as the timeline shows it)
+            Vec3 at;
+        };
+        std::vector<Dot> keys;
+    };
+    /// Nothing without a selection; follows the frames shown.
+    const std::optional<MotionPath>& motionPath() const { return motionPath_; }
+    static constexpr int kMaxPathPoints = 1000;
+
    public slots:
     /// Renders the current time and view soon (requests made in one event
     /// loop pass are coalesced into one).
@@ -142,6 +174,11 @@ class StudioSession : public QObject {
     /// "robot", "lamp"), or 0 when it is in another file or the text has
     /// changed there since the scene parsed.
     int lineOf(const QString& text, const CreatedAt& created, std::string_view type) const;
+    /// The `/key` edit of the selection at the frame on the timeline with `pose`.
+    Capture keyCapture(const QString& text, const Pose& pose) const;
+    /// The scene the picture shows: the drag's preview, else the document's.
+    std::shared_ptr<const SceneDesc> sceneShown() const;
+    void updateMotionPath(const std::shared_ptr<const SceneDesc>& scene, std::size_t object);
 
     SceneDocument* document_ = nullptr;
     Playback* playback_ = nullptr;
@@ -154,6 +191,13 @@ class StudioSession : public QObject {
     FrameInfo shownFrame_;
     std::optional<Selection> selection_;
     std::optional<SelectionView> selectionView_;
+    // A drag's picture (sceneWithKey): kept after the release until the edited text parses.
+    std::shared_ptr<const SceneDesc> previewScene_;
+    bool dragging_ = false;
+    std::optional<MotionPath> motionPath_;
+    // What motionPath_ was computed for.
+    std::shared_ptr<const SceneDesc> pathScene_;
+    std::optional<Selection> pathSelection_;
     // Declared last so it is destroyed first: its worker joins while every
     // object it could talk to still exists.
     std::unique_ptr<RenderController> controller_;

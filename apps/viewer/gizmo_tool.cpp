@@ -1,0 +1,270 @@
+#include "gizmo_tool.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QKeyEvent>
+#include <QMenu>
+#include <QPainter>
+#include <QPainterPath>
+#include <QPlainTextEdit>
+#include <cmath>
+
+#include "playback.h"
+#include "studio_session.h"
+#include "text_capture.h"
+
+namespace f2::viewer {
+
+namespace {
+
+const QColor kAxisColours[3] = {QColor(235, 70, 60), QColor(90, 200, 70), QColor(70, 130, 240)};
+const QColor kScreenColour(250, 220, 90);
+const QColor kPathColour(120, 220, 250);
+constexpr double kDotRadius = 4;
+
+QColor lit(QColor colour, bool active) { return active ? colour.lighter(150) : colour; }
+
+}  // namespace
+
+GizmoTool::GizmoTool(StudioSession* session, ViewportWidget* viewport, QPlainTextEdit* editor,
+                     QObject* parent)
+    : QObject(parent), session_(session), viewport_(viewport), editor_(editor) {
+    viewport_->setOverlay(this);
+    // The handles follow the selection; the frames shown redraw the picture already.
+    connect(session_, &StudioSession::selectionChanged, viewport_, qOverload<>(&QWidget::update));
+}
+
+GizmoTool::~GizmoTool() {
+    if (viewport_) viewport_->setOverlay(nullptr);
+}
+
+void GizmoTool::addActions(QMenu* menu, QWidget* stage) {
+    QMenu* handles = menu->addMenu(tr("&Handles"));
+    auto* modes = new QActionGroup(this);
+    const auto add = [&](const QString& label, Qt::Key key, auto slot) {
+        QAction* action = handles->addAction(label, this, slot);
+        action->setShortcut(QKeySequence(key));
+        action->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+        action->setCheckable(true);
+        stage->addAction(action);
+        return action;
+    };
+    moveAction_ = add(tr("&Move"), Qt::Key_W, [this] { setMode(GizmoMode::Move); });
+    turnAction_ = add(tr("&Turn"), Qt::Key_E, [this] { setMode(GizmoMode::Turn); });
+    modes->addAction(moveAction_);
+    modes->addAction(turnAction_);
+    handles->addSeparator();
+    localAction_ = add(tr("&Local Axes"), Qt::Key_L, [this] { setLocalAxes(!local_); });
+    syncActions();
+}
+
+void GizmoTool::syncActions() {
+    if (!moveAction_) return;
+    moveAction_->setChecked(mode_ == GizmoMode::Move);
+    turnAction_->setChecked(mode_ == GizmoMode::Turn);
+    localAction_->setChecked(local_);
+}
+
+void GizmoTool::setMode(GizmoMode mode) {
+    if (drag_) return;  // a drag keeps its handle
+    mode_ = mode;
+    syncActions();
+    viewport_->update();
+}
+
+void GizmoTool::setLocalAxes(bool local) {
+    if (drag_) return;
+    local_ = local;
+    syncActions();
+    emit message(local ? tr("Handles along the target's own axes") : tr("Handles along its parent's axes"),
+                 3000);
+    viewport_->update();
+}
+
+QPointF GizmoTool::displayPoint(QPointF pos) const { return pos - viewport_->imageRect().topLeft(); }
+
+std::optional<Gizmo> GizmoTool::gizmo() const {
+    if (viewport_->image().isNull()) return std::nullopt;
+    if (drag_) {
+        // The frame the drag started from, with the key where the mouse has it.
+        GizmoFrame frame = drag_->gizmo().frame();
+        frame.pose = dragPose_;
+        return Gizmo(drag_->gizmo().camera(), frame, mode_, local_);
+    }
+    const auto frame = session_->selectionKeyFrame();
+    if (!frame) return std::nullopt;
+    Gizmo g(viewport_->displayCamera(), *frame, mode_, local_);
+    return g.visible() ? std::optional(g) : std::nullopt;
+}
+
+std::vector<std::pair<QPointF, int>> GizmoTool::pathDots() const {
+    std::vector<std::pair<QPointF, int>> dots;
+    const auto& path = session_->motionPath();
+    if (!path || viewport_->image().isNull()) return dots;
+    const Camera camera = viewport_->displayCamera();
+    const QPointF offset = viewport_->imageRect().topLeft();
+    for (const auto& key : path->keys) {
+        float px = 0, py = 0;
+        if (camera.project(key.at, px, py)) dots.emplace_back(offset + QPointF(px, py), key.frame);
+    }
+    return dots;
+}
+
+void GizmoTool::paint(QPainter& painter) {
+    if (viewport_->image().isNull() || !session_->selection()) return;
+    painter.save();
+    painter.setRenderHint(QPainter::Antialiasing, true);
+    const QPointF offset = viewport_->imageRect().topLeft();
+    painter.setClipRect(viewport_->imageRect());
+    paintPath(painter, viewport_->displayCamera(), offset);
+    if (const auto g = gizmo()) paintGizmo(painter, *g, offset);
+    painter.restore();
+}
+
+void GizmoTool::paintPath(QPainter& painter, const Camera& camera, QPointF offset) const {
+    const auto& path = session_->motionPath();
+    if (!path) return;
+    // A polyline broken where the path goes behind the eye.
+    QPainterPath line;
+    bool drawing = false;
+    for (const Vec3& p : path->points) {
+        float px = 0, py = 0;
+        if (!camera.project(p, px, py)) {
+            drawing = false;
+            continue;
+        }
+        const QPointF at = offset + QPointF(px, py);
+        drawing ? line.lineTo(at) : line.moveTo(at);
+        drawing = true;
+    }
+    painter.setPen(QPen(kPathColour, 1.5));
+    painter.setBrush(Qt::NoBrush);
+    painter.drawPath(line);
+    const int frame = session_->playback()->frame();
+    for (const auto& [at, keyFrame] : pathDots()) {
+        painter.setPen(QPen(Qt::black, 1));
+        painter.setBrush(keyFrame == frame ? kScreenColour : kPathColour);
+        painter.drawEllipse(at, kDotRadius, kDotRadius);
+    }
+}
+
+void GizmoTool::paintGizmo(QPainter& painter, const Gizmo& g, QPointF offset) const {
+    const int active = drag_ ? int(drag_->handle()) : -1;
+    const QPointF c = offset + g.centre();
+    painter.setBrush(Qt::NoBrush);
+    for (int i = 0; i < 3; ++i) {
+        const bool on = active == i;
+        painter.setPen(QPen(lit(kAxisColours[i], on), on ? 3.5 : 2.2, Qt::SolidLine, Qt::RoundCap));
+        if (g.mode() == GizmoMode::Turn) {
+            QPolygonF ring;
+            for (const QPointF& p : g.ring(i)) ring << offset + p;
+            painter.drawPolygon(ring);
+            continue;
+        }
+        const QPointF end = offset + g.arrowEnd(i);
+        painter.drawLine(c, end);
+        // The head: a small triangle pointing along the arrow.
+        const QPointF d = end - c;
+        const double length = std::hypot(d.x(), d.y());
+        if (length < 1) continue;
+        const QPointF u = d / length, n(-u.y(), u.x());
+        painter.setBrush(lit(kAxisColours[i], on));
+        painter.drawPolygon(QPolygonF({end + u * 7, end - u * 3 + n * 4.5, end - u * 3 - n * 4.5}));
+        painter.setBrush(Qt::NoBrush);
+    }
+    if (g.mode() == GizmoMode::Move) {
+        const bool on = active == int(GizmoHandle::Screen);
+        const double h = g.squareHalf();
+        painter.setPen(QPen(lit(kScreenColour, on), on ? 3 : 2));
+        painter.drawRect(QRectF(c - QPointF(h, h), c + QPointF(h, h)));
+    }
+}
+
+bool GizmoTool::press(QPointF pos, Qt::KeyboardModifiers) {
+    if (const auto g = gizmo()) {
+        if (const auto handle = g->hit(displayPoint(pos))) {
+            if (canEdit_ && !canEdit_()) return true;  // the press is the handle's all the same
+            drag_.emplace(*g, *handle, displayPoint(pos));
+            dragPose_ = g->frame().pose;
+            viewport_->setCursor(Qt::ClosedHandCursor);
+            viewport_->update();
+            return true;
+        }
+    }
+    for (const auto& [at, frame] : pathDots()) {
+        const QPointF d = pos - at;
+        if (std::hypot(d.x(), d.y()) <= Gizmo::kHitPixels) {
+            session_->playback()->pause();
+            session_->playback()->seek(frame);
+            return true;
+        }
+    }
+    return false;
+}
+
+void GizmoTool::updateDrag(QPointF pos, Qt::KeyboardModifiers modifiers) {
+    const Pose pose = drag_->update(displayPoint(pos), modifiers.testFlag(Qt::ControlModifier));
+    if (pose == dragPose_) return;
+    dragPose_ = pose;
+    session_->previewKey(pose);
+    const auto numbers = [](Vec3 v) {
+        return QStringLiteral("%1 %2 %3").arg(formatNumber(v.x), formatNumber(v.y), formatNumber(v.z));
+    };
+    emit message(tr("%1 at frame %2: %3  %4  (Ctrl snaps, Esc cancels)")
+                     .arg(session_->selection()->target())
+                     .arg(session_->playback()->frame())
+                     .arg(numbers(pose.position), numbers(pose.rotation)));
+    viewport_->update();
+}
+
+void GizmoTool::move(QPointF pos, Qt::KeyboardModifiers modifiers) {
+    if (drag_) updateDrag(pos, modifiers);
+}
+
+void GizmoTool::release(QPointF pos, Qt::KeyboardModifiers modifiers) {
+    if (!drag_) return;
+    updateDrag(pos, modifiers);
+    const Pose start = drag_->gizmo().frame().pose;
+    drag_.reset();
+    viewport_->setCursor(Qt::OpenHandCursor);
+    viewport_->update();
+    if (dragPose_ == start) {  // a click on a handle
+        if (session_->isDragging()) session_->cancelPreview();
+        return;
+    }
+    const StudioSession::Capture capture = session_->releaseKey(editor_->toPlainText(), dragPose_);
+    applyEdits(editor_, capture.edits);
+    emit message({});
+}
+
+void GizmoTool::cancelDrag() {
+    drag_.reset();
+    session_->cancelPreview();
+    viewport_->setCursor(Qt::OpenHandCursor);
+    viewport_->update();
+    emit message(tr("Drag cancelled"), 3000);
+}
+
+bool GizmoTool::key(QKeyEvent* event) {
+    if (event->key() == Qt::Key_Escape && drag_) {
+        cancelDrag();
+        return true;
+    }
+    // The same keys as the actions, for a viewport without them (tests, embedding).
+    if (event->modifiers() != Qt::NoModifier) return false;
+    switch (event->key()) {
+        case Qt::Key_W:
+            setMode(GizmoMode::Move);
+            return true;
+        case Qt::Key_E:
+            setMode(GizmoMode::Turn);
+            return true;
+        case Qt::Key_L:
+            setLocalAxes(!local_);
+            return true;
+        default:
+            return false;
+    }
+}
+
+}  // namespace f2::viewer

@@ -1,0 +1,79 @@
+#pragma once
+/// The selection's handles and motion path over the picture: draws them (in
+/// the viewport's overlay), turns a drag of a handle into the session's live
+/// preview and, on release, into one `/key` edit of the editor (one undo
+/// step); a click on a key's dot on the path jumps to its frame. W moves, E
+/// turns, L switches between the parent's and the target's own axes, Esc
+/// cancels a drag, Ctrl snaps.
+#include <QObject>
+#include <functional>
+#include <optional>
+
+#include "gizmo.h"
+#include "viewport_widget.h"
+
+class QAction;
+class QMenu;
+class QPlainTextEdit;
+
+namespace f2::viewer {
+
+class StudioSession;
+
+class GizmoTool : public QObject, public ViewportOverlay {
+    Q_OBJECT
+   public:
+    /// Draws over `viewport` and writes into `editor`.
+    GizmoTool(StudioSession* session, ViewportWidget* viewport, QPlainTextEdit* editor, QObject* parent);
+    ~GizmoTool() override;
+
+    /// Its actions (Move W, Turn E, Local Axes L) in `menu`, with their keys
+    /// acting while `stage` (the picture and timeline) has the focus.
+    void addActions(QMenu* menu, QWidget* stage);
+    /// Asked before a drag starts: false (the text is not in the editor yet) refuses it.
+    void setCanEdit(std::function<bool()> canEdit) { canEdit_ = std::move(canEdit); }
+
+    GizmoMode mode() const { return mode_; }
+    void setMode(GizmoMode mode);
+    bool localAxes() const { return local_; }
+    void setLocalAxes(bool local);
+    bool isDragging() const { return drag_.has_value(); }
+    /// The handles as the picture shows them now, in the viewport's
+    /// displayCamera() pixels; nothing without a selection or a picture.
+    std::optional<Gizmo> gizmo() const;
+    /// The key dots of the motion path where they are drawn (widget positions) and their frames.
+    std::vector<std::pair<QPointF, int>> pathDots() const;
+
+    void paint(QPainter& painter) override;
+    bool press(QPointF pos, Qt::KeyboardModifiers modifiers) override;
+    void move(QPointF pos, Qt::KeyboardModifiers modifiers) override;
+    void release(QPointF pos, Qt::KeyboardModifiers modifiers) override;
+    bool key(QKeyEvent* event) override;
+
+   signals:
+    /// For the status bar: what the drag does (empty: clear it).
+    void message(const QString& text, int timeoutMs = 0);
+
+   private:
+    /// `pos` (widget) in displayCamera() pixels.
+    QPointF displayPoint(QPointF pos) const;
+    void updateDrag(QPointF pos, Qt::KeyboardModifiers modifiers);
+    void cancelDrag();
+    void syncActions();
+    void paintPath(QPainter& painter, const Camera& camera, QPointF offset) const;
+    void paintGizmo(QPainter& painter, const Gizmo& gizmo, QPointF offset) const;
+
+    StudioSession* session_;
+    ViewportWidget* viewport_;
+    QPlainTextEdit* editor_;
+    std::function<bool()> canEdit_;
+    GizmoMode mode_ = GizmoMode::Move;
+    bool local_ = false;
+    std::optional<GizmoDrag> drag_;
+    Pose dragPose_;  // the key with the mouse where it is
+    QAction* moveAction_ = nullptr;
+    QAction* turnAction_ = nullptr;
+    QAction* localAction_ = nullptr;
+};
+
+}  // namespace f2::viewer
