@@ -155,10 +155,11 @@ Pose GizmoDrag::update(QPointF point, bool snap) {
         const auto angle = [&](QPointF p) { return std::atan2(p.y() - c.y(), p.x() - c.x()) * 180 / kPi; };
         turnedDegrees_ += wrappedNear(angle(point) - angle(last_), 0);
         last_ = point;
-        // On screen (y down) an angle grows clockwise, which is a positive turn
-        // about an axis pointing away from the eye (right-handed).
+        // On screen (y down) an angle grows clockwise. Seen from the eye, with
+        // x right, y up and z away (SPEC 1), a positive turn about an axis
+        // pointing away (+x toward +y about z) goes anticlockwise.
         const Vec3 forward = gizmo_.camera().worldFromCamera.column(2);
-        const double sign = dot(gizmo_.axis(int(handle_)), forward) >= 0 ? 1 : -1;
+        const double sign = dot(gizmo_.axis(int(handle_)), forward) >= 0 ? -1 : 1;
         const double degrees = sign * turnedDegrees_;
         return turned(snap ? snapped(degrees, Gizmo::kSnapDegrees) : degrees);
     }

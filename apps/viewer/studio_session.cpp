@@ -360,7 +360,10 @@ StudioSession::Capture StudioSession::releaseKey(const QString& text, const Pose
         return {};
     }
     dragging_ = false;
-    scheduleFrame();  // the preview at full size, refined, until the text's scene comes
+    // Parsed now rather than after the editor's typing pause: the preview goes
+    // at that parse's scene, so an undo straight after still gets its own parse.
+    document_->setText(written);
+    scheduleFrame();  // the preview at full size, until the text's scene comes
     return capture;
 }
 

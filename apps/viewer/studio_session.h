@@ -126,8 +126,9 @@ class StudioSession : public QObject {
     /// The drag ended without writing (Esc): the text's picture again, at full size.
     void cancelPreview();
     /// The drag ended: the edits that write `key` into `text` as Key Selection
-    /// Here does (one undo step). The picture keeps showing `key`, at full
-    /// size, until the edited text has parsed (no flash of the old pose).
+    /// Here does (one undo step; none if they change nothing), and the edited
+    /// text goes to the document at once. The picture keeps showing `key`, at
+    /// full size, until that text has parsed (no flash of the old pose).
     Capture releaseKey(const QString& text, const Pose& key);
     bool isDragging() const { return dragging_; }
 
