@@ -1,0 +1,271 @@
+// Span edits, numbers as a person writes them, and the write-back rules
+// (source_edit.h, write_back.h): pure functions of the text, and the one
+// editor function that applies edits as one undo step.
+#include "source_edit.h"
+
+#include <QDir>
+#include <QPlainTextEdit>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include "core/parse/parser.h"
+#include "core/parse/symbol_index.h"
+#include "scene_locations.h"
+#include "test_support.h"
+#include "write_back.h"
+
+using namespace f2;
+using namespace f2::viewer;
+
+namespace {
+
+/// A text, its parse and the write-back of a request on it.
+struct Parsed {
+    QString text;
+    std::string name;
+    SceneDesc scene;
+    SceneLocations locations;
+
+    explicit Parsed(const QString& source, std::string file = "scene.f2")
+        : text(source), name(std::move(file)) {
+        SymbolIndex index;
+        const QByteArray bytes = text.toUtf8();
+        ParseResult result = parseScene(std::string_view(bytes.constData(), std::size_t(bytes.size())), name,
+                                        ParseLimits{}, index);
+        for (const Diagnostic& d : result.diagnostics)
+            if (d.severity == Severity::Error) qWarning("%s", d.format().c_str());
+        if (result.scene) scene = std::move(*result.scene);
+        locations = SceneLocations::fromIndex(index);
+    }
+    WriteBack pose(const QString& target, int frame, const Pose& pose) const {
+        return writePose({text, scene, locations, name}, target, frame, pose);
+    }
+    WriteBack property(const QString& target, KeyProperty property, int frame,
+                       std::vector<double> values) const {
+        return writeBack({text, scene, locations, name}, {target, property, frame, std::move(values)});
+    }
+};
+
+Pose pose(float x, float y, float z, float rx = 0, float ry = 0, float rz = 0) {
+    return {{x, y, z}, {rx, ry, rz}};
+}
+
+}  // namespace
+
+class SourceEditTest : public QObject {
+    Q_OBJECT
+   private slots:
+    void numbersAreWrittenInShortestForm();
+    void spanEditsApplyBackToFront();
+    void editorEditsAreOneUndoStep();
+    void scrubbedNumberStepsByItsLastDigit();
+    void keyAtTheFrameChangesOnlyItsNumbers();
+    void newKeyGoesInTimeOrder();
+    void unkeyedTargetChangesItsCreatingNumbers();
+    void targetInALoopIsRefusedWithAnOffer();
+    void targetInAnIncludedFileIsRefusedWithAnOffer();
+    void propertyKeysAndFirstKeysOfParts();
+};
+
+void SourceEditTest::numbersAreWrittenInShortestForm() {
+    QCOMPARE(shortestNumber(1.25), QStringLiteral("1.25"));
+    QCOMPARE(shortestNumber(40), QStringLiteral("40"));
+    QCOMPARE(shortestNumber(0.1 + 0.2), QStringLiteral("0.3"));
+    QCOMPARE(shortestNumber(double(0.1f)), QStringLiteral("0.1"));
+    QCOMPARE(shortestNumber(-1e-7), QStringLiteral("0"));  // float noise, and no "-0"
+    QCOMPARE(shortestNumber(-0.0), QStringLiteral("0"));
+    QCOMPARE(shortestNumber(-12.5), QStringLiteral("-12.5"));
+    QCOMPARE(shortestNumber(1e7), QStringLiteral("10000000"));
+    QCOMPARE(shortestNumber(123456.7), QStringLiteral("123457"));     // 6 significant digits
+    QCOMPARE(shortestNumber(0.0001234), QStringLiteral("0.000123"));  // at most 6 decimals
+    QCOMPARE(shortestNumber(double(float(-89.99999f))), QStringLiteral("-90"));
+}
+
+void SourceEditTest::spanEditsApplyBackToFront() {
+    const QString text = QStringLiteral("/sphere ball 1 2 3 4  # é comment\n");
+    // Offsets in the original text, given in any order.
+    QCOMPARE(withEdits(text, {{17, 18, QStringLiteral("30")}, {15, 16, QStringLiteral("20")}}),
+             QStringLiteral("/sphere ball 1 20 30 4  # é comment\n"));
+    QCOMPARE(withEdits(text, {{0, 0, QStringLiteral("a")}, {0, 0, QStringLiteral("b")}}),
+             QStringLiteral("ab") + text);
+    // Tokens carry UTF-16 offsets, also after non-ASCII text on earlier lines.
+    const QString twoLines = QStringLiteral("# ünïcode\n/key 4 ball 1 2 3 0 0 0 ease # ü\n");
+    const std::vector<SourceLine> lines = scanSource(twoLines);
+    QCOMPARE(lines.size(), std::size_t(3));
+    QVERIFY(lines[0].tokens.empty());
+    QCOMPARE(lines[1].tokens.size(), std::size_t(10));
+    QCOMPARE(twoLines.mid(lines[1].tokens[3].begin, 1), QStringLiteral("1"));
+    QCOMPARE(lines[1].tokens[9].text, QStringLiteral("ease"));
+}
+
+void SourceEditTest::editorEditsAreOneUndoStep() {
+    const QString text = QStringLiteral("/sphere ball 1 2 3 4  # kept\n/key 0 ball\n");
+    QPlainTextEdit editor;
+    editor.setPlainText(text);
+    const std::vector<SpanEdit> edits{{13, 14, QStringLiteral("2.5")}, {29, 29, QStringLiteral("/fps 25\n")}};
+    applySourceEdits(&editor, edits);
+    QCOMPARE(editor.toPlainText(), withEdits(text, edits));
+    editor.undo();
+    QCOMPARE(editor.toPlainText(), text);  // byte-identical after one undo
+    editor.redo();
+    QCOMPARE(editor.toPlainText(), withEdits(text, edits));
+}
+
+void SourceEditTest::scrubbedNumberStepsByItsLastDigit() {
+    QCOMPARE(numberStep(u"1.25"), 0.01);
+    QCOMPARE(numberStep(u"40"), 1.0);
+    QCOMPARE(numberStep(u"-0.5"), 0.1);
+    QCOMPARE(*scrubNumber(u"1.25", 5), QStringLiteral("1.30"));
+    QCOMPARE(*scrubNumber(u"40", -5), QStringLiteral("35"));
+    QCOMPARE(*scrubNumber(u"0.1", -1), QStringLiteral("0.0"));
+    QCOMPARE(*scrubNumber(u"0.1", -2), QStringLiteral("-0.1"));
+    QCOMPARE(*scrubNumber(u"2e3", 5), QStringLiteral("7000"));  // its last digit is the thousands
+    QVERIFY(!scrubNumber(u"(n * 2)", 1));
+    QVERIFY(!scrubNumber(u"2.5s", 1));
+}
+
+void SourceEditTest::keyAtTheFrameChangesOnlyItsNumbers() {
+    const QString text = QStringLiteral(
+        "/sphere ball 1 0 0 0\n"
+        "/key 0 ball\n"
+        "/key  40   ball 1   2.5 3 0 0 0   ease_out  # the bounce\n"
+        "/key 3s ball 9 9 9 0 0 0\n");
+    const Parsed parsed(text);
+    // Frame 40: only the numbers whose written value changes.
+    WriteBack write = parsed.pose(QStringLiteral("ball"), 40, pose(1, 2.75f, 3, 0, 90.0f + 1e-5f, 0));
+    QVERIFY(!write.refused());
+    QCOMPARE(withEdits(text, write.edits),
+             QString(text).replace(QStringLiteral("2.5 3 0 0 0"), QStringLiteral("2.75 3 0 90 0")));
+    // A time in seconds matches its frame (3s at 24 fps is 72).
+    write = parsed.pose(QStringLiteral("ball"), 72, pose(9, 9, 8));
+    QCOMPARE(withEdits(text, write.edits),
+             QString(text).replace(QStringLiteral("9 9 9"), QStringLiteral("9 9 8")));
+    // A key without numbers gets them after its target.
+    write = parsed.pose(QStringLiteral("ball"), 0, pose(0.5f, 0, 0));
+    QCOMPARE(withEdits(text, write.edits),
+             QString(text).replace(QStringLiteral("/key 0 ball\n"),
+                                   QStringLiteral("/key 0 ball 0.5 0 0 0 0 0\n")));
+    // Nothing changes: no edit.
+    QVERIFY(parsed.pose(QStringLiteral("ball"), 40, pose(1, 2.5f, 3)).edits.empty());
+}
+
+void SourceEditTest::newKeyGoesInTimeOrder() {
+    const QString text = QStringLiteral(
+        "/sphere ball 1 0 0 0\n"
+        "  /key 10 ball 1 0 0 0 0 0\n"
+        "/key 30 ball 3 0 0 0 0 0\n"
+        "/fps 24\n");
+    const Parsed parsed(text);
+    QCOMPARE(withEdits(text, parsed.pose(QStringLiteral("ball"), 20, pose(2, 0, 0)).edits),
+             QString(text).replace(
+                 QStringLiteral("/key 30"),
+                 QStringLiteral("  /key 20 ball 2 0 0 0 0 0\n/key 30")));  // indented as the key before
+    // Before the first key: before it, with its indentation.
+    QCOMPARE(withEdits(text, parsed.pose(QStringLiteral("ball"), 5, pose(0.5, 0, 0)).edits),
+             QString(text).replace(QStringLiteral("  /key 10"),
+                                   QStringLiteral("  /key 5 ball 0.5 0 0 0 0 0\n  /key 10")));
+    // After the last: after it.
+    QCOMPARE(withEdits(text, parsed.pose(QStringLiteral("ball"), 40, pose(4, 0, 0)).edits),
+             QString(text).replace(QStringLiteral("/fps"), QStringLiteral("/key 40 ball 4 0 0 0 0 0\n/fps")));
+}
+
+void SourceEditTest::unkeyedTargetChangesItsCreatingNumbers() {
+    const QString text = QStringLiteral(
+        "/camera 64 48 0.5  0 0 -10   # the eye\n"
+        "/box crate 1 2 3 4 5 6\n"
+        "/cylinder pole 0.5 3 1 1 1 0 45 0  # tilted\n"
+        "/robot r1 0 0 5\n");
+    const Parsed parsed(text);
+    QCOMPARE(withEdits(text, parsed.pose(QStringLiteral("crate"), 12, pose(4, 5.5f, 6)).edits),
+             QString(text).replace(QStringLiteral("4 5 6"), QStringLiteral("4 5.5 6")));
+    QCOMPARE(withEdits(text, parsed.pose(QStringLiteral("pole"), 0, pose(1, 1, 1, 0, 30, 0)).edits),
+             QString(text).replace(QStringLiteral("0 45 0"), QStringLiteral("0 30 0")));
+    // A rotation the command left out is appended.
+    QCOMPARE(withEdits(text, parsed.pose(QStringLiteral("r1"), 0, pose(0, 0, 5, 0, 180, 0)).edits),
+             QString(text).replace(QStringLiteral("r1 0 0 5"), QStringLiteral("r1 0 0 5 0 180 0")));
+    // The camera's /camera line, its comment and spacing kept.
+    QCOMPARE(withEdits(text, parsed.pose(QStringLiteral("camera"), 7, pose(0, 1, -10, 5)).edits),
+             QString(text).replace(QStringLiteral("0 0 -10  "), QStringLiteral("0 1 -10 5 0 0  ")));
+    QCOMPARE(withEdits(text, parsed.property(QStringLiteral("camera"), KeyProperty::Zoom, 7, {0.75}).edits),
+             QString(text).replace(QStringLiteral("0.5  0"), QStringLiteral("0.75  0")));
+}
+
+void SourceEditTest::targetInALoopIsRefusedWithAnOffer() {
+    const QString text = QStringLiteral(
+        "/camera 64 48 0.5 0 0 -10\n"
+        "/repeat i 0 2\n"
+        "  /sphere b{ i } 1 (i * 3) 0 5\n"
+        "/end\n"
+        "/sphere solo 1 0 0 0\n");
+    const Parsed parsed(text);
+    const WriteBack write = parsed.pose(QStringLiteral("b1"), 12, pose(3, 1, 5));
+    QVERIFY(write.refused());
+    QVERIFY(write.edits.empty());
+    QCOMPARE(write.refusal,
+             QStringLiteral("b1 is made inside the /repeat loop of lines 2–4: changing its numbers "
+                            "there would change every object the loop makes."));
+    QCOMPARE(write.offerLabel, QStringLiteral("Add a key after the loop (line 5) instead"));
+    QCOMPARE(
+        withEdits(text, write.offer),
+        QString(text).replace(QStringLiteral("/end\n"), QStringLiteral("/end\n/key 12 b1 3 1 5 0 0 0\n")));
+    // The offered key then takes it over (it is keyed from then on).
+    const Parsed offered(withEdits(text, write.offer));
+    const WriteBack next = offered.pose(QStringLiteral("b1"), 12, pose(3, 2, 5));
+    QVERIFY(!next.refused());
+    QCOMPARE(withEdits(offered.text, next.edits),
+             QString(offered.text).replace(QStringLiteral("b1 3 1 5"), QStringLiteral("b1 3 2 5")));
+    // A key at the frame written inside a loop is refused too.
+    const QString keyed = QStringLiteral(
+        "/sphere ball 1 0 0 0\n"
+        "/repeat i 0 0\n"
+        "/key 5 ball 1 1 1 0 0 0\n"
+        "/end\n");
+    const WriteBack inLoop = Parsed(keyed).pose(QStringLiteral("ball"), 5, pose(2, 2, 2));
+    QVERIFY(inLoop.refused());
+    QVERIFY(inLoop.refusal.contains(QStringLiteral("inside the /repeat loop of lines 2–4")));
+    QCOMPARE(withEdits(keyed, inLoop.offer), keyed + QStringLiteral("/key 5 ball 2 2 2 0 0 0\n"));
+}
+
+void SourceEditTest::targetInAnIncludedFileIsRefusedWithAnOffer() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    test::writeFile(dir.filePath(QStringLiteral("props.f2")), "/sphere prop 1 2 0 5\n");
+    const QString text = QStringLiteral("/camera 64 48 0.5 0 0 -10\n/include props.f2\n/fps 24\n");
+    const Parsed parsed(text, QDir::cleanPath(dir.filePath(QStringLiteral("main.f2"))).toStdString());
+    const WriteBack write = parsed.pose(QStringLiteral("prop"), 0, pose(2, 1, 5));
+    QVERIFY(write.refused());
+    QVERIFY2(write.refusal.startsWith(QStringLiteral("prop is made in the included file ")),
+             qPrintable(write.refusal));
+    QCOMPARE(write.offerLabel, QStringLiteral("Add a key after its /include (line 3) instead"));
+    QCOMPARE(withEdits(text, write.offer),
+             QString(text).replace(QStringLiteral("/fps"), QStringLiteral("/key 0 prop 2 1 5 0 0 0\n/fps")));
+}
+
+void SourceEditTest::propertyKeysAndFirstKeysOfParts() {
+    const QString text = QStringLiteral(
+        "/point_light 0.8 0 5 0 name lamp\n"
+        "/sphere ball 1 0 0 0\n"
+        "/key 0 ball colour 255 0 0 ease # red\n"
+        "/robot r1 0 0 5\n"
+        "/key 0 ball 0 0 0 0 0 0\n");
+    const Parsed parsed(text);
+    // The colour key at the frame: its numbers, not the pose key's.
+    QCOMPARE(
+        withEdits(text, parsed.property(QStringLiteral("ball"), KeyProperty::Colour, 0, {255, 128, 0}).edits),
+        QString(text).replace(QStringLiteral("255 0 0 ease"), QStringLiteral("255 128 0 ease")));
+    // A light's intensity without keys: the light's own number.
+    QCOMPARE(withEdits(text, parsed.property(QStringLiteral("lamp"), KeyProperty::Intensity, 3, {0.5}).edits),
+             QString(text).replace(QStringLiteral("0.8"), QStringLiteral("0.5")));
+    // A part without keys: its first key, after its object's line.
+    QCOMPARE(withEdits(text, parsed.pose(QStringLiteral("r1.head"), 10, pose(0, 0, 0, 0, 30, 0)).edits),
+             QString(text).replace(QStringLiteral("0 0 5\n"),
+                                   QStringLiteral("0 0 5\n/key 10 r1.head 0 0 0 0 30 0\n")));
+    // visible has no creating number: a first key after the object's line.
+    QCOMPARE(
+        withEdits(text, parsed.property(QStringLiteral("r1"), KeyProperty::Visible, 4, {0}).edits),
+        QString(text).replace(QStringLiteral("0 0 5\n"), QStringLiteral("0 0 5\n/key 4 r1 visible 0\n")));
+    QVERIFY(parsed.pose(QStringLiteral("nobody"), 0, pose(0, 0, 0)).refused());
+}
+
+QTEST_MAIN(SourceEditTest)
+#include "source_edit_test.moc"
