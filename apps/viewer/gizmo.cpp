@@ -149,6 +149,15 @@ std::optional<Vec3> GizmoDrag::onScreenPlane(QPointF point) const {
 }
 
 Pose GizmoDrag::update(QPointF point, bool snap) {
+    Pose pose = unrounded(point, snap);
+    for (int i = 0; i < 3; ++i) {
+        pose.position[i] = float(snapped(pose.position[i], kPrecision));
+        pose.rotation[i] = float(snapped(pose.rotation[i], kPrecision));
+    }
+    return pose;
+}
+
+Pose GizmoDrag::unrounded(QPointF point, bool snap) {
     const Pose& start = gizmo_.frame().pose;
     if (gizmo_.mode() == GizmoMode::Turn) {
         const QPointF c = gizmo_.centre();
@@ -174,7 +183,7 @@ Pose GizmoDrag::update(QPointF point, bool snap) {
     if (!gizmo_.localAxes()) {
         // Along a parent axis only that one number changes, exactly.
         Pose pose = start;
-        float& value = i == 0 ? pose.position.x : i == 1 ? pose.position.y : pose.position.z;
+        float& value = pose.position[i];
         value = float(snap ? snapped(value + distance, Gizmo::kSnapUnits) : value + distance);
         return pose;
     }

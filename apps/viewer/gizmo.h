@@ -89,13 +89,17 @@ class GizmoDrag {
    public:
     GizmoDrag(const Gizmo& gizmo, GizmoHandle handle, QPointF pressedAt);
 
-    /// The key pose with the mouse at `point`; `snap` (Ctrl) rounds a move to
-    /// multiples of kSnapUnits and a turn to multiples of kSnapDegrees.
+    /// The key pose with the mouse at `point`, its numbers rounded to
+    /// kPrecision (what a person would type; the text and the preview then
+    /// agree); `snap` (Ctrl) rounds a move to multiples of kSnapUnits and a
+    /// turn to multiples of kSnapDegrees.
     Pose update(QPointF point, bool snap);
+    static constexpr double kPrecision = 0.01;
     GizmoHandle handle() const { return handle_; }
     const Gizmo& gizmo() const { return gizmo_; }
 
    private:
+    Pose unrounded(QPointF point, bool snap);
     /// Where along the dragged axis (world units from the origin) the ray through `point` passes nearest.
     std::optional<double> alongAxis(QPointF point) const;
     /// Where the ray through `point` meets the screen plane through the origin.

@@ -4,14 +4,15 @@
 #include <QActionGroup>
 #include <QKeyEvent>
 #include <QMenu>
+#include <QMessageBox>
 #include <QPainter>
 #include <QPainterPath>
 #include <QPlainTextEdit>
 #include <cmath>
 
 #include "playback.h"
+#include "source_edit.h"
 #include "studio_session.h"
-#include "text_capture.h"
 
 namespace f2::viewer {
 
@@ -30,6 +31,10 @@ GizmoTool::GizmoTool(StudioSession* session, ViewportWidget* viewport, QPlainTex
                      QObject* parent)
     : QObject(parent), session_(session), viewport_(viewport), editor_(editor) {
     viewport_->setOverlay(this);
+    offer_ = [this](const QString& refusal, const QString& label) {
+        return QMessageBox::question(viewport_->window(), tr("Write the key elsewhere?"),
+                                     refusal + QStringLiteral("\n\n") + label + u'?') == QMessageBox::Yes;
+    };
     // The handles follow the selection; the frames shown redraw the picture already.
     connect(session_, &StudioSession::selectionChanged, viewport_, qOverload<>(&QWidget::update));
 }
@@ -208,7 +213,7 @@ void GizmoTool::updateDrag(QPointF pos, Qt::KeyboardModifiers modifiers) {
     dragPose_ = pose;
     session_->previewKey(pose);
     const auto numbers = [](Vec3 v) {
-        return QStringLiteral("%1 %2 %3").arg(formatNumber(v.x), formatNumber(v.y), formatNumber(v.z));
+        return QStringLiteral("%1 %2 %3").arg(shortestNumber(v.x), shortestNumber(v.y), shortestNumber(v.z));
     };
     emit message(tr("%1 at frame %2: %3  %4  (Ctrl snaps, Esc cancels)")
                      .arg(session_->selection()->target())
@@ -232,8 +237,15 @@ void GizmoTool::release(QPointF pos, Qt::KeyboardModifiers modifiers) {
         if (session_->isDragging()) session_->cancelPreview();
         return;
     }
-    const StudioSession::Capture capture = session_->releaseKey(editor_->toPlainText(), dragPose_);
-    applyEdits(editor_, capture.edits);
+    const WriteBack write = session_->releaseKey(editor_->toPlainText(), dragPose_);
+    if (write.refused()) {
+        // A loop or an included file made the target: say why, and offer the key elsewhere.
+        emit message(write.refusal, 10000);
+        if (!write.offer.empty() && offer_ && offer_(write.refusal, write.offerLabel))
+            applySourceEdits(editor_, write.offer);
+        return;
+    }
+    applySourceEdits(editor_, write.edits);
     emit message({});
 }
 

@@ -32,6 +32,10 @@ class GizmoTool : public QObject, public ViewportOverlay {
     void addActions(QMenu* menu, QWidget* stage);
     /// Asked before a drag starts: false (the text is not in the editor yet) refuses it.
     void setCanEdit(std::function<bool()> canEdit) { canEdit_ = std::move(canEdit); }
+    /// Asks whether to take the write-back's offer when it refuses (the
+    /// refusal and the offer's label); a question box unless a test sets one.
+    using Offer = std::function<bool(const QString& refusal, const QString& offerLabel)>;
+    void setOffer(Offer offer) { offer_ = std::move(offer); }
 
     GizmoMode mode() const { return mode_; }
     void setMode(GizmoMode mode);
@@ -67,6 +71,7 @@ class GizmoTool : public QObject, public ViewportOverlay {
     ViewportWidget* viewport_;
     QPlainTextEdit* editor_;
     std::function<bool()> canEdit_;
+    Offer offer_;
     GizmoMode mode_ = GizmoMode::Move;
     bool local_ = false;
     std::optional<GizmoDrag> drag_;

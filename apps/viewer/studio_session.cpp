@@ -351,20 +351,25 @@ void StudioSession::cancelPreview() {
     scheduleFrame();
 }
 
-StudioSession::Capture StudioSession::releaseKey(const QString& text, const Pose& key) {
-    Capture capture = keyCapture(text, key);
-    QString written = text;
-    for (const TextEdit& edit : capture.edits) written = withEdit(written, edit);
-    if (written == text) {
-        cancelPreview();  // nothing to parse: back to the text's picture now
+WriteBack StudioSession::releaseKey(const QString& text, const Pose& key) {
+    const auto scene = document_->scene();
+    if (!selection_ || !scene) {
+        cancelPreview();
         return {};
+    }
+    const SceneSource source{text, *scene, *document_->locations(), document_->sourceName()};
+    WriteBack write = writePose(source, selection_->target(), playback_->frame(), key);
+    const QString written = withEdits(text, write.edits);
+    if (write.refused() || written == text) {
+        cancelPreview();  // nothing to parse: back to the text's picture now
+        return write;
     }
     dragging_ = false;
     // Parsed now rather than after the editor's typing pause: the preview goes
     // at that parse's scene, so an undo straight after still gets its own parse.
     document_->setText(written);
     scheduleFrame();  // the preview at full size, until the text's scene comes
-    return capture;
+    return write;
 }
 
 void StudioSession::updateMotionPath(const std::shared_ptr<const SceneDesc>& scene, std::size_t object) {

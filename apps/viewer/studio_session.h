@@ -23,6 +23,7 @@
 #include "scene_locations.h"
 #include "selection.h"
 #include "text_capture.h"
+#include "write_back.h"
 
 namespace f2::viewer {
 
@@ -125,11 +126,14 @@ class StudioSession : public QObject {
     void previewKey(const Pose& key);
     /// The drag ended without writing (Esc): the text's picture again, at full size.
     void cancelPreview();
-    /// The drag ended: the edits that write `key` into `text` as Key Selection
-    /// Here does (one undo step; none if they change nothing), and the edited
-    /// text goes to the document at once. The picture keeps showing `key`, at
-    /// full size, until that text has parsed (no flash of the old pose).
-    Capture releaseKey(const QString& text, const Pose& key);
+    /// The drag ended: the edits that write `key` at the frame on the
+    /// timeline into `text` (write_back.h: the key line's numbers in place, a
+    /// new key line, or the creating command's numbers; one undo step), and
+    /// the edited text goes to the document at once. The picture keeps
+    /// showing `key`, at full size, until that text has parsed (no flash of
+    /// the old pose). A refusal (a target made in a loop or an included
+    /// file) or no change: the text's picture again.
+    WriteBack releaseKey(const QString& text, const Pose& key);
     bool isDragging() const { return dragging_; }
 
     /// The selection's path over the animation in the scene on screen: its
