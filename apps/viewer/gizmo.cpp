@@ -71,7 +71,8 @@ Gizmo::Gizmo(const Camera& camera, const GizmoFrame& frame, GizmoMode mode, bool
     centre_ = {px, py};
     // A pixel at depth z spans z / (d · width) units (Camera::project).
     unitsPerPixel_ = depth / (double(camera.distance) * camera.width);
-    const float arm = float(kArmPixels * unitsPerPixel_);
+    arm_ = std::min(kArmPixels, kArmFraction * std::min(camera.width, camera.height));
+    const float arm = float(arm_ * unitsPerPixel_);
     for (int i = 0; i < 3; ++i) {
         const Vec3 u = axis(i);
         arrowEnds_[std::size_t(i)] = camera.project(origin + u * arm, px, py) ? QPointF(px, py) : centre_;

@@ -51,8 +51,11 @@ class Gizmo {
     /// The ring about axis `axis`, as a closed polyline (pixels); empty where it
     /// goes behind the eye.
     const std::vector<QPointF>& ring(int axis) const { return rings_[std::size_t(axis)]; }
+    /// The arrows' length and the rings' radius on screen (pixels): kArmPixels,
+    /// less in a small picture.
+    double armPixels() const { return arm_; }
     /// Half the side of the screen-plane square (pixels).
-    double squareHalf() const { return kArmPixels * 0.12; }
+    double squareHalf() const { return arm_ * 0.12; }
     /// The handle at `point` (pixels), if any: the nearest within kHitPixels.
     std::optional<GizmoHandle> hit(QPointF point) const;
 
@@ -63,8 +66,9 @@ class Gizmo {
     /// World units per pixel at the target's origin.
     double unitsPerPixel() const { return unitsPerPixel_; }
 
-    /// The arrows' length and the rings' radius on screen, in pixels.
     static constexpr double kArmPixels = 60;
+    /// At most this fraction of the picture's smaller side.
+    static constexpr double kArmFraction = 0.2;
     /// How near a handle a press must be to take it.
     static constexpr double kHitPixels = 6;
     /// Ctrl: moves by multiples of this (scene units), turns by multiples of kSnapDegrees.
@@ -80,6 +84,7 @@ class Gizmo {
     Transform world_;
     QPointF centre_;
     double unitsPerPixel_ = 1;
+    double arm_ = kArmPixels;
     std::array<QPointF, 3> arrowEnds_;
     std::array<std::vector<QPointF>, 3> rings_;
 };

@@ -191,6 +191,8 @@ bool GizmoTool::press(QPointF pos, Qt::KeyboardModifiers) {
             if (canEdit_ && !canEdit_()) return true;  // the press is the handle's all the same
             drag_.emplace(*g, *handle, displayPoint(pos));
             dragPose_ = g->frame().pose;
+            pressedAt_ = pos;
+            moved_ = false;
             viewport_->setCursor(Qt::ClosedHandCursor);
             viewport_->update();
             return true;
@@ -223,19 +225,28 @@ void GizmoTool::updateDrag(QPointF pos, Qt::KeyboardModifiers modifiers) {
 }
 
 void GizmoTool::move(QPointF pos, Qt::KeyboardModifiers modifiers) {
-    if (drag_) updateDrag(pos, modifiers);
+    if (!drag_) return;
+    if (!moved_ && (pos - pressedAt_).manhattanLength() <= ViewportWidget::kClickSlop) return;
+    moved_ = true;
+    updateDrag(pos, modifiers);
 }
 
-void GizmoTool::release(QPointF pos, Qt::KeyboardModifiers modifiers) {
-    if (!drag_) return;
+bool GizmoTool::release(QPointF pos, Qt::KeyboardModifiers modifiers) {
+    if (!drag_) return false;  // a path dot, or a drag Esc cancelled
+    if (!moved_) {
+        drag_.reset();
+        viewport_->setCursor(Qt::OpenHandCursor);
+        viewport_->update();
+        return true;  // a click on a handle
+    }
     updateDrag(pos, modifiers);
     const Pose start = drag_->gizmo().frame().pose;
     drag_.reset();
     viewport_->setCursor(Qt::OpenHandCursor);
     viewport_->update();
-    if (dragPose_ == start) {  // a click on a handle
+    if (dragPose_ == start) {  // dragged back to where it started
         if (session_->isDragging()) session_->cancelPreview();
-        return;
+        return false;
     }
     const WriteBack write = session_->releaseKey(editor_->toPlainText(), dragPose_);
     if (write.refused()) {
@@ -243,10 +254,11 @@ void GizmoTool::release(QPointF pos, Qt::KeyboardModifiers modifiers) {
         emit message(write.refusal, 10000);
         if (!write.offer.empty() && offer_ && offer_(write.refusal, write.offerLabel))
             applySourceEdits(editor_, write.offer);
-        return;
+        return false;
     }
     applySourceEdits(editor_, write.edits);
     emit message({});
+    return false;
 }
 
 void GizmoTool::cancelDrag() {

@@ -51,7 +51,7 @@ class GizmoTool : public QObject, public ViewportOverlay {
     void paint(QPainter& painter) override;
     bool press(QPointF pos, Qt::KeyboardModifiers modifiers) override;
     void move(QPointF pos, Qt::KeyboardModifiers modifiers) override;
-    void release(QPointF pos, Qt::KeyboardModifiers modifiers) override;
+    bool release(QPointF pos, Qt::KeyboardModifiers modifiers) override;
     bool key(QKeyEvent* event) override;
 
    signals:
@@ -76,6 +76,8 @@ class GizmoTool : public QObject, public ViewportOverlay {
     bool local_ = false;
     std::optional<GizmoDrag> drag_;
     Pose dragPose_;  // the key with the mouse where it is
+    QPointF pressedAt_;
+    bool moved_ = false;  // past the click slop: a shaking click moves nothing
     QAction* moveAction_ = nullptr;
     QAction* turnAction_ = nullptr;
     QAction* localAction_ = nullptr;

@@ -128,6 +128,7 @@ void ViewportWidget::mousePressEvent(QMouseEvent* event) {
     if (event->button() != Qt::LeftButton) return QWidget::mousePressEvent(event);
     if (overlay_ && !image_.isNull() && overlay_->press(event->position(), event->modifiers())) {
         overlayDrag_ = true;
+        pressAt_ = event->position().toPoint();
         return;
     }
     dragFrom_ = event->position().toPoint();
@@ -157,7 +158,10 @@ void ViewportWidget::mouseReleaseEvent(QMouseEvent* event) {
     if (event->button() != Qt::LeftButton) return QWidget::mouseReleaseEvent(event);
     if (overlayDrag_) {
         overlayDrag_ = false;
-        return overlay_->release(event->position(), event->modifiers());
+        const bool click = (event->position().toPoint() - pressAt_).manhattanLength() <= kClickSlop;
+        if (overlay_->release(event->position(), event->modifiers()) && click)
+            if (const auto point = imagePointAt(event->position())) emit clicked(*point, event->modifiers());
+        return;
     }
     const bool click = dragFrom_ && !dragged_;
     dragFrom_.reset();

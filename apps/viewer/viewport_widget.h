@@ -26,7 +26,10 @@ class ViewportOverlay {
     /// A left press: true if it takes this drag (then no orbit and no click).
     virtual bool press(QPointF pos, Qt::KeyboardModifiers modifiers) = 0;
     virtual void move(QPointF pos, Qt::KeyboardModifiers modifiers) = 0;
-    virtual void release(QPointF pos, Qt::KeyboardModifiers modifiers) = 0;
+    /// The release of a press it took: true if, had nothing been dragged, it
+    /// is a click of the picture all the same (a handle clicked without
+    /// moving selects what is under it, as anywhere else).
+    virtual bool release(QPointF pos, Qt::KeyboardModifiers modifiers) = 0;
     /// A key pressed while the picture has the focus: true if it used it.
     virtual bool key(QKeyEvent* event) = 0;
 };

@@ -4,6 +4,7 @@
 // a part turned about its pivot and a click on a key's dot.
 #include "gizmo.h"
 
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
@@ -91,6 +92,8 @@ class GizmoTest : public QObject {
     void undoAndRedoTheDrag();
     void partTurnsAboutItsPivot();
     void clickingAPathDotJumpsToItsFrame();
+    void aTargetWithoutKeysOrMadeInALoop();
+    void dragOfARobotsArm();
 };
 
 void GizmoTest::initTestCase() {
@@ -108,8 +111,8 @@ void GizmoTest::handlesFollowTheCamera() {
     QCOMPARE(move.centre(), QPointF(200, 150));
     // 20 / (0.5 · 400): a tenth of a unit per pixel; the x arrow points right, y up.
     QCOMPARE(move.unitsPerPixel(), 0.1);
-    QVERIFY(std::fabs(move.arrowEnd(0).x() - 200 - Gizmo::kArmPixels) < 0.01);
-    QVERIFY(std::fabs(move.arrowEnd(1).y() - 150 + Gizmo::kArmPixels) < 0.01);
+    QVERIFY(std::fabs(move.arrowEnd(0).x() - 200 - move.armPixels()) < 0.01);
+    QVERIFY(std::fabs(move.arrowEnd(1).y() - 150 + move.armPixels()) < 0.01);
     QCOMPARE(move.hit({200 + 30, 151}), std::optional(GizmoHandle::X));
     QCOMPARE(move.hit({199, 150 - 40}), std::optional(GizmoHandle::Y));
     QCOMPARE(move.hit({201, 149}), std::optional(GizmoHandle::Screen));
@@ -125,7 +128,7 @@ void GizmoTest::handlesFollowTheCamera() {
 
     // The z ring: from its upper right to its upper left is a quarter turn, +x toward +y.
     const Gizmo turn(camera, frame, GizmoMode::Turn, false);
-    const double r = Gizmo::kArmPixels / std::sqrt(2.0);
+    const double r = turn.armPixels() / std::sqrt(2.0);
     QCOMPARE(turn.hit({200 + r, 150 - r}), std::optional(GizmoHandle::Z));
     GizmoDrag turning(turn, GizmoHandle::Z, {200 + r, 150 - r});
     turning.update({200, 150 - r * 1.4}, false);
@@ -264,7 +267,7 @@ void GizmoTest::partTurnsAboutItsPivot() {
     QVERIFY(std::hypot(g->centre().x() - px, g->centre().y() - py) < 0.5);
 
     // The z ring from its upper right to its upper left, Ctrl held: +90 degrees.
-    const double r = Gizmo::kArmPixels / std::sqrt(2.0);
+    const double r = g->armPixels() / std::sqrt(2.0);
     const QPointF from = g->centre() + QPointF(r, -r);
     QCOMPARE(g->hit(from), std::optional(GizmoHandle::Z));
     QTest::mousePress(w->viewport(), Qt::LeftButton, {}, onScreen(*w, from));
@@ -314,6 +317,111 @@ void GizmoTest::clickingAPathDotJumpsToItsFrame() {
     QVERIFY(!w->editor()->document()->isUndoAvailable());
     QVERIFY(settled(*w, 10));
     QCOMPARE(w->selection()->target(), QStringLiteral("ball"));
+}
+
+void GizmoTest::aTargetWithoutKeysOrMadeInALoop() {
+    QTemporaryDir dir;
+    const QByteArray text = QByteArray(kSmallScene) + "/repeat i 1 2\n/sphere b{i} 1 (i * 3 - 6) 3 8\n/end\n";
+    auto w = bigWindowOn(dir, text.constData(), 0);
+    QVERIFY(w);
+    const QString original = w->editor()->toPlainText();
+
+    // The floor has no keys: a drag changes its creating command's numbers.
+    auto g = select(*w, {5, -1.5f, 2}, "floor");
+    QVERIFY(g);
+    QPointF from = g->centre() + (g->arrowEnd(1) - g->centre()) * 0.6;  // the y arrow
+    QCOMPARE(g->hit(from), std::optional(GizmoHandle::Y));
+    QTest::mousePress(w->viewport(), Qt::LeftButton, {}, onScreen(*w, from));
+    QTest::mouseMove(w->viewport(), onScreen(*w, from + QPointF(0, -60)));
+    QTest::mouseRelease(w->viewport(), Qt::LeftButton, Qt::ControlModifier,
+                        onScreen(*w, from + QPointF(0, -60)));
+    const QString floorLine = w->editor()->document()->findBlockByNumber(4).text();
+    QVERIFY2(floorLine.startsWith(QStringLiteral("/box floor 40 1 40 0 ")) && !floorLine.contains(" -2 "),
+             qPrintable(floorLine));
+    QCOMPARE(w->editor()->toPlainText().count('\n'), original.count('\n'));
+    w->editor()->undo();
+    QCOMPARE(w->editor()->toPlainText(), original);
+    QVERIFY(settled(*w, 0));
+
+    // b1 is made in a loop: refused, with the offer of a key after the loop.
+    QString refusal, label;
+    bool take = false;
+    w->gizmoTool()->setOffer([&](const QString& why, const QString& offer) {
+        refusal = why;
+        label = offer;
+        return take;
+    });
+    for (const bool accept : {false, true}) {
+        take = accept;
+        g = select(*w, {-3, 3, 8}, "b1");
+        QVERIFY(g);
+        from = g->centre() + (g->arrowEnd(0) - g->centre()) * 0.6;
+        QTest::mousePress(w->viewport(), Qt::LeftButton, {}, onScreen(*w, from));
+        QTest::mouseMove(w->viewport(), onScreen(*w, from + QPointF(30, 0)));
+        QTest::mouseRelease(w->viewport(), Qt::LeftButton, {}, onScreen(*w, from + QPointF(30, 0)));
+        QVERIFY2(refusal.contains(QStringLiteral("/repeat")), qPrintable(refusal));
+        QVERIFY(!label.isEmpty());
+        QVERIFY(!w->session()->isDragging());
+        if (!accept) {
+            QCOMPARE(w->editor()->toPlainText(), original);
+            QVERIFY(settled(*w, 0));
+            expectViewportMatchesCore(*w, 0);
+        } else {
+            // The key after the loop's /end: the last line.
+            const auto numbers = keyNumbers(w->editor()->toPlainText(), "b1", 0);
+            QVERIFY(numbers);
+            QVERIFY(w->editor()->toPlainText().trimmed().endsWith(numbers->join(' ')));
+        }
+    }
+}
+
+void GizmoTest::dragOfARobotsArm() {
+    // The seed's example at frame 10 in a larger window: F-2's left arm turned about
+    // its shoulder, its hand's path over the animation drawn with the key dots.
+    auto w = std::make_unique<MainWindow>();
+    w->resizeForViewport({800, 600});
+    w->show();
+    QVERIFY(QTest::qWaitForWindowExposed(w.get()));
+    QVERIFY(w->openFile(QStringLiteral(F2_SOURCE_DIR "/scenes/seed_example.f2")));
+    w->playback()->pause();
+    w->playback()->seek(10);
+    QVERIFY(settled(*w, 10));
+    w->setSelection(Selection{"r1", 2, "lhand"});
+    QCOMPARE(w->selection()->target(), QStringLiteral("r1.lhand"));
+    QTest::keyClick(w->viewport(), Qt::Key_E);
+    const auto g = w->gizmoTool()->gizmo();
+    QVERIFY(g);
+    // A point of the x ring no other handle is near, and round the centre from there.
+    std::optional<QPointF> from;
+    for (const QPointF& p : g->ring(0))
+        if (g->hit(p) == GizmoHandle::X && (!from || p.y() < from->y())) from = p;
+    QVERIFY(from);
+    const QPointF c = g->centre();
+    const QPointF arm = *from - c;
+    const auto turnedBy = [&](double degrees) {
+        const double a = degrees * kPi / 180;
+        return c + QPointF(arm.x() * std::cos(a) - arm.y() * std::sin(a),
+                           arm.x() * std::sin(a) + arm.y() * std::cos(a));
+    };
+    QTest::mousePress(w->viewport(), Qt::LeftButton, {}, onScreen(*w, *from));
+    for (const double degrees : {10.0, 20.0, 30.0})
+        QTest::mouseMove(w->viewport(), onScreen(*w, turnedBy(degrees)));
+    const QSize full = w->viewport()->renderSize();
+    QTRY_VERIFY_WITH_TIMEOUT(w->shownFrame().size == QSize(full.width() / 4, full.height() / 4) &&
+                                 !w->renderController()->hasPendingFrames(),
+                             kWaitMs);
+    // The picture of a drag in progress, for docs/viewer.md.
+    if (qEnvironmentVariableIsSet("F2_GIZMO_SCREENSHOT"))
+        QVERIFY(w->grab().save(qEnvironmentVariable("F2_GIZMO_SCREENSHOT")));
+    QTest::mouseRelease(w->viewport(), Qt::LeftButton, {}, onScreen(*w, turnedBy(30)));
+    // /key 10 r1.lhand: between its keys at 5 and 15, a new line in time order.
+    const auto numbers = keyNumbers(w->editor()->toPlainText(), "r1.lhand", 10);
+    QVERIFY(numbers);
+    QCOMPARE(numbers->size(), 6);
+    QCOMPARE(numbers->mid(0, 3), (QStringList{"0", "0", "0"}));  // a turn moves no pivot
+    const QStringList lines = w->editor()->toPlainText().split('\n');
+    QCOMPARE(lines.indexOf(QRegularExpression("^/key 10 r1.lhand .*")), lines.indexOf("/key 5 r1.lhand") + 1);
+    QVERIFY(settled(*w, 10));
 }
 
 QTEST_MAIN(GizmoTest)
