@@ -94,6 +94,7 @@ class GizmoTest : public QObject {
     void clickingAPathDotJumpsToItsFrame();
     void aTargetWithoutKeysOrMadeInALoop();
     void dragOfARobotsArm();
+    void dragOfABallInFlight();
 };
 
 void GizmoTest::initTestCase() {
@@ -410,9 +411,6 @@ void GizmoTest::dragOfARobotsArm() {
     QTRY_VERIFY_WITH_TIMEOUT(w->shownFrame().size == QSize(full.width() / 4, full.height() / 4) &&
                                  !w->renderController()->hasPendingFrames(),
                              kWaitMs);
-    // The picture of a drag in progress, for docs/viewer.md.
-    if (qEnvironmentVariableIsSet("F2_GIZMO_SCREENSHOT"))
-        QVERIFY(w->grab().save(qEnvironmentVariable("F2_GIZMO_SCREENSHOT")));
     QTest::mouseRelease(w->viewport(), Qt::LeftButton, {}, onScreen(*w, turnedBy(30)));
     // /key 10 r1.lhand: between its keys at 5 and 15, a new line in time order.
     const auto numbers = keyNumbers(w->editor()->toPlainText(), "r1.lhand", 10);
@@ -422,6 +420,43 @@ void GizmoTest::dragOfARobotsArm() {
     const QStringList lines = w->editor()->toPlainText().split('\n');
     QCOMPARE(lines.indexOf(QRegularExpression("^/key 10 r1.lhand .*")), lines.indexOf("/key 5 r1.lhand") + 1);
     QVERIFY(settled(*w, 10));
+}
+
+void GizmoTest::dragOfABallInFlight() {
+    // The gallery's game of catch at frame 24: the ball at the top of its arc,
+    // its path over the animation with a dot per key, lifted by its y arrow.
+    auto w = std::make_unique<MainWindow>();
+    w->resizeForViewport({800, 600});
+    w->show();
+    QVERIFY(QTest::qWaitForWindowExposed(w.get()));
+    QVERIFY(w->openFile(QStringLiteral(F2_SOURCE_DIR "/scenes/gallery/catch.f2")));
+    w->playback()->pause();
+    w->playback()->seek(24);
+    QVERIFY(settled(*w, 24));
+    w->setSelection(Selection{"ball", std::nullopt, {}});
+    const auto g = w->gizmoTool()->gizmo();
+    QVERIFY(g);
+    QVERIFY(w->gizmoTool()->pathDots().size() >= 20);
+    const QPointF from = g->centre() + (g->arrowEnd(1) - g->centre()) * 0.7;
+    QCOMPARE(g->hit(from), std::optional(GizmoHandle::Y));
+    QTest::mousePress(w->viewport(), Qt::LeftButton, {}, onScreen(*w, from));
+    QTest::mouseMove(w->viewport(), onScreen(*w, from + QPointF(0, -20)));
+    QTest::mouseMove(w->viewport(), onScreen(*w, from + QPointF(1, -45)));
+    const QSize full = w->viewport()->renderSize();
+    QTRY_VERIFY_WITH_TIMEOUT(w->shownFrame().size == QSize(full.width() / 4, full.height() / 4) &&
+                                 !w->renderController()->hasPendingFrames(),
+                             kWaitMs);
+    // The picture of a drag in progress, for docs/viewer.md.
+    if (qEnvironmentVariableIsSet("F2_GIZMO_SCREENSHOT"))
+        QVERIFY(w->grab().save(qEnvironmentVariable("F2_GIZMO_SCREENSHOT")));
+    QTest::mouseRelease(w->viewport(), Qt::LeftButton, {}, onScreen(*w, from + QPointF(1, -45)));
+    // Its key at 24 gets a higher y in place; x and z stay as written.
+    const auto numbers = keyNumbers(w->editor()->toPlainText(), "ball", 24);
+    QVERIFY(numbers);
+    QCOMPARE(numbers->at(0), QStringLiteral("-5"));
+    QVERIFY(numbers->at(1).toDouble() > 140);
+    QCOMPARE(numbers->at(2), QStringLiteral("285.8"));
+    QVERIFY(settled(*w, 24));
 }
 
 QTEST_MAIN(GizmoTest)
