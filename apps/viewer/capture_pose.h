@@ -2,12 +2,10 @@
 /// The poses *Capture* writes into `/key` lines: what the selection or the
 /// camera is at a frame, as the key's six numbers mean it (SPEC 6, 9.1, 9.2).
 /// Pure functions of the scene, so they are unit-tested without a window.
-#include <memory>
 #include <optional>
 
 #include "core/render/pick.h"
 #include "core/scene/scene_desc.h"
-#include "gizmo.h"
 
 namespace f2::viewer {
 
@@ -15,18 +13,6 @@ namespace f2::viewer {
 /// animation has it at `frame`: an object's own pose (in the frame it rides
 /// on, if attached), a part's offset and rotation about its pivot.
 Pose selectionKeyPose(const SceneDesc& scene, std::size_t object, std::optional<int> part, int frame);
-
-/// Where that key is read at `frame`: the frame it rides on (a part: its
-/// parent's frame at its pivot, and its rest rotation) and its six numbers,
-/// for the handles that drag it.
-GizmoFrame selectionKeyFrame(const SceneDesc& scene, std::size_t object, std::optional<int> part, int frame);
-
-/// A copy of `scene` whose object `object` (or its `part`) has a key at
-/// `frame` with `pose`: its key there replaced (keeping its mode), else one
-/// added. What the text says once that key is written, without parsing it
-/// again: the picture of a drag in progress.
-std::shared_ptr<const SceneDesc> sceneWithKey(const SceneDesc& scene, std::size_t object,
-                                              std::optional<int> part, int frame, const Pose& pose);
 
 /// The camera key for `frame`. Without `view`, the pose the camera's keys
 /// give there (its `/camera` pose without keys), so keying changes nothing on

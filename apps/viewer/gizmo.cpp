@@ -62,7 +62,7 @@ Vec3 eulerDegreesNear(const Mat3& rotation, Vec3 near) {
 
 Gizmo::Gizmo(const Camera& camera, const GizmoFrame& frame, GizmoMode mode, bool localAxes)
     : camera_(camera), frame_(frame), mode_(mode), local_(localAxes), world_(frame.world()) {
-    const Vec3 origin = world_.translation;
+    const Vec3 origin = frame.centre();
     const Vec3 forward = camera.worldFromCamera.column(2);
     const double depth = dot(origin - camera.eye, forward);
     float px = 0, py = 0;
@@ -133,7 +133,7 @@ std::optional<double> GizmoDrag::alongAxis(QPointF point) const {
     const Ray ray = gizmo_.camera().rayThrough(float(point.x()), float(point.y()));
     const Vec3 u = gizmo_.axis(int(handle_));
     const Vec3 v = normalize(ray.direction);
-    const Vec3 w = gizmo_.frame().world().translation - ray.origin;
+    const Vec3 w = gizmo_.frame().centre() - ray.origin;
     const double b = dot(u, v), d = dot(u, w), e = dot(v, w);
     const double across = 1 - b * b;
     if (across < 1e-4) return std::nullopt;  // the axis runs along the ray
@@ -145,7 +145,7 @@ std::optional<Vec3> GizmoDrag::onScreenPlane(QPointF point) const {
     const Vec3 forward = gizmo_.camera().worldFromCamera.column(2);
     const double along = dot(ray.direction, forward);
     if (along <= 0) return std::nullopt;
-    const double t = dot(gizmo_.frame().world().translation - ray.origin, forward) / along;
+    const double t = dot(gizmo_.frame().centre() - ray.origin, forward) / along;
     return ray.origin + ray.direction * float(t);
 }
 
@@ -213,21 +213,22 @@ Pose GizmoDrag::turned(double degrees) const {
     // makes R(key') = Mᵀ · Rot(u) · M · R(key).
     const Mat3 m = frame.parent.linear * frame.rest;
     const Vec3 u = gizmo_.axis(int(handle_));
-    const Vec3 inKey = m.transposed() * u;
+    const Mat3 turn = rotationAbout(u, degrees);
     const int i = int(handle_);
     // Rz·Ry·Rx: a turn about the key's own z (parent axes) or about the target's own
     // x (local axes) adds to that one angle; written as such, it stays exact.
-    if (!gizmo_.localAxes() && i == 2 && inKey.z > 1 - 1e-6f) {
+    if (!gizmo_.localAxes() && i == 2 && (m.transposed() * u).z > 1 - 1e-6f)
         pose.rotation.z += float(degrees);
-        return pose;
-    }
-    if (gizmo_.localAxes() && i == 0) {
+    else if (gizmo_.localAxes() && i == 0)
         pose.rotation.x += float(degrees);
-        return pose;
+    else
+        pose.rotation = eulerDegreesNear(m.transposed() * turn * m * rotationFromEulerDegrees(pose.rotation),
+                                         pose.rotation);
+    if (!(frame.handle == Vec3{})) {
+        // About the handles' centre c, not the frame's origin o: o goes to c + turn·(o − c).
+        const Vec3 c = frame.centre(), o = frame.world().translation;
+        pose.position = frame.parent.linear.transposed() * (c + turn * (o - c) - frame.parent.translation);
     }
-    const Mat3 turnedKey =
-        m.transposed() * rotationAbout(u, degrees) * m * rotationFromEulerDegrees(pose.rotation);
-    pose.rotation = eulerDegreesNear(turnedKey, pose.rotation);
     return pose;
 }
 

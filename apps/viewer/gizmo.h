@@ -19,14 +19,20 @@ namespace f2::viewer {
 /// object: `parent` is the frame it rides on (the world when it rides on
 /// nothing) and `rest` none. A part: `parent` is its parent's frame moved to
 /// its pivot, and `rest` its rest rotation, so its key turns it about its pivot.
+/// The handles are at `handle` in the target's frame: its origin, or a named
+/// light's written position.
 struct GizmoFrame {
     Transform parent;
     Mat3 rest;
     Pose pose;  ///< the key's six numbers at the frame
+    Vec3 handle;
 
-    /// The target's world frame for `key` (its origin: where the handles are).
+    /// The target's world frame for `key`.
     Transform world(const Pose& key) const;
     Transform world() const { return world(pose); }
+    /// Where the handles are in the world for `key`: turns are about this point.
+    Vec3 centre(const Pose& key) const { return world(key).applyToPoint(handle); }
+    Vec3 centre() const { return centre(pose); }
 };
 
 enum class GizmoMode { Move, Turn };

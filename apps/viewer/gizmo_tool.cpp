@@ -115,15 +115,53 @@ std::vector<std::pair<QPointF, int>> GizmoTool::pathDots() const {
     return dots;
 }
 
+std::vector<std::pair<QPointF, Selection>> GizmoTool::markers() const {
+    std::vector<std::pair<QPointF, Selection>> out;
+    if (viewport_->image().isNull()) return out;
+    const Camera camera = viewport_->displayCamera();
+    const QPointF offset = viewport_->imageRect().topLeft();
+    for (const TargetMarker& marker : session_->targetMarkers()) {
+        // Nearer than this the marker is the eye itself (the camera seen through).
+        if (length(marker.at - camera.eye) < 1e-3f) continue;
+        float px = 0, py = 0;
+        if (camera.project(marker.at, px, py)) out.emplace_back(offset + QPointF(px, py), marker.target);
+    }
+    return out;
+}
+
 void GizmoTool::paint(QPainter& painter) {
-    if (viewport_->image().isNull() || !session_->selection()) return;
+    if (viewport_->image().isNull()) return;
     painter.save();
     painter.setRenderHint(QPainter::Antialiasing, true);
     const QPointF offset = viewport_->imageRect().topLeft();
     painter.setClipRect(viewport_->imageRect());
-    paintPath(painter, viewport_->displayCamera(), offset);
-    if (const auto g = gizmo()) paintGizmo(painter, *g, offset);
+    paintMarkers(painter);
+    if (session_->selection()) {
+        paintPath(painter, viewport_->displayCamera(), offset);
+        if (const auto g = gizmo()) paintGizmo(painter, *g, offset);
+    }
     painter.restore();
+}
+
+void GizmoTool::paintMarkers(QPainter& painter) const {
+    for (const auto& [at, target] : markers()) {
+        const bool selected = session_->selection() == target;
+        painter.setPen(QPen(selected ? kScreenColour : QColor(230, 230, 230), selected ? 2 : 1.2));
+        painter.setBrush(QColor(40, 40, 40, 160));
+        if (target.kind == Selection::Kind::Camera) {
+            // A box with a lens.
+            painter.drawRect(QRectF(at - QPointF(6, 4), QSizeF(9, 8)));
+            painter.drawPolygon(QPolygonF({at + QPointF(3, 0), at + QPointF(7, -4), at + QPointF(7, 4)}));
+            continue;
+        }
+        // A bulb with rays.
+        painter.drawEllipse(at, 4, 4);
+        for (int k = 0; k < 8; ++k) {
+            const double a = k * kPi / 4;
+            const QPointF d(std::cos(a), std::sin(a));
+            painter.drawLine(at + d * 6, at + d * 8.5);
+        }
+    }
 }
 
 void GizmoTool::paintPath(QPainter& painter, const Camera& camera, QPointF offset) const {
@@ -198,11 +236,20 @@ bool GizmoTool::press(QPointF pos, Qt::KeyboardModifiers) {
             return true;
         }
     }
+    const auto near = [&](QPointF at) {
+        return std::hypot(pos.x() - at.x(), pos.y() - at.y()) <= Gizmo::kHitPixels;
+    };
     for (const auto& [at, frame] : pathDots()) {
-        const QPointF d = pos - at;
-        if (std::hypot(d.x(), d.y()) <= Gizmo::kHitPixels) {
+        if (near(at)) {
             session_->playback()->pause();
             session_->playback()->seek(frame);
+            return true;
+        }
+    }
+    // A light or the camera has no surface for a click: its marker selects it.
+    for (const auto& [at, target] : markers()) {
+        if (near(at)) {
+            session_->setSelection(target);
             return true;
         }
     }

@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "gizmo.h"
+#include "selection.h"
 #include "viewport_widget.h"
 
 class QAction;
@@ -47,6 +48,9 @@ class GizmoTool : public QObject, public ViewportOverlay {
     std::optional<Gizmo> gizmo() const;
     /// The key dots of the motion path where they are drawn (widget positions) and their frames.
     std::vector<std::pair<QPointF, int>> pathDots() const;
+    /// The named lights' and the camera's markers where they are drawn (widget
+    /// positions; the camera's only while looking around, else it is the eye).
+    std::vector<std::pair<QPointF, Selection>> markers() const;
 
     void paint(QPainter& painter) override;
     bool press(QPointF pos, Qt::KeyboardModifiers modifiers) override;
@@ -65,6 +69,7 @@ class GizmoTool : public QObject, public ViewportOverlay {
     void cancelDrag();
     void syncActions();
     void paintPath(QPainter& painter, const Camera& camera, QPointF offset) const;
+    void paintMarkers(QPainter& painter) const;
     void paintGizmo(QPainter& painter, const Gizmo& gizmo, QPointF offset) const;
 
     StudioSession* session_;

@@ -11,6 +11,7 @@
 #include "core/render/renderer.h"
 #include "core/scene/models.h"
 #include "include_origin.h"
+#include "key_target.h"
 #include "playback.h"
 #include "scene_document.h"
 
@@ -166,8 +167,8 @@ void StudioSession::setSelection(std::optional<Selection> selection) {
 
 void StudioSession::updateSelectionView() {
     const auto scene = document_->scene();
-    const auto object = selection_ && scene ? findObject(*scene, *selection_) : std::nullopt;
-    if (!object) {
+    const Track* track = selection_ && scene ? targetTrack(*scene, *selection_) : nullptr;
+    if (!track) {
         selection_.reset();  // deleted or renamed in the text
         selectionView_.reset();
         motionPath_.reset();
@@ -175,14 +176,23 @@ void StudioSession::updateSelectionView() {
     }
     // A preview is a copy of the document's scene with one key changed: the same objects.
     const auto shown = sceneShown();
-    updateMotionPath(shown, *object);
-    const SceneObject& target = scene->objects[*object];
+    updateMotionPath(shown);
     SelectionView view;
     // The timeline's steps are whole frames: a key at a fractional time
     // (SPEC 10.4) shows at the nearest one.
-    for (const Key& key :
-         (selection_->part ? target.partTracks[std::size_t(*selection_->part)] : target.track).keys)
-        view.keyFrames << int(std::lround(key.time));
+    for (const Key& key : track->keys) view.keyFrames << int(std::lround(key.time));
+    const auto object = findObject(*scene, *selection_);
+    if (!object) {
+        // A light or the camera: no surface to outline; the label says where it is.
+        const Vec3 at = targetPosition(*shown, *selection_, shownFrame_.time).value_or(Vec3{});
+        view.label = tr("%1 at (%2, %3, %4)")
+                         .arg(selection_->target())
+                         .arg(double(at.x), 0, 'f', 1)
+                         .arg(double(at.y), 0, 'f', 1)
+                         .arg(double(at.z), 0, 'f', 1);
+        selectionView_ = std::move(view);
+        return;
+    }
     // The frame shown brings the bounds when it was rendered from this scene
     // with this selection; otherwise (a click, an edit since) evaluate it here.
     if (shownFrame_.bounds && (shownFrame_.scene == scene || shownFrame_.scene == shown) &&
@@ -323,9 +333,13 @@ std::shared_ptr<const SceneDesc> StudioSession::sceneShown() const {
 
 std::optional<GizmoFrame> StudioSession::selectionKeyFrame() const {
     const auto scene = sceneShown();
-    const auto object = selection_ && scene ? findObject(*scene, *selection_) : std::nullopt;
-    if (!object) return std::nullopt;
-    return f2::viewer::selectionKeyFrame(*scene, *object, selection_->part, playback_->frame());
+    if (!selection_ || !scene) return std::nullopt;
+    return targetKeyFrame(*scene, *selection_, playback_->frame());
+}
+
+std::vector<TargetMarker> StudioSession::targetMarkers() const {
+    const auto scene = sceneShown();
+    return scene ? f2::viewer::targetMarkers(*scene, shownFrame_.time) : std::vector<TargetMarker>{};
 }
 
 void StudioSession::previewKey(const Pose& key) {
@@ -333,15 +347,14 @@ void StudioSession::previewKey(const Pose& key) {
     // no parse per mouse move, no undo step per move, and the text is left
     // byte for byte as it was if the drag is cancelled.
     const auto scene = document_->scene();
-    const auto object = selection_ && scene ? findObject(*scene, *selection_) : std::nullopt;
-    if (!object) return;
+    if (!selection_ || !scene || !targetTrack(*scene, *selection_)) return;
     if (!dragging_) {
         dragging_ = true;
         playback_->pause();
         // The key goes at the frame on the timeline: show that frame exactly.
         if (playback_->time() != playback_->frame()) playback_->seek(playback_->frame());
     }
-    previewScene_ = sceneWithKey(*scene, *object, selection_->part, playback_->frame(), key);
+    previewScene_ = sceneWithKey(*scene, *selection_, playback_->frame(), key);
     scheduleFrame();
 }
 
@@ -353,7 +366,7 @@ void StudioSession::cancelPreview() {
 
 WriteBack StudioSession::releaseKey(const QString& text, const Pose& key) {
     const auto scene = document_->scene();
-    if (!selection_ || !scene) {
+    if (!selection_ || !scene || !targetTrack(*scene, *selection_)) {
         cancelPreview();
         return {};
     }
@@ -372,23 +385,17 @@ WriteBack StudioSession::releaseKey(const QString& text, const Pose& key) {
     return write;
 }
 
-void StudioSession::updateMotionPath(const std::shared_ptr<const SceneDesc>& scene, std::size_t object) {
+void StudioSession::updateMotionPath(const std::shared_ptr<const SceneDesc>& scene) {
     if (motionPath_ && pathScene_ == scene && pathSelection_ == selection_) return;
     pathScene_ = scene;
     pathSelection_ = selection_;
-    const SceneObject& target = scene->objects[object];
-    const std::optional<int> part = selection_->part;
-    const FrameRef ref{std::uint32_t(object), part.value_or(-1)};
-    const auto at = [&](double t) {
-        const Transform world = worldFromRef(*scene, ref, t);
-        return part ? partShapeCentre(target, *part, world) : world.translation;
-    };
+    const auto at = [&](double t) { return targetPosition(*scene, *selection_, t).value_or(Vec3{}); };
     MotionPath path;
     const int last = scene->lastFrame();
     const int step = std::max(1, (last + kMaxPathPoints - 1) / kMaxPathPoints);
     for (int frame = 0; frame <= last; frame += step) path.points.push_back(at(frame));
     if (last % step != 0) path.points.push_back(at(last));
-    for (const Key& key : (part ? target.partTracks[std::size_t(*part)] : target.track).keys)
+    for (const Key& key : targetTrack(*scene, *selection_)->keys)
         path.keys.push_back({int(std::lround(key.time)), at(key.time)});
     motionPath_ = std::move(path);
 }

@@ -18,6 +18,7 @@
 #include "core/render/camera.h"
 #include "core/render/image.h"
 #include "gizmo.h"
+#include "key_target.h"
 #include "playback_antialias.h"
 #include "render_controller.h"
 #include "scene_locations.h"
@@ -116,8 +117,8 @@ class StudioSession : public QObject {
     /// there (capture_pose.h, camera_key_writer.h).
     Capture keyCameraHere(const QString& text, const std::optional<Pose>& lookAround) const;
 
-    /// The selection's key as the handles drag it: at the frame on the
-    /// timeline, in the scene on screen. Nothing without a selection.
+    /// The selection's key as the handles drag it (key_target.h): at the
+    /// frame on the timeline, in the scene on screen. Nothing without a selection.
     std::optional<GizmoFrame> selectionKeyFrame() const;
     /// A handle is being dragged: the frame on the timeline is rendered with
     /// the selection's key there set to `key`, at a quarter of the view's size
@@ -149,6 +150,9 @@ class StudioSession : public QObject {
     };
     /// Nothing without a selection; follows the frames shown.
     const std::optional<MotionPath>& motionPath() const { return motionPath_; }
+    /// The named lights and the camera where they are in the frame shown:
+    /// what the picture marks for a click to select them.
+    std::vector<TargetMarker> targetMarkers() const;
     static constexpr int kMaxPathPoints = 1000;
 
    public slots:
@@ -183,7 +187,7 @@ class StudioSession : public QObject {
     Capture keyCapture(const QString& text, const Pose& pose) const;
     /// The scene the picture shows: the drag's preview, else the document's.
     std::shared_ptr<const SceneDesc> sceneShown() const;
-    void updateMotionPath(const std::shared_ptr<const SceneDesc>& scene, std::size_t object);
+    void updateMotionPath(const std::shared_ptr<const SceneDesc>& scene);
 
     SceneDocument* document_ = nullptr;
     Playback* playback_ = nullptr;

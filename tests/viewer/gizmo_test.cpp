@@ -95,6 +95,7 @@ class GizmoTest : public QObject {
     void aTargetWithoutKeysOrMadeInALoop();
     void dragOfARobotsArm();
     void dragOfABallInFlight();
+    void aLightAndTheCameraByTheirMarkers();
 };
 
 void GizmoTest::initTestCase() {
@@ -134,6 +135,18 @@ void GizmoTest::handlesFollowTheCamera() {
     GizmoDrag turning(turn, GizmoHandle::Z, {200 + r, 150 - r});
     turning.update({200, 150 - r * 1.4}, false);
     QVERIFY(std::fabs(turning.update({200 - r, 150 - r}, false).rotation.z - 90) < 1e-3);
+
+    // A light's handles are at its written position: a turn is about that point, so
+    // the pose's origin swings round it (and the light stays where it is).
+    GizmoFrame light;
+    light.pose = {{0, 0, 20}, {}};
+    light.handle = {10, 0, 0};
+    const Gizmo lightTurn(camera, light, GizmoMode::Turn, false);
+    QCOMPARE(lightTurn.centre(), QPointF(300, 150));  // 10 units at a tenth of a unit per pixel
+    GizmoDrag swing(lightTurn, GizmoHandle::Z, lightTurn.centre() + QPointF(r, -r));
+    const Pose swung = swing.update(lightTurn.centre() + QPointF(-r, -r), false);
+    QVERIFY(length(swung.position - Vec3{10, -10, 20}) < 1e-3f);
+    QCOMPARE(swung.rotation, (Vec3{0, 0, 90}));
 
     // A turn about another axis writes the nearest of the equal angle triples.
     const Mat3 m = rotationFromEulerDegrees(Vec3{170, 10, -20});
@@ -457,6 +470,74 @@ void GizmoTest::dragOfABallInFlight() {
     QVERIFY(numbers->at(1).toDouble() > 140);
     QCOMPARE(numbers->at(2), QStringLiteral("285.8"));
     QVERIFY(settled(*w, 24));
+}
+
+void GizmoTest::aLightAndTheCameraByTheirMarkers() {
+    QTemporaryDir dir;
+    const QByteArray text = QByteArray(kSmallScene) + "/point_light 0.5 0 3 8 name bulb\n";
+    auto w = bigWindowOn(dir, text.constData(), 0);
+    QVERIFY(w);
+    // The bulb's marker (the camera's is the eye: not drawn); a click on it selects it.
+    auto markers = w->gizmoTool()->markers();
+    QCOMPARE(int(markers.size()), 1);
+    QCOMPARE(markers[0].second.target(), QStringLiteral("bulb"));
+    QTest::mouseClick(w->viewport(), Qt::LeftButton, {}, markers[0].first.toPoint());
+    QVERIFY(w->selection());
+    QCOMPARE(w->selection()->kind, Selection::Kind::Light);
+    QVERIFY(w->selectionStatus().startsWith(QStringLiteral("bulb at (0.0, 3.0, 8.0)")));
+    auto g = w->gizmoTool()->gizmo();
+    QVERIFY(g);
+    QVERIFY(std::hypot(onScreen(*w, g->centre()).x() - markers[0].first.x(),
+                       onScreen(*w, g->centre()).y() - markers[0].first.y()) < 1);
+
+    // Its x arrow: a light without keys gets its first key after its line, the pose's x.
+    QPointF from = g->centre() + (g->arrowEnd(0) - g->centre()) * 0.6;
+    QTest::mousePress(w->viewport(), Qt::LeftButton, {}, onScreen(*w, from));
+    QTest::mouseMove(w->viewport(), onScreen(*w, from + QPointF(40, 0)));
+    QTest::mouseRelease(w->viewport(), Qt::LeftButton, {}, onScreen(*w, from + QPointF(40, 0)));
+    const Camera camera = w->viewport()->displayCamera();
+    const double dx = onPlaneZ(camera, from + QPointF(40, 0), 8).x - onPlaneZ(camera, from, 8).x;
+    const QStringList lines = w->editor()->toPlainText().split('\n');
+    const int lightLine = int(lines.indexOf("/point_light 0.5 0 3 8 name bulb"));
+    QVERIFY(lightLine > 0);
+    const auto numbers = keyNumbers(lines.value(lightLine + 1), "bulb", 0);
+    QVERIFY2(numbers, qPrintable(lines.value(lightLine + 1)));
+    QVERIFY(std::fabs(numbers->at(0).toDouble() - dx) <= g->unitsPerPixel());
+    QCOMPARE(numbers->mid(1), (QStringList{"0", "0", "0", "0", "0"}));
+    QVERIFY(settled(*w, 0));
+    expectViewportMatchesCore(*w, 0);
+
+    // Looking around (three drags on the floor, 180 degrees), the camera's marker is in view.
+    ViewportWidget* view = w->viewport();
+    const QPointF corner = view->imageRect().bottomLeft() + QPointF(8, -8);
+    for (int i = 0; i < 3; ++i) {
+        QTest::mousePress(view, Qt::LeftButton, {}, corner.toPoint());
+        QTest::mouseMove(view, (corner + QPointF(100, 0)).toPoint());
+        QTest::mouseMove(view, (corner + QPointF(200, 0)).toPoint());
+        QTest::mouseRelease(view, Qt::LeftButton, {}, (corner + QPointF(200, 0)).toPoint());
+    }
+    QVERIFY(view->isOrbiting());
+    QVERIFY(settled(*w, 0));
+    markers = w->gizmoTool()->markers();
+    const auto cameraMarker = std::find_if(markers.begin(), markers.end(), [](const auto& m) {
+        return m.second.kind == Selection::Kind::Camera;
+    });
+    QVERIFY(cameraMarker != markers.end());
+    QTest::mouseClick(view, Qt::LeftButton, {}, cameraMarker->first.toPoint());
+    QCOMPARE(w->selection()->target(), QStringLiteral("camera"));
+    g = w->gizmoTool()->gizmo();
+    QVERIFY(g);
+    // Up its y arrow: the camera has no keys, so its /camera line's eye rises.
+    from = g->centre() + (g->arrowEnd(1) - g->centre()) * 0.6;
+    QCOMPARE(g->hit(from), std::optional(GizmoHandle::Y));
+    QTest::mousePress(view, Qt::LeftButton, {}, onScreen(*w, from));
+    QTest::mouseMove(view, onScreen(*w, from + QPointF(0, -30)));
+    QTest::mouseRelease(view, Qt::LeftButton, {}, onScreen(*w, from + QPointF(0, -30)));
+    QVERIFY(w->editor()->toPlainText().startsWith(QStringLiteral("/camera 96 72 0.6 0 ")));
+    QVERIFY(settled(*w, 0));
+    QVERIFY(w->document()->scene()->camera.pose.position.y > 0.5f);
+    QCOMPARE(w->document()->scene()->camera.pose.position.z, -10.0f);
+    QVERIFY(view->isOrbiting());  // the view is still the look-around
 }
 
 QTEST_MAIN(GizmoTest)
