@@ -4,6 +4,7 @@
 // a part turned about its pivot and a click on a key's dot.
 #include "gizmo.h"
 
+#include <QFile>
 #include <QRegularExpression>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -54,6 +55,21 @@ bool settled(MainWindow& w, double t) {
                },
                kWaitMs) &&
            waitForShownFrame(w, t);
+}
+
+/// A window with an 800x600 picture on a copy of the repository's scene `file`
+/// in `dir` (a drag edits it: an autosave copy of the original would be offered
+/// to the next test), paused at frame `t` with that frame on screen.
+std::unique_ptr<MainWindow> copyOpened(const QTemporaryDir& dir, const char* file, double t) {
+    const QString path = dir.filePath("scene.f2");
+    if (!QFile::copy(QStringLiteral(F2_SOURCE_DIR "/") + file, path)) return nullptr;
+    auto w = std::make_unique<MainWindow>();
+    w->resizeForViewport({800, 600});
+    w->show();
+    if (!QTest::qWaitForWindowExposed(w.get()) || !w->openFile(path)) return nullptr;
+    w->playback()->pause();
+    w->playback()->seek(t);
+    return settled(*w, t) ? std::move(w) : nullptr;
 }
 
 /// Widget position of display point `p` (a Gizmo's pixels).
@@ -392,14 +408,9 @@ void GizmoTest::aTargetWithoutKeysOrMadeInALoop() {
 void GizmoTest::dragOfARobotsArm() {
     // The seed's example at frame 10 in a larger window: F-2's left arm turned about
     // its shoulder, its hand's path over the animation drawn with the key dots.
-    auto w = std::make_unique<MainWindow>();
-    w->resizeForViewport({800, 600});
-    w->show();
-    QVERIFY(QTest::qWaitForWindowExposed(w.get()));
-    QVERIFY(w->openFile(QStringLiteral(F2_SOURCE_DIR "/scenes/seed_example.f2")));
-    w->playback()->pause();
-    w->playback()->seek(10);
-    QVERIFY(settled(*w, 10));
+    QTemporaryDir dir;
+    auto w = copyOpened(dir, "scenes/seed_example.f2", 10);
+    QVERIFY(w);
     w->setSelection(Selection{"r1", 2, "lhand"});
     QCOMPARE(w->selection()->target(), QStringLiteral("r1.lhand"));
     QTest::keyClick(w->viewport(), Qt::Key_E);
@@ -438,14 +449,9 @@ void GizmoTest::dragOfARobotsArm() {
 void GizmoTest::dragOfABallInFlight() {
     // The gallery's game of catch at frame 24: the ball at the top of its arc,
     // its path over the animation with a dot per key, lifted by its y arrow.
-    auto w = std::make_unique<MainWindow>();
-    w->resizeForViewport({800, 600});
-    w->show();
-    QVERIFY(QTest::qWaitForWindowExposed(w.get()));
-    QVERIFY(w->openFile(QStringLiteral(F2_SOURCE_DIR "/scenes/gallery/catch.f2")));
-    w->playback()->pause();
-    w->playback()->seek(24);
-    QVERIFY(settled(*w, 24));
+    QTemporaryDir dir;
+    auto w = copyOpened(dir, "scenes/gallery/catch.f2", 24);
+    QVERIFY(w);
     w->setSelection(Selection{"ball", std::nullopt, {}});
     const auto g = w->gizmoTool()->gizmo();
     QVERIFY(g);
