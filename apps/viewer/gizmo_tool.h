@@ -6,6 +6,7 @@
 /// turns, L switches between the parent's and the target's own axes, Esc
 /// cancels a drag, Ctrl snaps.
 #include <QObject>
+#include <QPointer>
 #include <functional>
 #include <optional>
 
@@ -73,7 +74,7 @@ class GizmoTool : public QObject, public ViewportOverlay {
     void paintGizmo(QPainter& painter, const Gizmo& gizmo, QPointF offset) const;
 
     StudioSession* session_;
-    ViewportWidget* viewport_;
+    QPointer<ViewportWidget> viewport_;  // the window may delete it first
     QPlainTextEdit* editor_;
     std::function<bool()> canEdit_;
     Offer offer_;

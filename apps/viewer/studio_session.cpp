@@ -182,28 +182,23 @@ void StudioSession::updateSelectionView() {
     // (SPEC 10.4) shows at the nearest one.
     for (const Key& key : track->keys) view.keyFrames << int(std::lround(key.time));
     const auto object = findObject(*scene, *selection_);
+    Vec3 centre;
     if (!object) {
         // A light or the camera: no surface to outline; the label says where it is.
-        const Vec3 at = targetPosition(*shown, *selection_, shownFrame_.time).value_or(Vec3{});
-        view.label = tr("%1 at (%2, %3, %4)")
-                         .arg(selection_->target())
-                         .arg(double(at.x), 0, 'f', 1)
-                         .arg(double(at.y), 0, 'f', 1)
-                         .arg(double(at.z), 0, 'f', 1);
-        selectionView_ = std::move(view);
-        return;
-    }
-    // The frame shown brings the bounds when it was rendered from this scene
-    // with this selection; otherwise (a click, an edit since) evaluate it here.
-    if (shownFrame_.bounds && (shownFrame_.scene == scene || shownFrame_.scene == shown) &&
-        shownFrame_.boundsOf == BoundsOf{*object, selection_->part}) {
-        view.bounds = *shownFrame_.bounds;
+        centre = targetPosition(*shown, *selection_, shownFrame_.time).value_or(Vec3{});
     } else {
-        EvaluatedFrame frame;
-        evaluateFrame(*shown, shownFrame_.time, frame);
-        view.bounds = selectionBounds(*shown, frame, *object, selection_->part);
+        // The frame shown brings the bounds when it was rendered from this scene
+        // with this selection; otherwise (a click, an edit since) evaluate it here.
+        if (shownFrame_.bounds && (shownFrame_.scene == scene || shownFrame_.scene == shown) &&
+            shownFrame_.boundsOf == BoundsOf{*object, selection_->part}) {
+            view.bounds = *shownFrame_.bounds;
+        } else {
+            EvaluatedFrame frame;
+            evaluateFrame(*shown, shownFrame_.time, frame);
+            view.bounds = selectionBounds(*shown, frame, *object, selection_->part);
+        }
+        centre = (view.bounds.lo + view.bounds.hi) * 0.5f;
     }
-    const Vec3 centre = (view.bounds.lo + view.bounds.hi) * 0.5f;
     view.label = tr("%1 at (%2, %3, %4)")
                      .arg(selection_->target())
                      .arg(double(centre.x), 0, 'f', 1)
@@ -297,14 +292,8 @@ StudioSession::Capture StudioSession::keySelectionHere(const QString& text) cons
     const auto scene = document_->scene();
     const auto object = selection_ ? findObject(*scene, *selection_) : std::nullopt;
     if (!object) return {{}, tr("Select an object or part first (click it in the picture)."), 5000};
-    return keyCapture(text, selectionKeyPose(*scene, *object, selection_->part, playback_->frame()));
-}
-
-StudioSession::Capture StudioSession::keyCapture(const QString& text, const Pose& pose) const {
-    const auto scene = document_->scene();
-    const auto object = selection_ ? findObject(*scene, *selection_) : std::nullopt;
-    if (!object) return {};
     const int frame = playback_->frame();
+    const Pose pose = selectionKeyPose(*scene, *object, selection_->part, frame);
     // A new target's first key goes after its creating line, unless a loop
     // made it (inside the loop it would be read on every pass) or it is in
     // another file: then at the end.

@@ -183,8 +183,6 @@ class StudioSession : public QObject {
     /// "robot", "lamp"), or 0 when it is in another file or the text has
     /// changed there since the scene parsed.
     int lineOf(const QString& text, const CreatedAt& created, std::string_view type) const;
-    /// The `/key` edit of the selection at the frame on the timeline with `pose`.
-    Capture keyCapture(const QString& text, const Pose& pose) const;
     /// The scene the picture shows: the drag's preview, else the document's.
     std::shared_ptr<const SceneDesc> sceneShown() const;
     void updateMotionPath(const std::shared_ptr<const SceneDesc>& scene);
