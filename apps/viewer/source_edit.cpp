@@ -119,6 +119,23 @@ std::optional<QString> scrubNumber(QStringView number, int steps) {
     return written;
 }
 
+SpanEdit insertLineAfter(const QString& text, const std::vector<SourceLine>& lines, int after,
+                         const QString& written) {
+    const std::size_t next = std::size_t(after + 1);
+    if (next < lines.size()) return {lines[next].begin, lines[next].begin, written + u'\n'};
+    // After the empty line a final line end leaves: before it, so the text still ends with one.
+    if (lines.size() > 1 && lines.back().begin == lines.back().end)
+        return {lines.back().begin, lines.back().begin, written + u'\n'};
+    return {text.size(), text.size(), u'\n' + written};
+}
+
+SpanEdit removeLine(const QString& text, const std::vector<SourceLine>& lines, int line) {
+    const SourceLine& removed = lines[std::size_t(line)];
+    if (std::size_t(line + 1) < lines.size()) return {removed.begin, lines[std::size_t(line + 1)].begin, {}};
+    // The last line: with the line end before it.
+    return {std::max<qsizetype>(0, removed.begin - 1), text.size(), {}};
+}
+
 std::optional<double> plainNumber(QStringView token) {
     if (token.isEmpty()) return std::nullopt;
     const QByteArray bytes = token.toUtf8();

@@ -73,6 +73,13 @@ struct SourceLine {
 /// Every line of `text` (split at '\n'; a '\r' before it is not part of the line's tokens).
 std::vector<SourceLine> scanSource(const QString& text);
 
+/// Inserting `written` as a line of its own after line `after` of `lines`
+/// (scanSource(text)); -1: before the first. A text ending in a line end still does.
+SpanEdit insertLineAfter(const QString& text, const std::vector<SourceLine>& lines, int after,
+                         const QString& written);
+/// Removing line `line` of `lines` with its line end.
+SpanEdit removeLine(const QString& text, const std::vector<SourceLine>& lines, int line);
+
 /// A token's value if it is a plain number (no expression, no suffix).
 std::optional<double> plainNumber(QStringView token);
 

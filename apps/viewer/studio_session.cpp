@@ -155,12 +155,24 @@ void StudioSession::setSelection(std::optional<Selection> selection) {
     emit selectionChanged();
 }
 
+void StudioSession::updateDopeSheet() {
+    const auto scene = document_->scene();
+    if (!scene) return;
+    if (scene == dopeScene_ && selection_ == dopeSelection_ && document_->text() == dopeText_) return;
+    dopeScene_ = scene;
+    dopeSelection_ = selection_;
+    dopeText_ = document_->text();
+    dopeRows_ = f2::viewer::dopeSheetRows(dopeText_, *scene, selection_);
+}
+
 void StudioSession::updateSelectionView() {
+    updateDopeSheet();
     const auto scene = document_->scene();
     const auto object = selection_ && scene ? findObject(*scene, *selection_) : std::nullopt;
     if (!object) {
         selection_.reset();  // deleted or renamed in the text
         selectionView_.reset();
+        updateDopeSheet();
         return;
     }
     const SceneObject& target = scene->objects[*object];
@@ -296,6 +308,13 @@ StudioSession::Capture StudioSession::keyCameraHere(const QString& text,
     if (lookAround && scene->camera.lookAt)
         notes << tr("The camera's /look_at turns it: the key moves the eye, not where it looks.");
     return {std::move(write.edits), notes.join(u' '), 8000};
+}
+
+WriteBack StudioSession::writeBack(const QString& text, const WriteRequest& request) const {
+    const auto scene = document_->scene();
+    const auto locations = document_->locations();
+    if (!scene || !locations) return {{}, tr("There is no scene to write to yet."), {}, {}};
+    return f2::viewer::writeBack({text, *scene, *locations, document_->sourceName()}, request);
 }
 
 }  // namespace f2::viewer

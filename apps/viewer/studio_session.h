@@ -17,11 +17,13 @@
 
 #include "core/render/camera.h"
 #include "core/render/image.h"
+#include "dope_sheet_model.h"
 #include "playback_antialias.h"
 #include "render_controller.h"
 #include "scene_locations.h"
 #include "selection.h"
 #include "text_capture.h"
+#include "write_back.h"
 
 namespace f2::viewer {
 
@@ -84,6 +86,11 @@ class StudioSession : public QObject {
     /// Nothing without a selection (also after an edit deleted or renamed it).
     const std::optional<SelectionView>& selectionView() const { return selectionView_; }
 
+    /// The dope sheet's rows: the selection's key tracks (the camera's
+    /// without one), made from document()->text(), which dopeSheetText() keeps.
+    const std::vector<DopeRow>& dopeSheetRows() const { return dopeRows_; }
+    const QString& dopeSheetText() const { return dopeText_; }
+
     /// The editor line to select for the selection's creating command, and
     /// what the status bar says about it (empty: leave it).
     struct CreatingLine {
@@ -114,6 +121,12 @@ class StudioSession : public QObject {
     /// there (capture_pose.h, camera_key_writer.h).
     Capture keyCameraHere(const QString& text, const std::optional<Pose>& lookAround) const;
 
+    /// write_back.h's writeBack() on `text` with the document's last parse
+    /// (a refusal without a scene): what a gesture released at the current
+    /// frame writes. The window applies `edits` (or, asked, `offer`) with
+    /// applySourceEdits() as one undo step.
+    WriteBack writeBack(const QString& text, const WriteRequest& request) const;
+
    public slots:
     /// Renders the current time and view soon (requests made in one event
     /// loop pass are coalesced into one).
@@ -136,6 +149,9 @@ class StudioSession : public QObject {
     void onFrameReady(const QImage& image, const FrameInfo& info);
     /// selectionView_ for the frame shown; forgets a selection the scene lost.
     void updateSelectionView();
+    /// dopeSheetRows() for the current scene, selection and text (made again
+    /// only when one of them changed: this runs for every frame shown).
+    void updateDopeSheet();
     /// What a request for `scene` asks the bounds of: the selection, if `scene` has it.
     std::optional<BoundsOf> selectionIn(const SceneDesc& scene) const;
     /// The line of `text` holding `created` (an object of type `type`: "sphere",
@@ -154,6 +170,10 @@ class StudioSession : public QObject {
     FrameInfo shownFrame_;
     std::optional<Selection> selection_;
     std::optional<SelectionView> selectionView_;
+    std::vector<DopeRow> dopeRows_;
+    QString dopeText_;
+    std::shared_ptr<const SceneDesc> dopeScene_;
+    std::optional<Selection> dopeSelection_;
     // Declared last so it is destroyed first: its worker joins while every
     // object it could talk to still exists.
     std::unique_ptr<RenderController> controller_;

@@ -130,17 +130,6 @@ QString indentOf(const QString& text, const SourceLine& line) {
     return text.mid(line.begin, i - line.begin);
 }
 
-/// Inserting `written` as a line of its own after line `after` (-1: before the first).
-SpanEdit insertAfter(const QString& text, const std::vector<SourceLine>& lines, int after,
-                     const QString& written) {
-    const std::size_t next = std::size_t(after + 1);
-    if (next < lines.size()) return {lines[next].begin, lines[next].begin, written + u'\n'};
-    // After the empty line a final line end leaves: before it, so the text still ends with one.
-    if (lines.size() > 1 && lines.back().begin == lines.back().end)
-        return {lines.back().begin, lines.back().begin, written + u'\n'};
-    return {text.size(), text.size(), u'\n' + written};
-}
-
 /// Where a target is made: on an editable line of the main file, inside a
 /// loop of it, in an included file, or nowhere this text shows.
 struct Origin {
@@ -196,6 +185,22 @@ QString loopPlace(const Origin& origin) {
 }
 
 }  // namespace
+
+std::optional<KeyProperty> keyLineProperty(const SourceLine& line) {
+    if (line.tokens.size() < 4) return std::nullopt;
+    const QByteArray word = line.tokens[3].text.toUtf8();
+    const KeyPropertySpec* spec =
+        findKeyProperty(std::string_view(word.constData(), std::size_t(word.size())));
+    return spec ? std::optional(spec->property) : std::nullopt;
+}
+
+int keyLineModeAt(const SourceLine& line) {
+    const auto property = keyLineProperty(line);
+    const int count = property ? specOf(*property).numbers : 6;
+    const int numbers = keyNumbersAt(line, property, count);
+    const int at = numbers >= 0 ? numbers + count : property ? 4 : 3;
+    return std::min(at, int(line.tokens.size()));
+}
 
 std::optional<double> keyTime(QStringView token, int fps) {
     if (token.endsWith(u's')) {
@@ -279,7 +284,7 @@ WriteBack writeBack(const SceneSource& source, const WriteRequest& request) {
                          "(an included file, a /model block or a computed time).")
                           .arg(request.target)
                           .arg(request.frame);
-            out.offer = {insertAfter(source.text, lines, after, keyText)};
+            out.offer = {insertLineAfter(source.text, lines, after, keyText)};
             out.offerLabel = tr("Add a key at line %1 instead (it replaces that key)").arg(after + 2);
             return out;
         }
@@ -294,12 +299,12 @@ WriteBack writeBack(const SceneSource& source, const WriteRequest& request) {
         if (before) {
             const SourceLine& line = lines[std::size_t(before->line)];
             out.edits = {
-                insertAfter(source.text, lines, before->line, indentOf(source.text, line) + keyText)};
+                insertLineAfter(source.text, lines, before->line, indentOf(source.text, line) + keyText)};
         } else if (later) {
             const SourceLine& line = lines[std::size_t(later->line)];
             out.edits = {{line.begin, line.begin, indentOf(source.text, line) + keyText + u'\n'}};
         } else {
-            out.edits = {insertAfter(source.text, lines, anchorLine(origin, lines), keyText)};
+            out.edits = {insertLineAfter(source.text, lines, anchorLine(origin, lines), keyText)};
         }
         return out;
     }
@@ -325,7 +330,7 @@ WriteBack writeBack(const SceneSource& source, const WriteRequest& request) {
     }
     if (first < 0) {
         // A part, a colour, a light's pose, visibility: the first key goes after the creating line.
-        out.edits = {insertAfter(source.text, lines, anchorLine(origin, lines), keyText)};
+        out.edits = {insertLineAfter(source.text, lines, anchorLine(origin, lines), keyText)};
         return out;
     }
     if (origin.where == Origin::Here) {
@@ -351,7 +356,7 @@ WriteBack writeBack(const SceneSource& source, const WriteRequest& request) {
             out.offerLabel = tr("Add a key at the end of the file instead");
             break;
     }
-    out.offer = {insertAfter(source.text, lines, anchorLine(origin, lines), keyText)};
+    out.offer = {insertLineAfter(source.text, lines, anchorLine(origin, lines), keyText)};
     return out;
 }
 
