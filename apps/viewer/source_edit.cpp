@@ -43,6 +43,17 @@ QString withEdits(const QString& text, std::vector<SpanEdit> edits) {
     return out;
 }
 
+SpanEdit changedSpan(const QString& before, const QString& after) {
+    const qsizetype shorter = std::min(before.size(), after.size());
+    qsizetype prefix = 0;
+    while (prefix < shorter && before[prefix] == after[prefix]) ++prefix;
+    qsizetype suffix = 0;
+    while (suffix < shorter - prefix &&
+           before[before.size() - 1 - suffix] == after[after.size() - 1 - suffix])
+        ++suffix;
+    return {prefix, before.size() - suffix, after.mid(prefix, after.size() - suffix - prefix)};
+}
+
 void applySourceEdits(QPlainTextEdit* editor, std::vector<SpanEdit> edits,
                       std::optional<std::pair<qsizetype, qsizetype>> select) {
     if (edits.empty()) return;

@@ -26,6 +26,10 @@ struct SpanEdit {
 /// `text`; edits must not overlap (two insertions at one offset keep their order).
 QString withEdits(const QString& text, std::vector<SpanEdit> edits);
 
+/// The one edit that turns `before` into `after`: what lies between their
+/// common start and common end.
+SpanEdit changedSpan(const QString& before, const QString& after);
+
 /// Applies `edits` (offsets as for withEdits, in the editor's current text)
 /// to `editor` as one undo step, and selects `select` (offsets in the text
 /// after the edits) when given.

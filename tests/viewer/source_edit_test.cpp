@@ -14,6 +14,7 @@
 #include "scene_locations.h"
 #include "test_support.h"
 #include "write_back.h"
+#include "write_back_prompt.h"
 
 using namespace f2;
 using namespace f2::viewer;
@@ -69,6 +70,7 @@ class SourceEditTest : public QObject {
     void dopeSheetRowsNameTheKeyLines();
     void movedKeysChangeOnlyTheirTimes();
     void deletedKeysAndModesAreLineEdits();
+    void refusedWriteBackAsksBeforeItsOffer();
 };
 
 void SourceEditTest::numbersAreWrittenInShortestForm() {
@@ -359,6 +361,39 @@ void SourceEditTest::deletedKeysAndModesAreLineEdits() {
                  .replace(QStringLiteral("colour 1 2 3"), QStringLiteral("colour 1 2 3 ease_in")));
     QCOMPARE(withEdits(text, keyModeEdits(text, {2}, std::nullopt)),
              QString(text).replace(QStringLiteral(" bezier 0.1 0.2 0.3 1"), QString()));
+}
+
+void SourceEditTest::refusedWriteBackAsksBeforeItsOffer() {
+    const QString text = QStringLiteral(
+        "/repeat i 0 1\n"
+        "/sphere b{ i } 1 (i * 3) 0 5  # a row\n"
+        "/end\n");
+    const Parsed parsed(text);
+    const WriteBack write = parsed.pose(QStringLiteral("b0"), 4, pose(1, 0, 5));
+    QVERIFY(write.refused());
+    QPlainTextEdit editor;
+    editor.setPlainText(text);
+    QString asked;
+    // Declined: the text is byte-identical and there is nothing to undo.
+    QCOMPARE(applyWriteBack(&editor, write,
+                            [&](const QString& why, const QString&) {
+                                asked = why;
+                                return false;
+                            }),
+             WriteBackOutcome::Declined);
+    QCOMPARE(asked, write.refusal);
+    QCOMPARE(editor.toPlainText(), text);
+    QVERIFY(!editor.document()->isUndoAvailable());
+    // Taken: the key after the loop, one undo step.
+    QCOMPARE(applyWriteBack(&editor, write, [](const QString&, const QString&) { return true; }),
+             WriteBackOutcome::Offered);
+    QCOMPARE(editor.toPlainText(), text + QStringLiteral("/key 4 b0 1 0 5 0 0 0\n"));
+    editor.undo();
+    QCOMPARE(editor.toPlainText(), text);
+    // Line edits of the capture commands are one span.
+    QCOMPARE(changedSpan(QStringLiteral("a b c"), QStringLiteral("a bb c")),
+             (SpanEdit{3, 3, QStringLiteral("b")}));
+    QCOMPARE(changedSpan(QStringLiteral("abc"), QStringLiteral("abc")), (SpanEdit{3, 3, QString()}));
 }
 
 QTEST_MAIN(SourceEditTest)
