@@ -105,11 +105,16 @@ QString numbersText(const std::vector<double>& values) {
 /// tokens that are expressions.
 void writeNumbers(const SourceLine& line, int first, const std::vector<double>& values,
                   const std::vector<double>& old, std::vector<SpanEdit>& edits) {
+    // The numbers written: up to the first word (an instance's parameters, `/lamp b 0 0 0 arm 60`).
+    std::size_t written = std::size_t(first);
+    while (written < line.tokens.size() && written < first + values.size() &&
+           !startsWithWord(line.tokens[written].text))
+        ++written;
     std::vector<double> missing;
     for (std::size_t i = 0; i < values.size(); ++i) {
         const std::size_t at = std::size_t(first) + i;
         const QString now = shortestNumber(values[i]);
-        if (at >= line.tokens.size()) {
+        if (at >= written) {
             missing.push_back(values[i]);
             continue;
         }
@@ -120,8 +125,10 @@ void writeNumbers(const SourceLine& line, int first, const std::vector<double>& 
                                                 : QString();
         if (now != before) edits.push_back({token.begin, token.end, now});
     }
-    if (std::any_of(missing.begin(), missing.end(), [](double v) { return shortestNumber(v) != u"0"; }))
-        edits.push_back({line.tokens.back().end, line.tokens.back().end, u' ' + numbersText(missing)});
+    if (std::any_of(missing.begin(), missing.end(), [](double v) { return shortestNumber(v) != u"0"; })) {
+        const qsizetype end = line.tokens[written - 1].end;
+        edits.push_back({end, end, u' ' + numbersText(missing)});
+    }
 }
 
 QString indentOf(const QString& text, const SourceLine& line) {
@@ -231,8 +238,13 @@ WriteBack writeBack(const SceneSource& source, const WriteRequest& request) {
     const int count = request.property ? specOf(*request.property).numbers : 6;
     WriteBack out;
     if (!r.track || int(request.values.size()) != count) {
+        const bool known = r.camera || r.light || (r.object && (r.part || request.target.indexOf(u'.') < 0));
         out.refusal =
-            tr("%1 is not in the scene as it was last read (renamed or deleted since?)").arg(request.target);
+            known && request.property
+                ? tr("%1 has no %2 to key.").arg(request.target, toQString(specOf(*request.property).word))
+            : known ? tr("%1 has no pose to key.").arg(request.target)
+                    : tr("%1 is not in the scene as it was last read (renamed or deleted since?)")
+                          .arg(request.target);
         return out;
     }
     const QString keyText =
@@ -352,7 +364,8 @@ WriteBack writeBack(const SceneSource& source, const WriteRequest& request) {
             out.offerLabel = tr("Add a key after its /include (line %1) instead").arg(origin.line + 2);
             break;
         default:
-            out.refusal = tr("%1 is not made on a line of this file.").arg(what);
+            out.refusal = r.camera ? tr("This file has no /camera line.")
+                                   : tr("%1 is not made on a line of this file.").arg(what);
             out.offerLabel = tr("Add a key at the end of the file instead");
             break;
     }

@@ -270,7 +270,17 @@ void SourceEditTest::propertyKeysAndFirstKeysOfParts() {
     QCOMPARE(
         withEdits(text, parsed.property(QStringLiteral("r1"), KeyProperty::Visible, 4, {0}).edits),
         QString(text).replace(QStringLiteral("0 0 5\n"), QStringLiteral("0 0 5\n/key 4 r1 visible 0\n")));
-    QVERIFY(parsed.pose(QStringLiteral("nobody"), 0, pose(0, 0, 0)).refused());
+    QCOMPARE(parsed.pose(QStringLiteral("nobody"), 0, pose(0, 0, 0)).refusal,
+             QStringLiteral("nobody is not in the scene as it was last read (renamed or deleted since?)"));
+    QCOMPARE(parsed.property(QStringLiteral("ball"), KeyProperty::Intensity, 0, {1}).refusal,
+             QStringLiteral("ball has no intensity to key."));
+    // An instance's parameters stay after its pose; a missing rotation goes before them.
+    const QString lamps = QStringLiteral(
+        "/model lamp arm 120\n/part head root 0 (arm) 0\n/sphere head.bulb 5 0 0 0\n/end\n"
+        "/lamp b 200 0 0 arm 60\n");
+    const Parsed lamp(lamps);
+    QCOMPARE(withEdits(lamps, lamp.pose(QStringLiteral("b"), 0, pose(200, 0, 0, 0, 90, 0)).edits),
+             QString(lamps).replace(QStringLiteral("200 0 0 arm"), QStringLiteral("200 0 0 0 90 0 arm")));
 }
 
 void SourceEditTest::dopeSheetRowsNameTheKeyLines() {
