@@ -15,12 +15,28 @@ constexpr double kSameTime = 1e-6;
 
 QString toQString(std::string_view s) { return QString::fromUtf8(s.data(), qsizetype(s.size())); }
 
+/// The text cut into lines, once and only if a row has keys (a large scene
+/// without keys on the selection is not scanned on every parse).
+class LazyLines {
+   public:
+    explicit LazyLines(const QString& text) : text_(text) {}
+    const std::vector<SourceLine>& get() {
+        if (!lines_) lines_ = scanSource(text_);
+        return *lines_;
+    }
+
+   private:
+    const QString& text_;
+    std::optional<std::vector<SourceLine>> lines_;
+};
+
 /// A row for `track` (if `always` or it has keys), its keys matched to their lines.
-void addRow(std::vector<DopeRow>& rows, const std::vector<SourceLine>& lines, int fps, QString label,
-            QString target, std::optional<KeyProperty> property, const Track* track, bool always) {
+void addRow(std::vector<DopeRow>& rows, LazyLines& lines, int fps, QString label, QString target,
+            std::optional<KeyProperty> property, const Track* track, bool always) {
     if (!track || (track->keys.empty() && !always)) return;
     DopeRow row{std::move(label), std::move(target), property, {}};
-    const std::vector<KeyLine> written = keyLines(lines, fps, row.target, property);
+    if (track->keys.empty()) return rows.push_back(std::move(row));
+    const std::vector<KeyLine> written = keyLines(lines.get(), fps, row.target, property);
     for (const Key& key : track->keys) {
         DopeKey dope{key.time, -1, key.mode};
         // The last line at that time is the one the key comes from.
@@ -48,7 +64,7 @@ QString word(KeyProperty property) {
 
 std::vector<DopeRow> dopeSheetRows(const QString& text, const SceneDesc& scene,
                                    const std::optional<Selection>& selection) {
-    const std::vector<SourceLine> lines = scanSource(text);
+    LazyLines lines(text);
     std::vector<DopeRow> rows;
     if (!selection) {
         const QString camera = toQString(kCameraName);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <string>
 
 #include "core/parse/lexer.h"
 #include "core/parse/number.h"
@@ -159,6 +160,7 @@ std::vector<SourceLine> scanSource(const QString& text) {
     std::vector<SourceLine> lines;
     qsizetype start = 0;
     LineTokens tokens;
+    std::string bytes;  // reused: one line's UTF-8
     while (true) {
         qsizetype end = text.indexOf(u'\n', start);
         const bool last = end < 0;
@@ -168,13 +170,28 @@ std::vector<SourceLine> scanSource(const QString& text) {
         line.end = end;
         QStringView view = QStringView(text).mid(start, end - start);
         if (view.endsWith(u'\r')) view.chop(1);
-        const QByteArray bytes = view.toUtf8();
-        tokenizeLine(std::string_view(bytes.constData(), std::size_t(bytes.size())), tokens);
-        for (int i = 0; i < std::min(tokens.count, kMaxStoredTokens); ++i) {
+        // An ASCII line (nearly all of a scene) is its own UTF-8: bytes are UTF-16 offsets.
+        bytes.clear();
+        bool ascii = true;
+        for (QChar c : view) {
+            if (c.unicode() >= 0x80) {
+                ascii = false;
+                break;
+            }
+            bytes.push_back(char(c.unicode()));
+        }
+        if (!ascii) bytes = view.toUtf8().toStdString();
+        tokenizeLine(bytes, tokens);
+        const int stored = std::min(tokens.count, kMaxStoredTokens);
+        line.tokens.reserve(std::size_t(stored));
+        for (int i = 0; i < stored; ++i) {
             const Token& token = tokens.tokens[std::size_t(i)];
             // Byte columns to UTF-16 offsets: the length of the text before it.
-            const qsizetype at = start + QString::fromUtf8(bytes.constData(), token.column - 1).size();
-            const QString written = QString::fromUtf8(token.text.data(), qsizetype(token.text.size()));
+            const qsizetype at =
+                start + (ascii ? token.column - 1 : QString::fromUtf8(bytes.data(), token.column - 1).size());
+            const QString written = ascii
+                                        ? view.mid(at - start, qsizetype(token.text.size())).toString()
+                                        : QString::fromUtf8(token.text.data(), qsizetype(token.text.size()));
             line.tokens.push_back({at, at + written.size(), written});
         }
         lines.push_back(std::move(line));
