@@ -120,6 +120,10 @@ void DopeSheet::paintEvent(QPaintEvent*) {
         painter.drawText(
             QRect(2, top, std::max(0, labelsEnd - 2), kRowHeight), Qt::AlignVCenter | Qt::AlignRight,
             painter.fontMetrics().elidedText(r.label, Qt::ElideLeft, std::max(0, labelsEnd - 2)));
+        // The row's track over the slider's frames, as a groove for its keys.
+        painter.setPen(palette().color(QPalette::Mid));
+        painter.drawLine(xOf(slider_->minimum()), top + kRowHeight / 2, xOf(slider_->maximum()),
+                         top + kRowHeight / 2);
         painter.setRenderHint(QPainter::Antialiasing, true);
         for (int key = 0; key < int(r.keys.size()); ++key) {
             const DopeKey& k = r.keys[std::size_t(key)];
@@ -138,6 +142,12 @@ void DopeSheet::paintEvent(QPaintEvent*) {
             }
         }
         painter.setRenderHint(QPainter::Antialiasing, false);
+    }
+    // The frame shown, under the slider's handle.
+    if (!rows_.empty()) {
+        painter.setPen(QColor(40, 140, 255));
+        const int x = xOf(slider_->value());
+        painter.drawLine(x, 0, x, std::min(height(), (int(rows_.size()) - firstRow_) * kRowHeight + 1));
     }
 }
 

@@ -155,6 +155,24 @@ void StudioSession::setSelection(std::optional<Selection> selection) {
     emit selectionChanged();
 }
 
+bool StudioSession::selectTarget(const QString& target) {
+    const auto scene = document_->scene();
+    if (!scene) return false;
+    Selection selection{target.section(u'.', 0, 0).toStdString(), std::nullopt,
+                        target.section(u'.', 1).toStdString()};
+    for (const SceneObject& object : scene->objects) {
+        if (object.name != selection.object) continue;
+        if (!selection.partName.empty()) {
+            const int part = object.model ? object.model->partIndex(selection.partName) : -1;
+            if (part < 0) break;
+            selection.part = part;
+        }
+        setSelection(selection);
+        return true;
+    }
+    return false;
+}
+
 void StudioSession::updateDopeSheet() {
     const auto scene = document_->scene();
     if (!scene) return;

@@ -104,6 +104,7 @@ void TimelineWidget::setTime(double time) {
         const QSignalBlocker block(slider_);
         if (!slider_->isSliderDown()) slider_->setValue(frame);
     }
+    dopeSheet_->update();          // its line at the frame shown
     if (!frameBox_->hasFocus()) {  // not while the user types a number
         const QSignalBlocker block(frameBox_);
         frameBox_->setValue(frame);
