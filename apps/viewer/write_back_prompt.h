@@ -23,7 +23,8 @@ enum class WriteBackOutcome {
 /// `offer` what the offer does.
 using OfferQuestion = std::function<bool(const QString& why, const QString& offer)>;
 
-/// Applies `write` to `editor` as one undo step (the offer only if `ask` says yes).
+/// Applies `write` to `editor` as one undo step (the offer only if `ask`
+/// says yes) and selects the line written, as the capture commands do.
 WriteBackOutcome applyWriteBack(QPlainTextEdit* editor, const WriteBack& write, const OfferQuestion& ask);
 
 /// The window's question: a message box with the reason and the offer as its button.

@@ -398,6 +398,16 @@ void SourceEditTest::refusedWriteBackAsksBeforeItsOffer() {
     QCOMPARE(applyWriteBack(&editor, write, [](const QString&, const QString&) { return true; }),
              WriteBackOutcome::Offered);
     QCOMPARE(editor.toPlainText(), text + QStringLiteral("/key 4 b0 1 0 5 0 0 0\n"));
+    QCOMPARE(editor.textCursor().selectedText(), QStringLiteral("/key 4 b0 1 0 5 0 0 0"));
+    // Keyed now: written in place, that line selected.
+    const Parsed keyed(editor.toPlainText());
+    QCOMPARE(applyWriteBack(&editor, keyed.pose(QStringLiteral("b0"), 4, pose(1, 2, 5)), {}),
+             WriteBackOutcome::Written);
+    QCOMPARE(editor.textCursor().selectedText(), QStringLiteral("/key 4 b0 1 2 5 0 0 0"));
+    QCOMPARE(applyWriteBack(&editor,
+                            Parsed(editor.toPlainText()).pose(QStringLiteral("b0"), 4, pose(1, 2, 5)), {}),
+             WriteBackOutcome::Unchanged);
+    editor.undo();
     editor.undo();
     QCOMPARE(editor.toPlainText(), text);
     // Line edits of the capture commands are one span.
