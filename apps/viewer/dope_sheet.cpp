@@ -143,6 +143,11 @@ void DopeSheet::paintEvent(QPaintEvent*) {
         }
         painter.setRenderHint(QPainter::Antialiasing, false);
     }
+    if (band_) {
+        painter.setPen(QPen(palette().color(QPalette::Highlight), 1, Qt::DashLine));
+        painter.setBrush(Qt::NoBrush);
+        painter.drawRect(band_->normalized());
+    }
     // The frame shown, under the slider's handle.
     if (!rows_.empty()) {
         painter.setPen(QColor(40, 140, 255));
@@ -158,6 +163,8 @@ void DopeSheet::mousePressEvent(QMouseEvent* event) {
     if (event->button() != Qt::LeftButton && event->button() != Qt::RightButton) return;
     if (!key) {
         if (!adding) selected_.clear();
+        // A drag from an empty place selects the keys in its rectangle.
+        if (event->button() == Qt::LeftButton) band_ = QRect(at, at);
         update();
         return;
     }
@@ -183,8 +190,12 @@ void DopeSheet::mousePressEvent(QMouseEvent* event) {
 }
 
 void DopeSheet::mouseMoveEvent(QMouseEvent* event) {
-    if (!pressAt_) return;
     const QPoint at = event->position().toPoint();
+    if (band_) {
+        band_->setBottomRight(at);
+        return update();
+    }
+    if (!pressAt_) return;
     if (!dragging_ && std::abs(at.x() - pressAt_->x()) < 3) return;
     dragging_ = true;
     dragFrames_ = frameAt(at.x()) - frameAt(pressAt_->x());
@@ -192,6 +203,16 @@ void DopeSheet::mouseMoveEvent(QMouseEvent* event) {
 }
 
 void DopeSheet::mouseReleaseEvent(QMouseEvent* event) {
+    if (band_ && event->button() == Qt::LeftButton) {
+        const QRect band = band_->normalized().adjusted(-kHalf, -kHalf, kHalf, kHalf);
+        band_.reset();
+        for (int row = firstRow_; row < int(rows_.size()); ++row)
+            for (int key = 0; key < int(rows_[std::size_t(row)].keys.size()); ++key)
+                if (band.contains(keyPoint(row, key)) && !isSelected(row, key))
+                    selected_.push_back({rows_[std::size_t(row)].target, rows_[std::size_t(row)].property,
+                                         rows_[std::size_t(row)].keys[std::size_t(key)].time});
+        return update();
+    }
     if (!pressAt_ || event->button() != Qt::LeftButton) return;
     const auto key = pressKey_;
     const bool dragged = dragging_;
@@ -214,8 +235,9 @@ void DopeSheet::mouseReleaseEvent(QMouseEvent* event) {
 }
 
 void DopeSheet::keyPressEvent(QKeyEvent* event) {
-    if (event->key() == Qt::Key_Escape && pressAt_) {
+    if (event->key() == Qt::Key_Escape && (pressAt_ || band_)) {
         // Cancel the drag: nothing was written.
+        band_.reset();
         pressAt_.reset();
         pressKey_.reset();
         dragging_ = false;

@@ -2,11 +2,13 @@
 /// The dope sheet under the timeline's slider: one row per key track of the
 /// selection (dope_sheet_model.h), each key a diamond at its frame, aligned
 /// with the slider. Click a key to go to it (Shift/Ctrl+click adds to the
-/// selection), drag to move the selected keys, Alt+drag to copy them, Delete
+/// selection, a drag from an empty place selects a rectangle's keys), drag
+/// a key to move the selected keys, Alt+drag to copy them, Delete
 /// removes them, right-click sets their mode; Esc during a drag cancels it.
 /// Each gesture asks for its edits as one request (editsRequested), which
 /// the window applies as one undo step. Keys no line of this file can edit
 /// (a loop, an include) are drawn hollow and stay put.
+#include <QRect>
 #include <QString>
 #include <QWidget>
 #include <optional>
@@ -81,6 +83,7 @@ class DopeSheet : public QWidget {
     std::optional<QPoint> pressAt_;
     std::optional<std::pair<int, int>> pressKey_;
     bool dragging_ = false;
+    std::optional<QRect> band_;  // a drag from an empty place: the rectangle that selects
     bool copying_ = false;
     int dragFrames_ = 0;
 };

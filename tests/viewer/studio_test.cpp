@@ -8,6 +8,7 @@
 #include <QDockWidget>
 #include <QLabel>
 #include <QMenu>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QStatusBar>
 #include <QTemporaryDir>
@@ -280,6 +281,18 @@ int xOfFrame(const DopeSheet& sheet, int frame) {
     return (first + last) / 2;
 }
 
+/// Waits until the dope sheet shows the keys of the editor's text (parsed, a
+/// frame shown since): its rows' lines are that text's.
+bool rowsFollowTheText(MainWindow& w) {
+    return QTest::qWaitFor(
+        [&] {
+            const QString text = w.editor()->toPlainText();
+            return w.document()->text() == text && !w.document()->isParsing() &&
+                   w.session()->dopeSheetText() == text;
+        },
+        kWaitMs);
+}
+
 void drag(DopeSheet* sheet, QPoint from, QPoint to, Qt::KeyboardModifiers modifiers = {}) {
     QTest::mousePress(sheet, Qt::LeftButton, modifiers, from);
     QTest::mouseMove(sheet, (from + to) / 2);
@@ -322,7 +335,8 @@ void StudioTest::dopeSheetDragMovesThatKeysTime() {
     QCOMPARE(w.editor()->toPlainText(), moved);
 
     // Two selected keys move together (Shift+click adds one), in one undo step.
-    QTRY_VERIFY_WITH_TIMEOUT(sheet->rows()[0].keys[1].time == 60, kWaitMs);
+    QVERIFY(rowsFollowTheText(w));
+    QCOMPARE(sheet->rows()[0].keys[1].time, 60.0);
     QTest::mouseClick(sheet, Qt::LeftButton, {}, sheet->keyPoint(0, 0));
     QTest::mouseClick(sheet, Qt::LeftButton, Qt::ShiftModifier, sheet->keyPoint(0, 1));
     QCOMPARE(sheet->selectedKeys().size(), std::size_t(2));
@@ -351,7 +365,7 @@ void StudioTest::dopeSheetCopiesDeletesAndSetsModes() {
     QCOMPARE(w.editor()->toPlainText(), original + "/key 20 ball 3 0 8 0 0 0\n");
     w.editor()->undo();
     QCOMPARE(w.editor()->toPlainText(), original);
-    QTRY_COMPARE_WITH_TIMEOUT(sheet->rows()[0].keys.size(), std::size_t(3), kWaitMs);
+    QVERIFY(rowsFollowTheText(w));
 
     // Right-click: the mode menu sets the key's mode word, comment kept.
     QTest::mouseClick(sheet, Qt::LeftButton, {}, sheet->keyPoint(0, 1));
@@ -364,12 +378,24 @@ void StudioTest::dopeSheetCopiesDeletesAndSetsModes() {
     QCOMPARE(w.editor()->toPlainText(),
              QString(original).replace("0 0 0   # the top", "0 0 0 ease_in   # the top"));
     w.editor()->undo();
+    QVERIFY(rowsFollowTheText(w));
 
     // Delete removes the selected key's line.
     QTest::mouseClick(sheet, Qt::LeftButton, {}, sheet->keyPoint(0, 1));
     QTest::keyClick(sheet, Qt::Key_Delete);
     QCOMPARE(w.editor()->toPlainText(),
              QString(original).replace("/key 40  ball 0 1 8 0 0 0   # the top\n", ""));
+    w.editor()->undo();
+    QCOMPARE(w.editor()->toPlainText(), original);
+
+    // A drag from an empty place selects the keys in its rectangle: 40 and 80, not 0.
+    QVERIFY(rowsFollowTheText(w));
+    const int y = sheet->keyPoint(0, 0).y();
+    drag(sheet, {xOfFrame(*sheet, 30), y - 3}, {sheet->keyPoint(0, 2).x() + 2, y + 3});
+    QCOMPARE(sheet->selectedKeys(), (std::vector<std::pair<int, int>>{{0, 1}, {0, 2}}));
+    QCOMPARE(w.editor()->toPlainText(), original);
+    QTest::keyClick(sheet, Qt::Key_Delete);
+    QCOMPARE(w.editor()->toPlainText(), QString(original).replace(QRegularExpression("/key [48]0 .*\n"), ""));
     w.editor()->undo();
     QCOMPARE(w.editor()->toPlainText(), original);
 }
