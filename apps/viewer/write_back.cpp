@@ -140,7 +140,7 @@ QString indentOf(const QString& text, const SourceLine& line) {
 /// Where a target is made: on an editable line of the main file, inside a
 /// loop of it, in an included file, or nowhere this text shows.
 struct Origin {
-    enum Where { Here, Loop, Included, Unknown } where = Unknown;
+    enum Where { Here, Loop, Included, Unknown, Stale } where = Unknown;
     int line = -1;       ///< Here: the creating line; Loop: the loop's /end; Included: the /include line
     int loopStart = -1;  ///< Loop: the /repeat line
     QString file;        ///< Included: the file's name as diagnostics give it
@@ -167,10 +167,17 @@ Origin originOf(const SceneSource& source, const std::vector<SourceLine>& lines,
         }
         return {};
     }
-    const CreatedAt* created = source.locations.object(source.scene.objects[*r.object].name);
+    const SceneObject& object = source.scene.objects[*r.object];
+    const CreatedAt* created = source.locations.object(object.name);
     if (!created) return {};
     if (created->loc.file == source.sourceName) {
-        Origin origin = at(created->loc.line - 1);
+        // The text may have changed since the parse: the line must still hold the command.
+        const int index = created->loc.line - 1;
+        const std::string_view type = typeNameOf(object);
+        if (index >= int(lines.size()) || lines[std::size_t(index)].command() !=
+                                              u'/' + QString::fromUtf8(type.data(), qsizetype(type.size())))
+            return {Origin::Stale, -1, -1, {}};
+        Origin origin = at(index);
         // Several objects from one line (a loop) even where scanning saw no /repeat.
         if (origin.where == Origin::Here && created->sameLine > 1) origin.where = Origin::Loop;
         return origin;
@@ -183,7 +190,8 @@ Origin originOf(const SceneSource& source, const std::vector<SourceLine>& lines,
 
 /// The line a new line for the target goes after, when it has no key line to go next to.
 int anchorLine(const Origin& origin, const std::vector<SourceLine>& lines) {
-    return origin.where == Origin::Unknown ? int(lines.size()) - 1 : origin.line;
+    return origin.where == Origin::Unknown || origin.where == Origin::Stale ? int(lines.size()) - 1
+                                                                            : origin.line;
 }
 
 /// The written place of a loop, for messages: "lines 3–7".
@@ -223,10 +231,7 @@ std::vector<KeyLine> keyLines(const std::vector<SourceLine>& lines, int fps, con
     for (int i = 0; i < int(lines.size()); ++i) {
         const SourceLine& line = lines[std::size_t(i)];
         if (line.command() != u"/key" || line.tokens.size() < 3 || line.tokens[2].text != target) continue;
-        const QByteArray word = line.tokens.size() > 3 ? line.tokens[3].text.toUtf8() : QByteArray();
-        const KeyPropertySpec* spec =
-            findKeyProperty(std::string_view(word.constData(), std::size_t(word.size())));
-        if ((spec ? std::optional(spec->property) : std::nullopt) != property) continue;
+        if (keyLineProperty(line) != property) continue;
         found.push_back({i, keyTime(line.tokens[1].text, fps), line.loopEnd < 0 && !line.inModel});
     }
     return found;
@@ -363,6 +368,12 @@ WriteBack writeBack(const SceneSource& source, const WriteRequest& request) {
                               .arg(what, origin.file);
             out.offerLabel = tr("Add a key after its /include (line %1) instead").arg(origin.line + 2);
             break;
+        case Origin::Stale:
+            out.refusal =
+                tr("The text has changed at the line that makes %1 since it was last read; try again "
+                   "once the picture has caught up.")
+                    .arg(request.target);
+            return out;
         default:
             out.refusal = r.camera ? tr("This file has no /camera line.")
                                    : tr("%1 is not made on a line of this file.").arg(what);

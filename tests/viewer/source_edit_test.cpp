@@ -194,6 +194,14 @@ void SourceEditTest::unkeyedTargetChangesItsCreatingNumbers() {
              QString(text).replace(QStringLiteral("0 0 -10  "), QStringLiteral("0 1 -10 5 0 0  ")));
     QCOMPARE(withEdits(text, parsed.property(QStringLiteral("camera"), KeyProperty::Zoom, 7, {0.75}).edits),
              QString(text).replace(QStringLiteral("0.5  0"), QStringLiteral("0.75  0")));
+    // Text changed since the parse (a line typed above): no edit of whatever line is there now.
+    const QString typed = QStringLiteral("/fps 30\n") + text;
+    const WriteBack stale = writePose({typed, parsed.scene, parsed.locations, parsed.name},
+                                      QStringLiteral("crate"), 0, pose(4, 5.5f, 6));
+    QVERIFY(stale.refused());
+    QVERIFY(stale.edits.empty() && stale.offer.empty());
+    QVERIFY2(stale.refusal.startsWith(QStringLiteral("The text has changed at the line that makes crate")),
+             qPrintable(stale.refusal));
 }
 
 void SourceEditTest::targetInALoopIsRefusedWithAnOffer() {
