@@ -5,6 +5,7 @@
 #include <QMenu>
 #include <QMouseEvent>
 #include <QPainter>
+#include <QToolTip>
 #include <algorithm>
 #include <cmath>
 
@@ -282,6 +283,23 @@ std::unique_ptr<QMenu> DopeSheet::modeMenu() {
 void DopeSheet::contextMenuEvent(QContextMenuEvent* event) {
     if (!keyAt(event->pos())) return;
     modeMenu()->exec(event->globalPos());
+}
+
+bool DopeSheet::event(QEvent* event) {
+    if (event->type() != QEvent::ToolTip) return QWidget::event(event);
+    // A key's tooltip: its line as written, or why it cannot be edited here.
+    auto* help = static_cast<QHelpEvent*>(event);
+    const auto key = keyAt(help->pos());
+    if (!key) return QWidget::event(event);
+    const DopeKey& k = rows_[std::size_t(key->first)].keys[std::size_t(key->second)];
+    QToolTip::showText(
+        help->globalPos(),
+        k.line >= 0 ? tr("line %1: %2").arg(k.line + 1).arg(text_.section(u'\n', k.line, k.line).trimmed())
+                    : tr("frame %1: written in a loop, an included file or with a computed time; "
+                         "not edited here")
+                          .arg(k.time),
+        this);
+    return true;
 }
 
 void DopeSheet::wheelEvent(QWheelEvent* event) {

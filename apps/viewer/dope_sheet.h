@@ -56,6 +56,7 @@ class DopeSheet : public QWidget {
     void keyPressEvent(QKeyEvent* event) override;
     void contextMenuEvent(QContextMenuEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
+    bool event(QEvent* event) override;
 
    private:
     /// A key by what survives an edit: its track and time.
