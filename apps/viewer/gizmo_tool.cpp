@@ -4,7 +4,6 @@
 #include <QActionGroup>
 #include <QKeyEvent>
 #include <QMenu>
-#include <QMessageBox>
 #include <QPainter>
 #include <QPainterPath>
 #include <QPlainTextEdit>
@@ -31,10 +30,7 @@ GizmoTool::GizmoTool(StudioSession* session, ViewportWidget* viewport, QPlainTex
                      QObject* parent)
     : QObject(parent), session_(session), viewport_(viewport), editor_(editor) {
     viewport_->setOverlay(this);
-    offer_ = [this](const QString& refusal, const QString& label) {
-        return QMessageBox::question(viewport_->window(), tr("Write the key elsewhere?"),
-                                     refusal + QStringLiteral("\n\n") + label + u'?') == QMessageBox::Yes;
-    };
+    offer_ = offerBox(viewport_->window());
     // The handles follow the selection; the frames shown redraw the picture already.
     connect(session_, &StudioSession::selectionChanged, viewport_, qOverload<>(&QWidget::update));
 }
@@ -296,15 +292,9 @@ bool GizmoTool::release(QPointF pos, Qt::KeyboardModifiers modifiers) {
         return false;
     }
     const WriteBack write = session_->releaseKey(editor_->toPlainText(), dragPose_);
-    if (write.refused()) {
-        // A loop or an included file made the target: say why, and offer the key elsewhere.
-        emit message(write.refusal, 10000);
-        if (!write.offer.empty() && offer_ && offer_(write.refusal, write.offerLabel))
-            applySourceEdits(editor_, write.offer);
-        return false;
-    }
-    applySourceEdits(editor_, write.edits);
-    emit message({});
+    // A loop or an included file made the target: say why, and offer the key elsewhere.
+    if (write.refused()) emit message(write.refusal, 10000);
+    if (applyWriteBack(editor_, write, offer_) == WriteBackOutcome::Written) emit message({});
     return false;
 }
 

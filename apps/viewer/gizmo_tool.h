@@ -13,6 +13,7 @@
 #include "gizmo.h"
 #include "selection.h"
 #include "viewport_widget.h"
+#include "write_back_prompt.h"
 
 class QAction;
 class QMenu;
@@ -34,10 +35,9 @@ class GizmoTool : public QObject, public ViewportOverlay {
     void addActions(QMenu* menu, QWidget* stage);
     /// Asked before a drag starts: false (the text is not in the editor yet) refuses it.
     void setCanEdit(std::function<bool()> canEdit) { canEdit_ = std::move(canEdit); }
-    /// Asks whether to take the write-back's offer when it refuses (the
-    /// refusal and the offer's label); a question box unless a test sets one.
-    using Offer = std::function<bool(const QString& refusal, const QString& offerLabel)>;
-    void setOffer(Offer offer) { offer_ = std::move(offer); }
+    /// Asks whether to take the write-back's offer when it refuses;
+    /// write_back_prompt.h's question box unless a test sets one.
+    void setOffer(OfferQuestion offer) { offer_ = std::move(offer); }
 
     GizmoMode mode() const { return mode_; }
     void setMode(GizmoMode mode);
@@ -77,7 +77,7 @@ class GizmoTool : public QObject, public ViewportOverlay {
     QPointer<ViewportWidget> viewport_;  // the window may delete it first
     QPlainTextEdit* editor_;
     std::function<bool()> canEdit_;
-    Offer offer_;
+    OfferQuestion offer_;
     GizmoMode mode_ = GizmoMode::Move;
     bool local_ = false;
     std::optional<GizmoDrag> drag_;

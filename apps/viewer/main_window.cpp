@@ -89,6 +89,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(timeline_, &TimelineWidget::loopInRequested, playback_, &Playback::setLoopIn);
     connect(timeline_, &TimelineWidget::loopOutRequested, playback_, &Playback::setLoopOut);
     connect(timeline_, &TimelineWidget::loopClearRequested, playback_, &Playback::clearLoop);
+    // A dope sheet gesture: one undo step, unless the text changed under it.
+    connect(timeline_->dopeSheet(), &DopeSheet::editsRequested, this,
+            [this](const std::vector<SpanEdit>& edits, const QString& base) {
+                if (files_->textIsReady() && editor()->toPlainText() == base)
+                    applySourceEdits(editor(), edits);
+            });
     connect(playback_, &Playback::loopRangeChanged, this, [this] {
         const auto loop = playback_->loopRange();
         timeline_->setLoop(loop ? std::optional(std::pair(loop->first, loop->last)) : std::nullopt);
@@ -343,6 +349,8 @@ void MainWindow::showSelection() {
                                        : std::nullopt);
     readouts_->setSelection(view ? view->label : QString());
     timeline_->setKeyMarkers(view ? view->keyFrames : QList<int>());
+    timeline_->dopeSheet()->setRows(session_->dopeSheetRows(), session_->dopeSheetText(),
+                                    document_->scene()->fps);
 }
 
 std::optional<Pose> MainWindow::lookAround() const {

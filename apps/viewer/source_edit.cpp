@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <string>
 
 #include "core/parse/lexer.h"
 #include "core/parse/number.h"
@@ -41,6 +42,17 @@ QString withEdits(const QString& text, std::vector<SpanEdit> edits) {
     for (const SpanEdit& edit : backToFront(std::move(edits)))
         out.replace(edit.begin, edit.end - edit.begin, edit.text);
     return out;
+}
+
+SpanEdit changedSpan(const QString& before, const QString& after) {
+    const qsizetype shorter = std::min(before.size(), after.size());
+    qsizetype prefix = 0;
+    while (prefix < shorter && before[prefix] == after[prefix]) ++prefix;
+    qsizetype suffix = 0;
+    while (suffix < shorter - prefix &&
+           before[before.size() - 1 - suffix] == after[after.size() - 1 - suffix])
+        ++suffix;
+    return {prefix, before.size() - suffix, after.mid(prefix, after.size() - suffix - prefix)};
 }
 
 void applySourceEdits(QPlainTextEdit* editor, std::vector<SpanEdit> edits,
@@ -119,6 +131,23 @@ std::optional<QString> scrubNumber(QStringView number, int steps) {
     return written;
 }
 
+SpanEdit insertLineAfter(const QString& text, const std::vector<SourceLine>& lines, int after,
+                         const QString& written) {
+    const std::size_t next = std::size_t(after + 1);
+    if (next < lines.size()) return {lines[next].begin, lines[next].begin, written + u'\n'};
+    // After the empty line a final line end leaves: before it, so the text still ends with one.
+    if (lines.size() > 1 && lines.back().begin == lines.back().end)
+        return {lines.back().begin, lines.back().begin, written + u'\n'};
+    return {text.size(), text.size(), u'\n' + written};
+}
+
+SpanEdit removeLine(const QString& text, const std::vector<SourceLine>& lines, int line) {
+    const SourceLine& removed = lines[std::size_t(line)];
+    if (std::size_t(line + 1) < lines.size()) return {removed.begin, lines[std::size_t(line + 1)].begin, {}};
+    // The last line: with the line end before it.
+    return {std::max<qsizetype>(0, removed.begin - 1), text.size(), {}};
+}
+
 std::optional<double> plainNumber(QStringView token) {
     if (token.isEmpty()) return std::nullopt;
     const QByteArray bytes = token.toUtf8();
@@ -131,6 +160,7 @@ std::vector<SourceLine> scanSource(const QString& text) {
     std::vector<SourceLine> lines;
     qsizetype start = 0;
     LineTokens tokens;
+    std::string bytes;  // reused: one line's UTF-8
     while (true) {
         qsizetype end = text.indexOf(u'\n', start);
         const bool last = end < 0;
@@ -140,13 +170,28 @@ std::vector<SourceLine> scanSource(const QString& text) {
         line.end = end;
         QStringView view = QStringView(text).mid(start, end - start);
         if (view.endsWith(u'\r')) view.chop(1);
-        const QByteArray bytes = view.toUtf8();
-        tokenizeLine(std::string_view(bytes.constData(), std::size_t(bytes.size())), tokens);
-        for (int i = 0; i < std::min(tokens.count, kMaxStoredTokens); ++i) {
+        // An ASCII line (nearly all of a scene) is its own UTF-8: bytes are UTF-16 offsets.
+        bytes.clear();
+        bool ascii = true;
+        for (QChar c : view) {
+            if (c.unicode() >= 0x80) {
+                ascii = false;
+                break;
+            }
+            bytes.push_back(char(c.unicode()));
+        }
+        if (!ascii) bytes = view.toUtf8().toStdString();
+        tokenizeLine(bytes, tokens);
+        const int stored = std::min(tokens.count, kMaxStoredTokens);
+        line.tokens.reserve(std::size_t(stored));
+        for (int i = 0; i < stored; ++i) {
             const Token& token = tokens.tokens[std::size_t(i)];
             // Byte columns to UTF-16 offsets: the length of the text before it.
-            const qsizetype at = start + QString::fromUtf8(bytes.constData(), token.column - 1).size();
-            const QString written = QString::fromUtf8(token.text.data(), qsizetype(token.text.size()));
+            const qsizetype at =
+                start + (ascii ? token.column - 1 : QString::fromUtf8(bytes.data(), token.column - 1).size());
+            const QString written = ascii
+                                        ? view.mid(at - start, qsizetype(token.text.size())).toString()
+                                        : QString::fromUtf8(token.text.data(), qsizetype(token.text.size()));
             line.tokens.push_back({at, at + written.size(), written});
         }
         lines.push_back(std::move(line));

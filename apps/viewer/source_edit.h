@@ -26,6 +26,10 @@ struct SpanEdit {
 /// `text`; edits must not overlap (two insertions at one offset keep their order).
 QString withEdits(const QString& text, std::vector<SpanEdit> edits);
 
+/// The one edit that turns `before` into `after`: what lies between their
+/// common start and common end.
+SpanEdit changedSpan(const QString& before, const QString& after);
+
 /// Applies `edits` (offsets as for withEdits, in the editor's current text)
 /// to `editor` as one undo step, and selects `select` (offsets in the text
 /// after the edits) when given.
@@ -72,6 +76,13 @@ struct SourceLine {
 
 /// Every line of `text` (split at '\n'; a '\r' before it is not part of the line's tokens).
 std::vector<SourceLine> scanSource(const QString& text);
+
+/// Inserting `written` as a line of its own after line `after` of `lines`
+/// (scanSource(text)); -1: before the first. A text ending in a line end still does.
+SpanEdit insertLineAfter(const QString& text, const std::vector<SourceLine>& lines, int after,
+                         const QString& written);
+/// Removing line `line` of `lines` with its line end.
+SpanEdit removeLine(const QString& text, const std::vector<SourceLine>& lines, int line);
 
 /// A token's value if it is a plain number (no expression, no suffix).
 std::optional<double> plainNumber(QStringView token);

@@ -165,13 +165,43 @@ void StudioSession::setSelection(std::optional<Selection> selection) {
     emit selectionChanged();
 }
 
+bool StudioSession::selectTarget(const QString& target) {
+    const auto scene = document_->scene();
+    if (!scene) return false;
+    Selection selection{target.section(u'.', 0, 0).toStdString(), std::nullopt,
+                        target.section(u'.', 1).toStdString()};
+    for (const SceneObject& object : scene->objects) {
+        if (object.name != selection.object) continue;
+        if (!selection.partName.empty()) {
+            const int part = object.model ? object.model->partIndex(selection.partName) : -1;
+            if (part < 0) break;
+            selection.part = part;
+        }
+        setSelection(selection);
+        return true;
+    }
+    return false;
+}
+
+void StudioSession::updateDopeSheet() {
+    const auto scene = document_->scene();
+    if (!scene) return;
+    if (scene == dopeScene_ && selection_ == dopeSelection_ && document_->text() == dopeText_) return;
+    dopeScene_ = scene;
+    dopeSelection_ = selection_;
+    dopeText_ = document_->text();
+    dopeRows_ = f2::viewer::dopeSheetRows(dopeText_, *scene, selection_);
+}
+
 void StudioSession::updateSelectionView() {
+    updateDopeSheet();
     const auto scene = document_->scene();
     const Track* track = selection_ && scene ? targetTrack(*scene, *selection_) : nullptr;
     if (!track) {
         selection_.reset();  // deleted or renamed in the text
         selectionView_.reset();
         motionPath_.reset();
+        updateDopeSheet();
         return;
     }
     // A preview is a copy of the document's scene with one key changed: the same objects.
@@ -359,8 +389,9 @@ WriteBack StudioSession::releaseKey(const QString& text, const Pose& key) {
         cancelPreview();
         return {};
     }
-    const SceneSource source{text, *scene, *document_->locations(), document_->sourceName()};
-    WriteBack write = writePose(source, selection_->target(), playback_->frame(), key);
+    const Vec3 p = key.position, r = key.rotation;
+    WriteBack write = writeBack(
+        text, {selection_->target(), std::nullopt, playback_->frame(), {p.x, p.y, p.z, r.x, r.y, r.z}});
     const QString written = withEdits(text, write.edits);
     if (write.refused() || written == text) {
         cancelPreview();  // nothing to parse: back to the text's picture now
@@ -387,6 +418,13 @@ void StudioSession::updateMotionPath(const std::shared_ptr<const SceneDesc>& sce
     for (const Key& key : targetTrack(*scene, *selection_)->keys)
         path.keys.push_back({int(std::lround(key.time)), at(key.time)});
     motionPath_ = std::move(path);
+}
+
+WriteBack StudioSession::writeBack(const QString& text, const WriteRequest& request) const {
+    const auto scene = document_->scene();
+    const auto locations = document_->locations();
+    if (!scene || !locations) return {{}, tr("There is no scene to write to yet."), {}, {}};
+    return f2::viewer::writeBack({text, *scene, *locations, document_->sourceName()}, request);
 }
 
 }  // namespace f2::viewer

@@ -17,6 +17,7 @@
 
 #include "core/render/camera.h"
 #include "core/render/image.h"
+#include "dope_sheet_model.h"
 #include "gizmo.h"
 #include "key_target.h"
 #include "playback_antialias.h"
@@ -77,6 +78,9 @@ class StudioSession : public QObject {
     /// selection on the background. Returns whether something is selected.
     bool pick(QPointF imagePoint, const Camera& camera);
     void setSelection(std::optional<Selection> selection);
+    /// Selects `target` (`name` or `name.part`) in the current scene; false
+    /// (and nothing selected) when there is no scene or no such target.
+    bool selectTarget(const QString& target);
     const std::optional<Selection>& selection() const { return selection_; }
     /// What shows the selection at the frame shown.
     struct SelectionView {
@@ -86,6 +90,11 @@ class StudioSession : public QObject {
     };
     /// Nothing without a selection (also after an edit deleted or renamed it).
     const std::optional<SelectionView>& selectionView() const { return selectionView_; }
+
+    /// The dope sheet's rows: the selection's key tracks (the camera's
+    /// without one), made from document()->text(), which dopeSheetText() keeps.
+    const std::vector<DopeRow>& dopeSheetRows() const { return dopeRows_; }
+    const QString& dopeSheetText() const { return dopeText_; }
 
     /// The editor line to select for the selection's creating command, and
     /// what the status bar says about it (empty: leave it).
@@ -154,6 +163,11 @@ class StudioSession : public QObject {
     /// what the picture marks for a click to select them.
     std::vector<TargetMarker> targetMarkers() const;
     static constexpr int kMaxPathPoints = 1000;
+    /// write_back.h's writeBack() on `text` with the document's last parse
+    /// (a refusal without a scene): what a gesture released at the current
+    /// frame writes. The window applies `edits` (or, asked, `offer`) with
+    /// applySourceEdits() as one undo step.
+    WriteBack writeBack(const QString& text, const WriteRequest& request) const;
 
    public slots:
     /// Renders the current time and view soon (requests made in one event
@@ -177,6 +191,9 @@ class StudioSession : public QObject {
     void onFrameReady(const QImage& image, const FrameInfo& info);
     /// selectionView_ for the frame shown; forgets a selection the scene lost.
     void updateSelectionView();
+    /// dopeSheetRows() for the current scene, selection and text (made again
+    /// only when one of them changed: this runs for every frame shown).
+    void updateDopeSheet();
     /// What a request for `scene` asks the bounds of: the selection, if `scene` has it.
     std::optional<BoundsOf> selectionIn(const SceneDesc& scene) const;
     /// The line of `text` holding `created` (an object of type `type`: "sphere",
@@ -205,6 +222,10 @@ class StudioSession : public QObject {
     // What motionPath_ was computed for.
     std::shared_ptr<const SceneDesc> pathScene_;
     std::optional<Selection> pathSelection_;
+    std::vector<DopeRow> dopeRows_;
+    QString dopeText_;
+    std::shared_ptr<const SceneDesc> dopeScene_;
+    std::optional<Selection> dopeSelection_;
     // Declared last so it is destroyed first: its worker joins while every
     // object it could talk to still exists.
     std::unique_ptr<RenderController> controller_;

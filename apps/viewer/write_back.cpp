@@ -105,11 +105,16 @@ QString numbersText(const std::vector<double>& values) {
 /// tokens that are expressions.
 void writeNumbers(const SourceLine& line, int first, const std::vector<double>& values,
                   const std::vector<double>& old, std::vector<SpanEdit>& edits) {
+    // The numbers written: up to the first word (an instance's parameters, `/lamp b 0 0 0 arm 60`).
+    std::size_t written = std::size_t(first);
+    while (written < line.tokens.size() && written < first + values.size() &&
+           !startsWithWord(line.tokens[written].text))
+        ++written;
     std::vector<double> missing;
     for (std::size_t i = 0; i < values.size(); ++i) {
         const std::size_t at = std::size_t(first) + i;
         const QString now = shortestNumber(values[i]);
-        if (at >= line.tokens.size()) {
+        if (at >= written) {
             missing.push_back(values[i]);
             continue;
         }
@@ -120,8 +125,10 @@ void writeNumbers(const SourceLine& line, int first, const std::vector<double>& 
                                                 : QString();
         if (now != before) edits.push_back({token.begin, token.end, now});
     }
-    if (std::any_of(missing.begin(), missing.end(), [](double v) { return shortestNumber(v) != u"0"; }))
-        edits.push_back({line.tokens.back().end, line.tokens.back().end, u' ' + numbersText(missing)});
+    if (std::any_of(missing.begin(), missing.end(), [](double v) { return shortestNumber(v) != u"0"; })) {
+        const qsizetype end = line.tokens[written - 1].end;
+        edits.push_back({end, end, u' ' + numbersText(missing)});
+    }
 }
 
 QString indentOf(const QString& text, const SourceLine& line) {
@@ -130,21 +137,10 @@ QString indentOf(const QString& text, const SourceLine& line) {
     return text.mid(line.begin, i - line.begin);
 }
 
-/// Inserting `written` as a line of its own after line `after` (-1: before the first).
-SpanEdit insertAfter(const QString& text, const std::vector<SourceLine>& lines, int after,
-                     const QString& written) {
-    const std::size_t next = std::size_t(after + 1);
-    if (next < lines.size()) return {lines[next].begin, lines[next].begin, written + u'\n'};
-    // After the empty line a final line end leaves: before it, so the text still ends with one.
-    if (lines.size() > 1 && lines.back().begin == lines.back().end)
-        return {lines.back().begin, lines.back().begin, written + u'\n'};
-    return {text.size(), text.size(), u'\n' + written};
-}
-
 /// Where a target is made: on an editable line of the main file, inside a
 /// loop of it, in an included file, or nowhere this text shows.
 struct Origin {
-    enum Where { Here, Loop, Included, Unknown } where = Unknown;
+    enum Where { Here, Loop, Included, Unknown, Stale } where = Unknown;
     int line = -1;       ///< Here: the creating line; Loop: the loop's /end; Included: the /include line
     int loopStart = -1;  ///< Loop: the /repeat line
     QString file;        ///< Included: the file's name as diagnostics give it
@@ -171,10 +167,17 @@ Origin originOf(const SceneSource& source, const std::vector<SourceLine>& lines,
         }
         return {};
     }
-    const CreatedAt* created = source.locations.object(source.scene.objects[*r.object].name);
+    const SceneObject& object = source.scene.objects[*r.object];
+    const CreatedAt* created = source.locations.object(object.name);
     if (!created) return {};
     if (created->loc.file == source.sourceName) {
-        Origin origin = at(created->loc.line - 1);
+        // The text may have changed since the parse: the line must still hold the command.
+        const int index = created->loc.line - 1;
+        const std::string_view type = typeNameOf(object);
+        if (index >= int(lines.size()) || lines[std::size_t(index)].command() !=
+                                              u'/' + QString::fromUtf8(type.data(), qsizetype(type.size())))
+            return {Origin::Stale, -1, -1, {}};
+        Origin origin = at(index);
         // Several objects from one line (a loop) even where scanning saw no /repeat.
         if (origin.where == Origin::Here && created->sameLine > 1) origin.where = Origin::Loop;
         return origin;
@@ -187,7 +190,8 @@ Origin originOf(const SceneSource& source, const std::vector<SourceLine>& lines,
 
 /// The line a new line for the target goes after, when it has no key line to go next to.
 int anchorLine(const Origin& origin, const std::vector<SourceLine>& lines) {
-    return origin.where == Origin::Unknown ? int(lines.size()) - 1 : origin.line;
+    return origin.where == Origin::Unknown || origin.where == Origin::Stale ? int(lines.size()) - 1
+                                                                            : origin.line;
 }
 
 /// The written place of a loop, for messages: "lines 3–7".
@@ -196,6 +200,22 @@ QString loopPlace(const Origin& origin) {
 }
 
 }  // namespace
+
+std::optional<KeyProperty> keyLineProperty(const SourceLine& line) {
+    if (line.tokens.size() < 4) return std::nullopt;
+    const QByteArray word = line.tokens[3].text.toUtf8();
+    const KeyPropertySpec* spec =
+        findKeyProperty(std::string_view(word.constData(), std::size_t(word.size())));
+    return spec ? std::optional(spec->property) : std::nullopt;
+}
+
+int keyLineModeAt(const SourceLine& line) {
+    const auto property = keyLineProperty(line);
+    const int count = property ? specOf(*property).numbers : 6;
+    const int numbers = keyNumbersAt(line, property, count);
+    const int at = numbers >= 0 ? numbers + count : property ? 4 : 3;
+    return std::min(at, int(line.tokens.size()));
+}
 
 std::optional<double> keyTime(QStringView token, int fps) {
     if (token.endsWith(u's')) {
@@ -211,10 +231,7 @@ std::vector<KeyLine> keyLines(const std::vector<SourceLine>& lines, int fps, con
     for (int i = 0; i < int(lines.size()); ++i) {
         const SourceLine& line = lines[std::size_t(i)];
         if (line.command() != u"/key" || line.tokens.size() < 3 || line.tokens[2].text != target) continue;
-        const QByteArray word = line.tokens.size() > 3 ? line.tokens[3].text.toUtf8() : QByteArray();
-        const KeyPropertySpec* spec =
-            findKeyProperty(std::string_view(word.constData(), std::size_t(word.size())));
-        if ((spec ? std::optional(spec->property) : std::nullopt) != property) continue;
+        if (keyLineProperty(line) != property) continue;
         found.push_back({i, keyTime(line.tokens[1].text, fps), line.loopEnd < 0 && !line.inModel});
     }
     return found;
@@ -226,8 +243,13 @@ WriteBack writeBack(const SceneSource& source, const WriteRequest& request) {
     const int count = request.property ? specOf(*request.property).numbers : 6;
     WriteBack out;
     if (!r.track || int(request.values.size()) != count) {
+        const bool known = r.camera || r.light || (r.object && (r.part || request.target.indexOf(u'.') < 0));
         out.refusal =
-            tr("%1 is not in the scene as it was last read (renamed or deleted since?)").arg(request.target);
+            known && request.property
+                ? tr("%1 has no %2 to key.").arg(request.target, toQString(specOf(*request.property).word))
+            : known ? tr("%1 has no pose to key.").arg(request.target)
+                    : tr("%1 is not in the scene as it was last read (renamed or deleted since?)")
+                          .arg(request.target);
         return out;
     }
     const QString keyText =
@@ -279,7 +301,7 @@ WriteBack writeBack(const SceneSource& source, const WriteRequest& request) {
                          "(an included file, a /model block or a computed time).")
                           .arg(request.target)
                           .arg(request.frame);
-            out.offer = {insertAfter(source.text, lines, after, keyText)};
+            out.offer = {insertLineAfter(source.text, lines, after, keyText)};
             out.offerLabel = tr("Add a key at line %1 instead (it replaces that key)").arg(after + 2);
             return out;
         }
@@ -294,12 +316,12 @@ WriteBack writeBack(const SceneSource& source, const WriteRequest& request) {
         if (before) {
             const SourceLine& line = lines[std::size_t(before->line)];
             out.edits = {
-                insertAfter(source.text, lines, before->line, indentOf(source.text, line) + keyText)};
+                insertLineAfter(source.text, lines, before->line, indentOf(source.text, line) + keyText)};
         } else if (later) {
             const SourceLine& line = lines[std::size_t(later->line)];
             out.edits = {{line.begin, line.begin, indentOf(source.text, line) + keyText + u'\n'}};
         } else {
-            out.edits = {insertAfter(source.text, lines, anchorLine(origin, lines), keyText)};
+            out.edits = {insertLineAfter(source.text, lines, anchorLine(origin, lines), keyText)};
         }
         return out;
     }
@@ -325,7 +347,7 @@ WriteBack writeBack(const SceneSource& source, const WriteRequest& request) {
     }
     if (first < 0) {
         // A part, a colour, a light's pose, visibility: the first key goes after the creating line.
-        out.edits = {insertAfter(source.text, lines, anchorLine(origin, lines), keyText)};
+        out.edits = {insertLineAfter(source.text, lines, anchorLine(origin, lines), keyText)};
         return out;
     }
     if (origin.where == Origin::Here) {
@@ -346,12 +368,19 @@ WriteBack writeBack(const SceneSource& source, const WriteRequest& request) {
                               .arg(what, origin.file);
             out.offerLabel = tr("Add a key after its /include (line %1) instead").arg(origin.line + 2);
             break;
+        case Origin::Stale:
+            out.refusal =
+                tr("The text has changed at the line that makes %1 since it was last read; try again "
+                   "once the picture has caught up.")
+                    .arg(request.target);
+            return out;
         default:
-            out.refusal = tr("%1 is not made on a line of this file.").arg(what);
+            out.refusal = r.camera ? tr("This file has no /camera line.")
+                                   : tr("%1 is not made on a line of this file.").arg(what);
             out.offerLabel = tr("Add a key at the end of the file instead");
             break;
     }
-    out.offer = {insertAfter(source.text, lines, anchorLine(origin, lines), keyText)};
+    out.offer = {insertLineAfter(source.text, lines, anchorLine(origin, lines), keyText)};
     return out;
 }
 

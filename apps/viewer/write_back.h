@@ -67,6 +67,10 @@ struct KeyLine {
 };
 std::vector<KeyLine> keyLines(const std::vector<SourceLine>& lines, int fps, const QString& target,
                               std::optional<KeyProperty> property);
+/// The property a `/key` line keys (none: the pose).
+std::optional<KeyProperty> keyLineProperty(const SourceLine& line);
+/// The index of a `/key` line's mode word (after its numbers), or its token count without one.
+int keyLineModeAt(const SourceLine& line);
 /// A key line's time token read as frames (`2.5s` with `fps`); nothing for an expression.
 std::optional<double> keyTime(QStringView token, int fps);
 

@@ -491,6 +491,9 @@ void GizmoTest::aLightAndTheCameraByTheirMarkers() {
     QVERIFY(w->selection());
     QCOMPARE(w->selection()->kind, Selection::Kind::Light);
     QVERIFY(w->selectionStatus().startsWith(QStringLiteral("bulb at (0.0, 3.0, 8.0)")));
+    // The dope sheet has its pose row (no keys yet).
+    QCOMPARE(int(w->session()->dopeSheetRows().size()), 1);
+    QCOMPARE(w->session()->dopeSheetRows()[0].target, QStringLiteral("bulb"));
     auto g = w->gizmoTool()->gizmo();
     QVERIFY(g);
     QVERIFY(std::hypot(onScreen(*w, g->centre()).x() - markers[0].first.x(),
@@ -531,6 +534,7 @@ void GizmoTest::aLightAndTheCameraByTheirMarkers() {
     QVERIFY(cameraMarker != markers.end());
     QTest::mouseClick(view, Qt::LeftButton, {}, cameraMarker->first.toPoint());
     QCOMPARE(w->selection()->target(), QStringLiteral("camera"));
+    QCOMPARE(w->session()->dopeSheetRows()[0].target, QStringLiteral("camera"));
     g = w->gizmoTool()->gizmo();
     QVERIFY(g);
     // Up its y arrow: the camera has no keys, so its /camera line's eye rises.

@@ -10,9 +10,11 @@
 
 #include "core/parse/parser.h"
 #include "core/parse/symbol_index.h"
+#include "dope_sheet_model.h"
 #include "scene_locations.h"
 #include "test_support.h"
 #include "write_back.h"
+#include "write_back_prompt.h"
 
 using namespace f2;
 using namespace f2::viewer;
@@ -65,6 +67,10 @@ class SourceEditTest : public QObject {
     void targetInALoopIsRefusedWithAnOffer();
     void targetInAnIncludedFileIsRefusedWithAnOffer();
     void propertyKeysAndFirstKeysOfParts();
+    void dopeSheetRowsNameTheKeyLines();
+    void movedKeysChangeOnlyTheirTimes();
+    void deletedKeysAndModesAreLineEdits();
+    void refusedWriteBackAsksBeforeItsOffer();
 };
 
 void SourceEditTest::numbersAreWrittenInShortestForm() {
@@ -188,6 +194,14 @@ void SourceEditTest::unkeyedTargetChangesItsCreatingNumbers() {
              QString(text).replace(QStringLiteral("0 0 -10  "), QStringLiteral("0 1 -10 5 0 0  ")));
     QCOMPARE(withEdits(text, parsed.property(QStringLiteral("camera"), KeyProperty::Zoom, 7, {0.75}).edits),
              QString(text).replace(QStringLiteral("0.5  0"), QStringLiteral("0.75  0")));
+    // Text changed since the parse (a line typed above): no edit of whatever line is there now.
+    const QString typed = QStringLiteral("/fps 30\n") + text;
+    const WriteBack stale = writePose({typed, parsed.scene, parsed.locations, parsed.name},
+                                      QStringLiteral("crate"), 0, pose(4, 5.5f, 6));
+    QVERIFY(stale.refused());
+    QVERIFY(stale.edits.empty() && stale.offer.empty());
+    QVERIFY2(stale.refusal.startsWith(QStringLiteral("The text has changed at the line that makes crate")),
+             qPrintable(stale.refusal));
 }
 
 void SourceEditTest::targetInALoopIsRefusedWithAnOffer() {
@@ -264,7 +278,150 @@ void SourceEditTest::propertyKeysAndFirstKeysOfParts() {
     QCOMPARE(
         withEdits(text, parsed.property(QStringLiteral("r1"), KeyProperty::Visible, 4, {0}).edits),
         QString(text).replace(QStringLiteral("0 0 5\n"), QStringLiteral("0 0 5\n/key 4 r1 visible 0\n")));
-    QVERIFY(parsed.pose(QStringLiteral("nobody"), 0, pose(0, 0, 0)).refused());
+    QCOMPARE(parsed.pose(QStringLiteral("nobody"), 0, pose(0, 0, 0)).refusal,
+             QStringLiteral("nobody is not in the scene as it was last read (renamed or deleted since?)"));
+    QCOMPARE(parsed.property(QStringLiteral("ball"), KeyProperty::Intensity, 0, {1}).refusal,
+             QStringLiteral("ball has no intensity to key."));
+    // An instance's parameters stay after its pose; a missing rotation goes before them.
+    const QString lamps = QStringLiteral(
+        "/model lamp arm 120\n/part head root 0 (arm) 0\n/sphere head.bulb 5 0 0 0\n/end\n"
+        "/lamp b 200 0 0 arm 60\n");
+    const Parsed lamp(lamps);
+    QCOMPARE(withEdits(lamps, lamp.pose(QStringLiteral("b"), 0, pose(200, 0, 0, 0, 90, 0)).edits),
+             QString(lamps).replace(QStringLiteral("200 0 0 arm"), QStringLiteral("200 0 0 0 90 0 arm")));
+}
+
+void SourceEditTest::dopeSheetRowsNameTheKeyLines() {
+    const QString text = QStringLiteral(
+        "/robot r1 0 0 5\n"
+        "/key 0 r1\n"
+        "/key 1s r1 1 0 5 0 0 0 ease\n"
+        "/repeat i 0 0\n"
+        "/key 48 r1 2 0 5 0 0 0\n"
+        "/end\n"
+        "/key 10 r1.head 0 0 0 0 30 0\n"
+        "/key 5 r1 colour 255 0 0\n");
+    const Parsed parsed(text);
+    const auto rows = dopeSheetRows(text, parsed.scene, Selection{"r1", std::nullopt, {}});
+    // The pose, the one keyed part, the colour; not the unkeyed parts.
+    QCOMPARE(rows.size(), std::size_t(3));
+    QCOMPARE(rows[0].target, QStringLiteral("r1"));
+    QCOMPARE(rows[0].keys.size(), std::size_t(3));
+    QCOMPARE(rows[0].keys[0].line, 1);
+    QCOMPARE(rows[0].keys[1].time, 24.0);  // 1s at 24 fps
+    QCOMPARE(rows[0].keys[1].line, 2);
+    QVERIFY(rows[0].keys[1].mode && rows[0].keys[1].mode->mode == Interpolation::Ease);
+    QCOMPARE(rows[0].keys[2].line, -1);  // inside a loop: shown, not editable
+    QCOMPARE(rows[1].target, QStringLiteral("r1.head"));
+    QCOMPARE(rows[1].keys[0].line, 6);
+    QCOMPARE(rows[2].property, std::optional(KeyProperty::Colour));
+    QCOMPARE(rows[2].keys[0].line, 7);
+    // Without a selection: the camera.
+    const auto camera = dopeSheetRows(text, parsed.scene, std::nullopt);
+    QCOMPARE(camera.size(), std::size_t(1));
+    QCOMPARE(camera[0].target, QStringLiteral("camera"));
+}
+
+void SourceEditTest::movedKeysChangeOnlyTheirTimes() {
+    const QString text = QStringLiteral(
+        "/sphere ball 1 0 0 0\n"
+        "/key 0 ball\n"
+        "/key  40  ball 1 2 3 0 0 0 ease  # hop\n"
+        "/key 2s ball 2 2 2 0 0 0\n"
+        "/key 60 ball colour 1 2 3\n"
+        "/key 80 ball 4 4 4 0 0 0\n");
+    // 40 → 60: exactly that line's time.
+    QCOMPARE(withEdits(text, moveKeyEdits(text, 24, {2}, 20, false)),
+             QString(text).replace(QStringLiteral("/key  40  ball"), QStringLiteral("/key  60  ball")));
+    // A time in seconds stays in seconds; two keys move together.
+    QCOMPARE(withEdits(text, moveKeyEdits(text, 24, {2, 3}, 12, false)),
+             QString(text)
+                 .replace(QStringLiteral("/key  40  ball"), QStringLiteral("/key  52  ball"))
+                 .replace(QStringLiteral("2s ball"), QStringLiteral("2.5s ball")));
+    // Not before frame 0: the move stops there for all.
+    QCOMPARE(
+        withEdits(text, moveKeyEdits(text, 24, {2, 3}, -100, false)),
+        QString(text)
+            .replace(QStringLiteral("/key  40  ball"), QStringLiteral("/key  0  ball"))
+            .replace(QStringLiteral("2s ball"), QStringLiteral("8 ball"))  // 1/3 s is no short number: frames
+            .replace(QStringLiteral("/key 0 ball\n"), QString()));         // the key at 0 it lands on goes
+    // A copy: the original stays, the copy follows it; a key of the same
+    // track at the new time goes, not the colour key there.
+    QCOMPARE(withEdits(text, moveKeyEdits(text, 24, {3}, 20, true)),
+             QString(text).replace(QStringLiteral("/key 2s ball 2 2 2 0 0 0\n"),
+                                   QStringLiteral("/key 2s ball 2 2 2 0 0 0\n/key 68 ball 2 2 2 0 0 0\n")));
+    QCOMPARE(withEdits(text, moveKeyEdits(text, 24, {2}, 40, true)),
+             QString(text)
+                 .replace(QStringLiteral("# hop\n"),
+                          QStringLiteral("# hop\n/key  80  ball 1 2 3 0 0 0 ease  # hop\n"))
+                 .replace(QStringLiteral("/key 80 ball 4 4 4 0 0 0\n"), QString()));
+}
+
+void SourceEditTest::deletedKeysAndModesAreLineEdits() {
+    const QString text = QStringLiteral(
+        "/sphere ball 1 0 0 0\n"
+        "/key 0 ball\n"
+        "/key 40 ball 1 2 3 0 0 0 bezier 0.1 0.2 0.3 1  # hop\n"
+        "/key 60 ball colour 1 2 3\n"
+        "/key 70 ball visible 0\n"
+        "/key 80 ball 4 4 4 0 0 0");
+    QCOMPARE(withEdits(text, deleteKeyEdits(text, {1, 5})),
+             QStringLiteral("/sphere ball 1 0 0 0\n"
+                            "/key 40 ball 1 2 3 0 0 0 bezier 0.1 0.2 0.3 1  # hop\n"
+                            "/key 60 ball colour 1 2 3\n"
+                            "/key 70 ball visible 0"));
+    // The mode word and its numbers are replaced, the comment stays; a key
+    // without a mode gets one; visible keys take none.
+    QCOMPARE(withEdits(text, keyModeEdits(text, {1, 2, 3, 4}, Easing(Interpolation::EaseIn))),
+             QString(text)
+                 .replace(QStringLiteral("/key 0 ball\n"), QStringLiteral("/key 0 ball ease_in\n"))
+                 .replace(QStringLiteral("bezier 0.1 0.2 0.3 1"), QStringLiteral("ease_in"))
+                 .replace(QStringLiteral("colour 1 2 3"), QStringLiteral("colour 1 2 3 ease_in")));
+    QCOMPARE(withEdits(text, keyModeEdits(text, {2}, std::nullopt)),
+             QString(text).replace(QStringLiteral(" bezier 0.1 0.2 0.3 1"), QString()));
+}
+
+void SourceEditTest::refusedWriteBackAsksBeforeItsOffer() {
+    const QString text = QStringLiteral(
+        "/repeat i 0 1\n"
+        "/sphere b{ i } 1 (i * 3) 0 5  # a row\n"
+        "/end\n");
+    const Parsed parsed(text);
+    const WriteBack write = parsed.pose(QStringLiteral("b0"), 4, pose(1, 0, 5));
+    QVERIFY(write.refused());
+    QPlainTextEdit editor;
+    editor.setPlainText(text);
+    QString asked;
+    // Declined: the text is byte-identical and there is nothing to undo.
+    QCOMPARE(applyWriteBack(&editor, write,
+                            [&](const QString& why, const QString&) {
+                                asked = why;
+                                return false;
+                            }),
+             WriteBackOutcome::Declined);
+    QCOMPARE(asked, write.refusal);
+    QCOMPARE(editor.toPlainText(), text);
+    QVERIFY(!editor.document()->isUndoAvailable());
+    // Taken: the key after the loop, one undo step.
+    QCOMPARE(applyWriteBack(&editor, write, [](const QString&, const QString&) { return true; }),
+             WriteBackOutcome::Offered);
+    QCOMPARE(editor.toPlainText(), text + QStringLiteral("/key 4 b0 1 0 5 0 0 0\n"));
+    QCOMPARE(editor.textCursor().selectedText(), QStringLiteral("/key 4 b0 1 0 5 0 0 0"));
+    // Keyed now: written in place, that line selected.
+    const Parsed keyed(editor.toPlainText());
+    QCOMPARE(applyWriteBack(&editor, keyed.pose(QStringLiteral("b0"), 4, pose(1, 2, 5)), {}),
+             WriteBackOutcome::Written);
+    QCOMPARE(editor.textCursor().selectedText(), QStringLiteral("/key 4 b0 1 2 5 0 0 0"));
+    QCOMPARE(applyWriteBack(&editor,
+                            Parsed(editor.toPlainText()).pose(QStringLiteral("b0"), 4, pose(1, 2, 5)), {}),
+             WriteBackOutcome::Unchanged);
+    editor.undo();
+    editor.undo();
+    QCOMPARE(editor.toPlainText(), text);
+    // Line edits of the capture commands are one span.
+    QCOMPARE(changedSpan(QStringLiteral("a b c"), QStringLiteral("a bb c")),
+             (SpanEdit{3, 3, QStringLiteral("b")}));
+    QCOMPARE(changedSpan(QStringLiteral("abc"), QStringLiteral("abc")), (SpanEdit{3, 3, QString()}));
 }
 
 QTEST_MAIN(SourceEditTest)
