@@ -14,8 +14,10 @@
 
 #include "capture_pose.h"
 #include "core/anim/frame_builder.h"
+#include "core/parse/parser.h"
 #include "core/render/pick.h"
 #include "gizmo_tool.h"
+#include "key_target.h"
 #include "main_window.h"
 #include "playback.h"
 #include "scene_document.h"
@@ -103,6 +105,7 @@ class GizmoTest : public QObject {
    private slots:
     void initTestCase();
     void handlesFollowTheCamera();
+    void anAttachedTargetMovesInItsMountsAxes();
     void draggingTheXHandleWritesTheKey();
     void ctrlSnapsAndEscCancels();
     void undoAndRedoTheDrag();
@@ -168,6 +171,40 @@ void GizmoTest::handlesFollowTheCamera() {
     const Mat3 m = rotationFromEulerDegrees(Vec3{170, 10, -20});
     const Vec3 near = eulerDegreesNear(m, {170, 10, -20});
     QVERIFY(length(near - Vec3{170, 10, -20}) < 1e-3f);
+}
+
+void GizmoTest::anAttachedTargetMovesInItsMountsAxes() {
+    // A ball riding on a box turned 90 degrees about z: its key is read in the box's
+    // frame, whose x is the world's y.
+    const auto parsed = parseScene(
+        "/camera 400 300 0.5\n/box holder 2 2 2 0 0 20 0 0 90\n"
+        "/sphere ball 1 3 0 0\n/attach ball holder\n/key 0 ball 3 0 0 0 0 0\n"
+        "/key 10 ball 3 0 0 0 0 0\n",
+        "t.f2");
+    QVERIFY(parsed.ok());
+    const SceneDesc& scene = *parsed.scene;
+    const Selection ball{"ball", std::nullopt, {}};
+    const auto key = targetKeyFrame(scene, ball, 5);
+    QVERIFY(key);
+    QVERIFY(length(key->centre() - Vec3{0, 3, 20}) < 1e-5f);
+    const Camera camera = cameraAt(scene, 5).resized(400, 300);
+    const Gizmo g(camera, *key, GizmoMode::Move, false);
+    QVERIFY(length(g.axis(0) - Vec3{0, 1, 0}) < 1e-5f);
+    // Up the screen along that axis: the key's x grows, nothing else changes.
+    GizmoDrag drag(g, GizmoHandle::X, g.centre() + (g.arrowEnd(0) - g.centre()) * 0.5);
+    const Pose moved = drag.update(g.centre() + (g.arrowEnd(0) - g.centre()) * 0.5 + QPointF(0, -20), false);
+    QVERIFY(moved.position.x > 3.5f);
+    QCOMPARE(moved.position.y, 0.0f);
+    QCOMPARE(moved.position.z, 0.0f);
+    // The preview's scene: the key at 5 goes between the two, and the ball is there in the world.
+    const auto preview = sceneWithKey(scene, ball, 5, moved);
+    QVERIFY(preview);
+    QCOMPARE(int(preview->objects[1].track.keys.size()), 3);
+    QCOMPARE(preview->objects[1].track.keys[1].time, 5.0);
+    QVERIFY(length(*targetPosition(*preview, ball, 5) - Vec3{0, moved.position.x, 20}) < 1e-4f);
+    // At a keyed frame the key is replaced; the original scene is untouched.
+    QCOMPARE(int(sceneWithKey(scene, ball, 10, moved)->objects[1].track.keys.size()), 2);
+    QCOMPARE(scene.objects[1].track.keys.size(), std::size_t(2));
 }
 
 void GizmoTest::draggingTheXHandleWritesTheKey() {
