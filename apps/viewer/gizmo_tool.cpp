@@ -24,6 +24,11 @@ constexpr double kDotRadius = 4;
 
 QColor lit(QColor colour, bool active) { return active ? colour.lighter(150) : colour; }
 
+/// A press or the mouse at `pos` is on what is drawn at `at`.
+bool near(QPointF pos, QPointF at) {
+    return std::hypot(pos.x() - at.x(), pos.y() - at.y()) <= Gizmo::kHitPixels;
+}
+
 }  // namespace
 
 GizmoTool::GizmoTool(StudioSession* session, ViewportWidget* viewport, QPlainTextEdit* editor,
@@ -125,6 +130,18 @@ std::vector<std::pair<QPointF, Selection>> GizmoTool::markers() const {
     return out;
 }
 
+std::optional<int> GizmoTool::dotAt(QPointF pos) const {
+    for (const auto& [at, frame] : pathDots())
+        if (near(pos, at)) return frame;
+    return std::nullopt;
+}
+
+std::optional<Selection> GizmoTool::markerAt(QPointF pos) const {
+    for (const auto& [at, target] : markers())
+        if (near(pos, at)) return target;
+    return std::nullopt;
+}
+
 void GizmoTool::paint(QPainter& painter) {
     if (viewport_->image().isNull()) return;
     painter.save();
@@ -188,7 +205,7 @@ void GizmoTool::paintPath(QPainter& painter, const Camera& camera, QPointF offse
 }
 
 void GizmoTool::paintGizmo(QPainter& painter, const Gizmo& g, QPointF offset) const {
-    const int active = drag_ ? int(drag_->handle()) : -1;
+    const int active = drag_ ? int(drag_->handle()) : hovered_;
     const QPointF c = offset + g.centre();
     painter.setBrush(Qt::NoBrush);
     for (int i = 0; i < 3; ++i) {
@@ -232,22 +249,15 @@ bool GizmoTool::press(QPointF pos, Qt::KeyboardModifiers) {
             return true;
         }
     }
-    const auto near = [&](QPointF at) {
-        return std::hypot(pos.x() - at.x(), pos.y() - at.y()) <= Gizmo::kHitPixels;
-    };
-    for (const auto& [at, frame] : pathDots()) {
-        if (near(at)) {
-            session_->playback()->pause();
-            session_->playback()->seek(frame);
-            return true;
-        }
+    if (const auto frame = dotAt(pos)) {
+        session_->playback()->pause();
+        session_->playback()->seek(*frame);
+        return true;
     }
     // A light or the camera has no surface for a click: its marker selects it.
-    for (const auto& [at, target] : markers()) {
-        if (near(at)) {
-            session_->setSelection(target);
-            return true;
-        }
+    if (const auto target = markerAt(pos)) {
+        session_->setSelection(*target);
+        return true;
     }
     return false;
 }
@@ -304,6 +314,18 @@ void GizmoTool::cancelDrag() {
     viewport_->setCursor(Qt::OpenHandCursor);
     viewport_->update();
     emit message(tr("Drag cancelled"), 3000);
+}
+
+void GizmoTool::hover(QPointF pos) {
+    const auto g = gizmo();
+    const auto handle = g ? g->hit(displayPoint(pos)) : std::nullopt;
+    const int hovered = handle ? int(*handle) : -1;
+    // A pointing hand over what a click acts on: a handle, a key's dot, a marker.
+    const bool onSomething = handle || dotAt(pos) || markerAt(pos);
+    viewport_->setCursor(onSomething ? Qt::PointingHandCursor : Qt::OpenHandCursor);
+    if (hovered == hovered_) return;
+    hovered_ = hovered;
+    viewport_->update();
 }
 
 bool GizmoTool::key(QKeyEvent* event) {

@@ -58,12 +58,16 @@ class GizmoTool : public QObject, public ViewportOverlay {
     void move(QPointF pos, Qt::KeyboardModifiers modifiers) override;
     bool release(QPointF pos, Qt::KeyboardModifiers modifiers) override;
     bool key(QKeyEvent* event) override;
+    void hover(QPointF pos) override;
 
    signals:
     /// For the status bar: what the drag does (empty: clear it).
     void message(const QString& text, int timeoutMs = 0);
 
    private:
+    /// The frame of the path dot, or the target of the marker, at widget position `pos`.
+    std::optional<int> dotAt(QPointF pos) const;
+    std::optional<Selection> markerAt(QPointF pos) const;
     /// `pos` (widget) in displayCamera() pixels.
     QPointF displayPoint(QPointF pos) const;
     void updateDrag(QPointF pos, Qt::KeyboardModifiers modifiers);
@@ -83,6 +87,7 @@ class GizmoTool : public QObject, public ViewportOverlay {
     std::optional<GizmoDrag> drag_;
     Pose dragPose_;  // the key with the mouse where it is
     QPointF pressedAt_;
+    int hovered_ = -1;    // the GizmoHandle under the mouse, lit; -1: none
     bool moved_ = false;  // past the click slop: a shaking click moves nothing
     QAction* moveAction_ = nullptr;
     QAction* turnAction_ = nullptr;

@@ -13,7 +13,7 @@ namespace f2::viewer {
 
 ViewportWidget::ViewportWidget(QWidget* parent) : QWidget(parent) {
     setFocusPolicy(Qt::StrongFocus);
-    setMouseTracking(false);
+    setMouseTracking(true);                 // the overlay lights the handle under the mouse
     setAttribute(Qt::WA_OpaquePaintEvent);  // paintEvent covers every pixel
     setCursor(Qt::OpenHandCursor);
     setToolTip(tr("Drag to orbit, wheel to zoom; View > Scene Camera to go back"));
@@ -139,7 +139,11 @@ void ViewportWidget::mousePressEvent(QMouseEvent* event) {
 
 void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
     if (overlayDrag_) return overlay_->move(event->position(), event->modifiers());
-    if (!dragFrom_) return QWidget::mouseMoveEvent(event);
+    if (!dragFrom_) {
+        if (overlay_ && event->buttons() == Qt::NoButton && !image_.isNull())
+            overlay_->hover(event->position());
+        return QWidget::mouseMoveEvent(event);
+    }
     const QPoint now = event->position().toPoint();
     // A hand that shakes during a click does not turn the view.
     if (!dragged_ && (now - pressAt_).manhattanLength() <= kClickSlop) return;

@@ -32,6 +32,8 @@ class ViewportOverlay {
     virtual bool release(QPointF pos, Qt::KeyboardModifiers modifiers) = 0;
     /// A key pressed while the picture has the focus: true if it used it.
     virtual bool key(QKeyEvent* event) = 0;
+    /// The mouse moved over the picture with no button held.
+    virtual void hover(QPointF pos) = 0;
 };
 
 /// How the render size follows the window.

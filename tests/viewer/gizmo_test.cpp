@@ -217,6 +217,11 @@ void GizmoTest::draggingTheXHandleWritesTheKey() {
     const QPointF from = g->centre() + (g->arrowEnd(0) - g->centre()) * 0.6;
     QCOMPARE(g->hit(from), std::optional(GizmoHandle::X));
     const QPointF to = from + QPointF(40, 3);  // a hand is never quite straight
+    // Over the arrow the cursor says it can be taken; off it, the picture's open hand.
+    QTest::mouseMove(w->viewport(), onScreen(*w, from));
+    QCOMPARE(w->viewport()->cursor().shape(), Qt::PointingHandCursor);
+    QTest::mouseMove(w->viewport(), onScreen(*w, from + QPointF(0, 30)));
+    QCOMPARE(w->viewport()->cursor().shape(), Qt::OpenHandCursor);
     QTest::mousePress(w->viewport(), Qt::LeftButton, {}, onScreen(*w, from));
     QTest::mouseMove(w->viewport(), onScreen(*w, from + QPointF(20, 1)));
     QTest::mouseMove(w->viewport(), onScreen(*w, to));
