@@ -59,6 +59,7 @@ class SourceEditTest : public QObject {
    private slots:
     void numbersAreWrittenInShortestForm();
     void spanEditsApplyBackToFront();
+    void scannedLinesKnowTheirBlocks();
     void editorEditsAreOneUndoStep();
     void scrubbedNumberStepsByItsLastDigit();
     void keyAtTheFrameChangesOnlyItsNumbers();
@@ -102,6 +103,38 @@ void SourceEditTest::spanEditsApplyBackToFront() {
     QCOMPARE(lines[1].tokens.size(), std::size_t(10));
     QCOMPARE(twoLines.mid(lines[1].tokens[3].begin, 1), QStringLiteral("1"));
     QCOMPARE(lines[1].tokens[9].text, QStringLiteral("ease"));
+}
+
+void SourceEditTest::scannedLinesKnowTheirBlocks() {
+    const QString text = QStringLiteral(
+        "/model m\n"                           // 0
+        "/part p root 0 0 0\n"                 // 1
+        "/repeat i 0 1\n"                      // 2: a loop inside a block
+        "/sphere p.s{ i } 1 0 0 0\n"           // 3
+        "/end\n"                               // 4
+        "/end\n"                               // 5
+        "/repeat i 0 1\n"                      // 6
+        "  /repeat j 0 1   # nested\n"         // 7
+        "  /sphere b{ i }{ j } 1 (i) (j) 0\n"  // 8
+        "  /end\n"                             // 9
+        "/end\n"                               // 10
+        "/sphere solo 1 0 0 0\r\n"             // 11: CRLF
+        "/repeat k 0 1\n"                      // 12: without its /end
+        "/sphere late{ k } 1 0 0 0");          // 13
+    const std::vector<SourceLine> lines = scanSource(text);
+    QCOMPARE(lines.size(), std::size_t(14));
+    QVERIFY(lines[1].inModel && lines[3].inModel && !lines[6].inModel);
+    QCOMPARE(lines[3].loopStart, 2);
+    QCOMPARE(lines[3].loopEnd, 4);
+    QCOMPARE(lines[1].loopEnd, -1);
+    // Inner loops count as the outermost's: a key goes after line 10.
+    QCOMPARE(lines[8].loopStart, 6);
+    QCOMPARE(lines[8].loopEnd, 10);
+    QCOMPARE(lines[8].tokens[4].text, QStringLiteral("(j)"));
+    QCOMPARE(lines[11].loopEnd, -1);
+    QCOMPARE(lines[11].tokens.back().text, QStringLiteral("0"));  // no '\r' in it
+    QCOMPARE(lines[13].loopStart, 12);
+    QCOMPARE(lines[13].loopEnd, 13);
 }
 
 void SourceEditTest::editorEditsAreOneUndoStep() {
