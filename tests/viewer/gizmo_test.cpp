@@ -167,6 +167,26 @@ void GizmoTest::handlesFollowTheCamera() {
     QVERIFY(length(swung.position - Vec3{10, -10, 20}) < 1e-3f);
     QCOMPARE(swung.rotation, (Vec3{0, 0, 90}));
 
+    // Its own axes (L): turned 90 degrees about z, its x is the world's y; a move
+    // along it changes the key's y, a turn about it adds to rx alone.
+    GizmoFrame turned;
+    turned.pose = {{0, 0, 20}, {0, 0, 90}};
+    const Gizmo local(camera, turned, GizmoMode::Move, true);
+    QVERIFY(length(local.axis(0) - Vec3{0, 1, 0}) < 1e-5f);
+    GizmoDrag along(local, GizmoHandle::X, {200, 150 - 20});
+    const Pose up = along.update({200, 150 - 40}, false);
+    QVERIFY(std::fabs(up.position.y - 2) < 0.02);
+    QCOMPARE(up.position.x, 0.0f);
+    const Gizmo localTurn(camera, turned, GizmoMode::Turn, true);
+    // Its x ring (about the world's y) is edge on; from a point of it to the one across the centre is half a
+    // turn.
+    const QPointF onRing = localTurn.ring(0)[6];
+    GizmoDrag spin(localTurn, GizmoHandle::X, onRing);
+    const Pose spun = spin.update(QPointF(200, 150) + (QPointF(200, 150) - onRing), false);
+    QCOMPARE(spun.rotation.y, 0.0f);
+    QCOMPARE(spun.rotation.z, 90.0f);
+    QVERIFY(std::fabs(std::fabs(spun.rotation.x) - 180) < 0.02);
+
     // A turn about another axis writes the nearest of the equal angle triples.
     const Mat3 m = rotationFromEulerDegrees(Vec3{170, 10, -20});
     const Vec3 near = eulerDegreesNear(m, {170, 10, -20});
