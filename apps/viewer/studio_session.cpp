@@ -321,6 +321,11 @@ StudioSession::Capture StudioSession::cameraFromView(const QString& text,
 StudioSession::Capture StudioSession::keySelectionHere(const QString& text) const {
     const auto scene = document_->scene();
     const auto object = selection_ ? findObject(*scene, *selection_) : std::nullopt;
+    if (selection_ && !object)
+        return {{},
+                tr("Key Selection Here keys objects and parts: move %1 with its handles.")
+                    .arg(selection_->target()),
+                5000};
     if (!object) return {{}, tr("Select an object or part first (click it in the picture)."), 5000};
     const int frame = playback_->frame();
     const Pose pose = selectionKeyPose(*scene, *object, selection_->part, frame);
