@@ -10,6 +10,7 @@
 #include <QVBoxLayout>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include "number_scrubber.h"
 #include "scene_editor.h"
 
 namespace f2::viewer {
@@ -66,6 +67,13 @@ EditorDock::EditorDock(QWidget* parent) : QDockWidget(tr("Scene"), parent) {
     connect(&settleTimer_, &QTimer::timeout, this, &EditorDock::textSettled);
     connect(editor_, &QPlainTextEdit::textChanged, this, [this] {
         if (!loading_) settleTimer_.start();
+    });
+    // A scrubbed number is no typing to wait for: the picture follows each step
+    // (the parse of the latest text wins, so steps faster than parsing are skipped).
+    scrubber_ = new NumberScrubber(editor_);
+    connect(scrubber_, &NumberScrubber::scrubbed, this, [this] {
+        settleTimer_.stop();
+        emit textSettled();
     });
     // The editor's own signal: it follows the document when a loaded one replaces it.
     connect(editor_, &QPlainTextEdit::modificationChanged, this, &EditorDock::modificationChanged);

@@ -14,6 +14,7 @@ class QTextDocument;
 
 namespace f2::viewer {
 
+class NumberScrubber;
 class SceneEditor;
 
 class EditorDock : public QDockWidget {
@@ -22,6 +23,8 @@ class EditorDock : public QDockWidget {
     explicit EditorDock(QWidget* parent = nullptr);
 
     SceneEditor* editor() const { return editor_; }
+    /// Ctrl+drag and Alt+wheel on the editor's numbers; each change is parsed at once.
+    NumberScrubber* scrubber() const { return scrubber_; }
     QLineEdit* findField() const { return findField_; }
 
     /// Shows `text` as the file's content: not modified, undo history cleared,
@@ -64,6 +67,7 @@ class EditorDock : public QDockWidget {
 
    private:
     SceneEditor* editor_ = nullptr;
+    NumberScrubber* scrubber_ = nullptr;
     QWidget* findBar_ = nullptr;
     QLineEdit* findField_ = nullptr;
     QLabel* findStatus_ = nullptr;

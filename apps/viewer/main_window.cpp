@@ -17,6 +17,7 @@
 
 #include "core/render/orbit_camera.h"
 #include "editor_dock.h"
+#include "gizmo_tool.h"
 #include "help_windows.h"
 #include "opening_indicator.h"
 #include "playback.h"
@@ -88,12 +89,21 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(timeline_, &TimelineWidget::loopInRequested, playback_, &Playback::setLoopIn);
     connect(timeline_, &TimelineWidget::loopOutRequested, playback_, &Playback::setLoopOut);
     connect(timeline_, &TimelineWidget::loopClearRequested, playback_, &Playback::clearLoop);
+    // A dope sheet gesture: one undo step, unless the text changed under it.
+    connect(timeline_->dopeSheet(), &DopeSheet::editsRequested, this,
+            [this](const std::vector<SpanEdit>& edits, const QString& base) {
+                if (files_->textIsReady() && editor()->toPlainText() == base)
+                    applySourceEdits(editor(), edits);
+            });
     connect(playback_, &Playback::loopRangeChanged, this, [this] {
         const auto loop = playback_->loopRange();
         timeline_->setLoop(loop ? std::optional(std::pair(loop->first, loop->last)) : std::nullopt);
     });
 
     exports_ = new ExportActions(this, session_, viewport_);
+    gizmo_ = new GizmoTool(session_, viewport_, editor(), this);
+    gizmo_->setCanEdit([this] { return files_->textIsReady(); });
+    connect(gizmo_, &GizmoTool::message, statusBar(), &QStatusBar::showMessage);
     createActions();
     setAcceptDrops(true);
     resizeForViewport(viewport_->sizeHint());
@@ -207,6 +217,7 @@ void MainWindow::createActions() {
                                  savedMode <= int(PlaybackAntialiasMode::On)
                              ? PlaybackAntialiasMode(savedMode)
                              : PlaybackAntialiasMode::Auto);
+    gizmo_->addActions(view, stage);
     view->addSeparator();
     view->addAction(editorDock_->toggleViewAction());
     view->addAction(diagnosticsDock_->toggleViewAction());
@@ -338,6 +349,8 @@ void MainWindow::showSelection() {
                                        : std::nullopt);
     readouts_->setSelection(view ? view->label : QString());
     timeline_->setKeyMarkers(view ? view->keyFrames : QList<int>());
+    timeline_->dopeSheet()->setRows(session_->dopeSheetRows(), session_->dopeSheetText(),
+                                    document_->scene()->fps);
 }
 
 std::optional<Pose> MainWindow::lookAround() const {

@@ -6,6 +6,8 @@
 #include <QTextBlock>
 #include <cmath>
 
+#include "source_edit.h"
+
 namespace f2::viewer {
 
 namespace {
@@ -119,38 +121,16 @@ QString withEdit(const QString& text, const TextEdit& edit) {
     return lines.join(u'\n');
 }
 
-namespace {
-
-void insertEdit(QTextCursor& cursor, const TextEdit& edit) {
-    QTextDocument* document = cursor.document();
-    if (edit.line > document->blockCount()) {
-        // Past the last line: start a new one.
-        cursor.movePosition(QTextCursor::End);
-        if (!document->lastBlock().text().isEmpty()) cursor.insertText(QStringLiteral("\n"));
-        cursor.insertText(edit.text);
-        return;
-    }
-    cursor.setPosition(document->findBlockByNumber(edit.line - 1).position());
-    if (edit.replace) {
-        cursor.movePosition(QTextCursor::EndOfBlock, QTextCursor::KeepAnchor);
-        cursor.insertText(edit.text);
-    } else {
-        cursor.insertText(edit.text + u'\n');
-    }
-}
-
-}  // namespace
-
 void applyEdit(QPlainTextEdit* editor, const TextEdit& edit) { applyEdits(editor, {edit}); }
 
 void applyEdits(QPlainTextEdit* editor, const std::vector<TextEdit>& edits) {
     if (edits.empty()) return;
-    QTextDocument* document = editor->document();
-    QTextCursor cursor(document);
-    cursor.beginEditBlock();
-    for (const TextEdit& edit : edits) insertEdit(cursor, edit);
-    cursor.endEditBlock();
-    QTextCursor select(document->findBlockByNumber(edits.back().line - 1));
+    // The line edits as the one span of text they change (source_edit.h).
+    const QString before = editor->toPlainText();
+    QString after = before;
+    for (const TextEdit& edit : edits) after = withEdit(after, edit);
+    applySourceEdits(editor, {changedSpan(before, after)});
+    QTextCursor select(editor->document()->findBlockByNumber(edits.back().line - 1));
     select.movePosition(QTextCursor::EndOfBlock, QTextCursor::KeepAnchor);
     editor->setTextCursor(select);
     editor->centerCursor();

@@ -1,7 +1,7 @@
 #include "timeline_widget.h"
 
+#include <QBoxLayout>
 #include <QComboBox>
-#include <QHBoxLayout>
 #include <QLabel>
 #include <QSignalBlocker>
 #include <QSlider>
@@ -16,8 +16,12 @@
 namespace f2::viewer {
 
 TimelineWidget::TimelineWidget(QWidget* parent) : QWidget(parent) {
-    auto* layout = new QHBoxLayout(this);
-    layout->setContentsMargins(6, 2, 6, 2);
+    auto* rows = new QVBoxLayout(this);
+    rows->setContentsMargins(6, 2, 6, 2);
+    rows->setSpacing(0);
+    auto* layout = new QHBoxLayout;
+    layout->setContentsMargins(0, 0, 0, 0);
+    rows->addLayout(layout);
 
     // Standard style icons: they exist on every platform, unlike media glyphs in fonts.
     QToolButton* first = addButton(QStyle::SP_MediaSkipBackward, tr("First frame (Home)"));
@@ -34,6 +38,8 @@ TimelineWidget::TimelineWidget(QWidget* parent) : QWidget(parent) {
     slider_->setTracking(true);            // the picture follows while dragging
     slider_->setFocusPolicy(Qt::NoFocus);  // keep Space/arrows for the window's shortcuts
     layout->addWidget(slider_, 1);
+    dopeSheet_ = new DopeSheet(slider_, this);
+    rows->addWidget(dopeSheet_);
 
     // The frame is a box to type into ("frame [116] / 240  4.84 s").
     layout->addWidget(new QLabel(tr("frame"), this));
@@ -63,6 +69,7 @@ TimelineWidget::TimelineWidget(QWidget* parent) : QWidget(parent) {
     connect(slider_, &QSlider::sliderPressed, this, &TimelineWidget::scrubStarted);
     connect(slider_, &KeyMarkerSlider::markerClicked, this, [this](int frame) { emit seekRequested(frame); });
     connect(frameBox_, &QSpinBox::valueChanged, this, [this](int frame) { emit seekRequested(frame); });
+    connect(dopeSheet_, &DopeSheet::seekRequested, this, &TimelineWidget::seekRequested);
     connect(slider_, &QSlider::sliderReleased, this, &TimelineWidget::scrubFinished);
     connect(slider_, &KeyMarkerSlider::loopInRequested, this, &TimelineWidget::loopInRequested);
     connect(slider_, &KeyMarkerSlider::loopOutRequested, this, &TimelineWidget::loopOutRequested);
@@ -97,6 +104,7 @@ void TimelineWidget::setTime(double time) {
         const QSignalBlocker block(slider_);
         if (!slider_->isSliderDown()) slider_->setValue(frame);
     }
+    dopeSheet_->update();          // its line at the frame shown
     if (!frameBox_->hasFocus()) {  // not while the user types a number
         const QSignalBlocker block(frameBox_);
         frameBox_->setValue(frame);

@@ -1,9 +1,11 @@
 #pragma once
 /// Transport bar under the picture: play/pause, step, a frame slider, speed
-/// and the current frame. It only reports what the user did; the Playback
-/// clock owns the time.
+/// and the current frame, and under them the dope sheet of the selection's
+/// keys (dope_sheet.h). It only reports what the user did; the Playback
+/// clock owns the time and the window applies the dope sheet's edits.
 #include <QWidget>
 
+#include "dope_sheet.h"
 #include "key_marker_slider.h"
 
 class QComboBox;
@@ -26,6 +28,7 @@ class TimelineWidget : public QWidget {
 
     KeyMarkerSlider* slider() const { return slider_; }
     QSpinBox* frameBox() const { return frameBox_; }
+    DopeSheet* dopeSheet() const { return dopeSheet_; }
     /// Key frames of the selection, drawn on the slider; a click on one seeks there.
     void setKeyMarkers(QList<int> frames);
     /// The loop in/out frames, drawn on the slider (nothing: no loop).
@@ -51,6 +54,7 @@ class TimelineWidget : public QWidget {
 
     QToolButton* playButton_ = nullptr;
     KeyMarkerSlider* slider_ = nullptr;
+    DopeSheet* dopeSheet_ = nullptr;
     QSpinBox* frameBox_ = nullptr;
     QComboBox* speed_ = nullptr;
     QLabel* frameLabel_ = nullptr;

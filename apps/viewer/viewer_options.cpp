@@ -18,6 +18,7 @@
 #include "opening_indicator.h"
 #include "playback.h"
 #include "scene_document.h"
+#include "studio_session.h"
 #include "viewport_widget.h"
 
 namespace f2::viewer {
@@ -82,7 +83,9 @@ ViewerOptions parseViewerOptions(int& argc, char** argv) {
                                   "Save the window as PNG <file> once the picture is complete (rendered at "
                                   "the window's size and, when paused, refined), then quit.",
                                   "file");
-    parser.addOptions({frame, scale, size, quitAfter, stats, screenshot});
+    QCommandLineOption select(
+        "select", "Select <target> (name or name.part): its outline, its keys in the dope sheet.", "target");
+    parser.addOptions({frame, scale, size, quitAfter, stats, screenshot, select});
     // Read argv as QCoreApplication::arguments() does, without an application:
     // no window system is needed to show the usage or to refuse an option.
     QStringList arguments;
@@ -131,6 +134,7 @@ ViewerOptions parseViewerOptions(int& argc, char** argv) {
     options.stats = parser.isSet(stats);
     options.screenshot = parser.value(screenshot);
     if (parser.isSet(screenshot) && options.screenshot.isEmpty()) fail("--screenshot: expected a file");
+    options.select = parser.value(select);
     return options;
 }
 
@@ -146,6 +150,15 @@ void applyViewerOptions(const ViewerOptions& options, MainWindow& window) {
         window.openFile(options.scene);
     else
         window.offerAutosave();
+    if (!options.select.isEmpty()) {
+        // The scene may still be parsing (a file): select when it is there.
+        StudioSession* session = window.session();
+        if (!session->selectTarget(options.select))
+            QObject::connect(
+                session, &StudioSession::sceneChanged, &window,
+                [session, target = options.select] { session->selectTarget(target); },
+                Qt::SingleShotConnection);
+    }
     if (options.frame) {
         auto startAt = [&window, frame = *options.frame] {
             window.playback()->pause();

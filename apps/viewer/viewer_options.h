@@ -16,6 +16,7 @@ struct ViewerOptions {
     double quitAfterSeconds = 0;  ///< > 0: quit after this long (scripts)
     bool stats = false;           ///< print achieved FPS on stderr when quitting
     QString screenshot;           ///< save the window here once a frame is complete, then quit
+    QString select;               ///< select this target (`name`, `name.part`) once the scene is there
 };
 
 /// Parses argv before any window system is opened: prints the usage or the

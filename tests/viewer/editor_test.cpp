@@ -12,6 +12,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTextBlock>
+#include <QWheelEvent>
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -24,6 +25,7 @@
 #include "editor_dock.h"
 #include "image_convert.h"
 #include "main_window.h"
+#include "number_scrubber.h"
 #include "opening_indicator.h"
 #include "playback.h"
 #include "render_controller.h"
@@ -114,6 +116,8 @@ class EditorTest : public QObject {
     void captureLinesGoNextToTheirTarget();
     void keyCameraHereWritesTheView();
     void cameraKeyOfAnAttachedCamera();
+    void ctrlDragScrubsANumber();
+    void altWheelScrubsANumber();
 };
 
 void EditorTest::initTestCase() {
@@ -758,6 +762,77 @@ void EditorTest::cameraKeyOfAnAttachedCamera() {
     for (int r = 0; r < 3; ++r) QVERIFY(length(world.linear.row[r] - wanted.row[r]) < 1e-5f);
     // The cart turned 45 degrees by frame 5: the key's rotation differs from the view's.
     QVERIFY(std::fabs(key.rotation.y - (view.rotation.y - 45)) < 1e-3f);
+}
+
+namespace {
+
+/// The middle of the text `token` (its first occurrence) in the editor's viewport.
+QPoint pointOf(SceneEditor* editor, const QString& token) {
+    QTextCursor cursor(editor->document());
+    cursor.setPosition(int(editor->toPlainText().indexOf(token)) + 1);
+    return editor->cursorRect(cursor).center();
+}
+
+}  // namespace
+
+void EditorTest::ctrlDragScrubsANumber() {
+    QTemporaryDir dir;
+    auto w = windowOn(smallSceneFile(dir), 0);
+    QVERIFY(w);
+    SceneEditor* editor = w->editor();
+    const QString original = editor->toPlainText();
+    const QPoint radius = pointOf(editor, "1.5 -3");
+    constexpr int step = NumberScrubber::kPixelsPerStep;
+
+    // Esc during the drag: the number as it was.
+    QTest::mousePress(editor->viewport(), Qt::LeftButton, Qt::ControlModifier, radius);
+    QTest::mouseMove(editor->viewport(), radius + QPoint(3 * step + 1, 0));
+    QCOMPARE(editor->toPlainText(), QString(original).replace("ball 1.5 -3", "ball 1.8 -3"));
+    QTest::keyClick(editor, Qt::Key_Escape);
+    QTest::mouseRelease(editor->viewport(), Qt::LeftButton, Qt::ControlModifier,
+                        radius + QPoint(3 * step + 1, 0));
+    QCOMPARE(editor->toPlainText(), original);
+    editor->undo();
+    QCOMPARE(editor->toPlainText(), original);
+
+    // 5 steps of 0.1: only that number changes, the picture follows, one undo step.
+    QTest::mousePress(editor->viewport(), Qt::LeftButton, Qt::ControlModifier, radius);
+    for (int i = 1; i <= 5; ++i) QTest::mouseMove(editor->viewport(), radius + QPoint(i * step + 1, 0));
+    QTest::mouseRelease(editor->viewport(), Qt::LeftButton, Qt::ControlModifier,
+                        radius + QPoint(5 * step + 1, 0));
+    const QString scrubbed = QString(original).replace("ball 1.5 -3", "ball 2.0 -3");
+    QCOMPARE(editor->toPlainText(), scrubbed);
+    QTRY_COMPARE_WITH_TIMEOUT(w->document()->scene()->objects[1].size.x, 2.0f, kWaitMs);
+    editor->undo();
+    QCOMPARE(editor->toPlainText(), original);  // byte-identical
+    editor->redo();
+    QCOMPARE(editor->toPlainText(), scrubbed);
+
+    // A plain click with Ctrl on a word is no scrub.
+    QTest::mouseClick(editor->viewport(), Qt::LeftButton, Qt::ControlModifier, pointOf(editor, "ball 2.0"));
+    QCOMPARE(editor->toPlainText(), scrubbed);
+}
+
+void EditorTest::altWheelScrubsANumber() {
+    QTemporaryDir dir;
+    auto w = windowOn(smallSceneFile(dir), 0);
+    QVERIFY(w);
+    SceneEditor* editor = w->editor();
+    const QString original = editor->toPlainText();
+    const QPoint at = pointOf(editor, "40 1 40");
+    auto turn = [&](int notches) {
+        QWheelEvent wheel(at, editor->viewport()->mapToGlobal(at), {}, {0, 120 * notches}, Qt::NoButton,
+                          Qt::AltModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(editor->viewport(), &wheel);
+    };
+    // Three turns up and one down on `40` (steps of 1): one undo step.
+    turn(1);
+    turn(1);
+    turn(1);
+    turn(-1);
+    QCOMPARE(editor->toPlainText(), QString(original).replace("floor 40 1 40", "floor 42 1 40"));
+    editor->undo();
+    QCOMPARE(editor->toPlainText(), original);
 }
 
 QTEST_MAIN(EditorTest)

@@ -47,6 +47,7 @@ class SessionTest : public QObject {
     void keyCameraHereWritesTheCameraKey();
     void pickNamesTheLineAndKeysTheSelection();
     void pickOfAModelsShapeNamesItsPartAndLines();
+    void selectedTargetsKeysAndWriteBack();
 };
 
 void SessionTest::initTestCase() {
@@ -206,4 +207,25 @@ void SessionTest::pickOfAModelsShapeNamesItsPartAndLines() {
 }
 
 QTEST_MAIN(SessionTest)
+void SessionTest::selectedTargetsKeysAndWriteBack() {
+    StudioSession session;
+    QVERIFY(showText(session, kLampScene));
+    // --select's path: a target by name, a part by its name.
+    QVERIFY(!session.selectTarget("nobody"));
+    QVERIFY(!session.selectTarget("l1.leg"));
+    QVERIFY(session.selectTarget("l1.arm"));
+    QCOMPARE(session.selection()->target(), QStringLiteral("l1.arm"));
+    // The dope sheet: the instance's pose, then the selected (keyed) part, from this text.
+    const auto& rows = session.dopeSheetRows();
+    QCOMPARE(rows.size(), std::size_t(2));
+    QCOMPARE(rows[1].target, QStringLiteral("l1.arm"));
+    QCOMPARE(rows[1].keys.size(), std::size_t(2));
+    QCOMPARE(session.dopeSheetText(), QString(kLampScene));
+    // The write-back of the session's parse: the part's key at 10 in place.
+    const QString text = kLampScene;
+    const WriteBack write = session.writeBack(text, {"l1.arm", std::nullopt, 10, {0, 0, 0, 0, 0, -45}});
+    QVERIFY(!write.refused());
+    QCOMPARE(withEdits(text, write.edits), QString(text).replace("0 0 0 0 0 -40", "0 0 0 0 0 -45"));
+}
+
 #include "session_test.moc"

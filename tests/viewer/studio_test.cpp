@@ -7,6 +7,8 @@
 #include <QDir>
 #include <QDockWidget>
 #include <QLabel>
+#include <QMenu>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QStatusBar>
 #include <QTemporaryDir>
@@ -15,6 +17,7 @@
 #include <cstdlib>
 
 #include "core/render/camera.h"
+#include "dope_sheet.h"
 #include "editor_dock.h"
 #include "main_window.h"
 #include "playback.h"
@@ -65,6 +68,8 @@ class StudioTest : public QObject {
     void problemsDockKeepsThePictureSize();
     void pickInAnIncludedFileSelectsItsInclude();
     void aFileBrokenFromTheStartKeepsThePictureSize();
+    void dopeSheetDragMovesThatKeysTime();
+    void dopeSheetCopiesDeletesAndSetsModes();
 };
 
 void StudioTest::initTestCase() {
@@ -239,6 +244,160 @@ void StudioTest::aFileBrokenFromTheStartKeepsThePictureSize() {
     // may differ by a few pixels as the docks settle their minimum widths.
     QTRY_COMPARE_WITH_TIMEOUT(w.viewport()->height(), reference.viewport()->height(), kWaitMs);
     QVERIFY(std::abs(w.viewport()->width() - reference.viewport()->width()) <= 16);
+}
+
+namespace {
+
+/// The ball keyed at 0, 40 and 80, and a sphere no key reaches.
+constexpr const char* kKeyedBall = R"(/camera 96 72 0.6 0 1 -10
+/amb_light 0.3
+/dir_light 0.8 0.3 -0.5 1
+/sphere ball 1.5 -3 0 8
+/key 0 ball
+/key 40  ball 0 1 8 0 0 0   # the top
+/key 80 ball 3 0 8 0 0 0
+)";
+
+/// The dope sheet of `w` with the rows of `object` shown, its slider wide
+/// enough for a frame per pixel or two.
+DopeSheet* dopeSheetOf(MainWindow& w, const std::string& object) {
+    w.resize(900, w.height());
+    if (!QTest::qWaitFor([&] { return w.width() == 900; }, kWaitMs)) return nullptr;
+    w.session()->setSelection(Selection{object, std::nullopt, {}});
+    auto* sheet = w.findChild<DopeSheet*>();
+    return sheet && !sheet->rows().empty() && sheet->rows()[0].target == QString::fromStdString(object)
+               ? sheet
+               : nullptr;
+}
+
+/// An x where the dope sheet draws `frame` (the middle of the pixels that show it).
+int xOfFrame(const DopeSheet& sheet, int frame) {
+    int first = -1, last = -1;
+    for (int x = 0; x < sheet.width(); ++x) {
+        if (sheet.frameAt(x) != frame) continue;
+        if (first < 0) first = x;
+        last = x;
+    }
+    return (first + last) / 2;
+}
+
+/// Waits until the dope sheet shows the keys of the editor's text (parsed, a
+/// frame shown since): its rows' lines are that text's.
+bool rowsFollowTheText(MainWindow& w) {
+    return QTest::qWaitFor(
+        [&] {
+            const QString text = w.editor()->toPlainText();
+            return w.document()->text() == text && !w.document()->isParsing() &&
+                   w.session()->dopeSheetText() == text;
+        },
+        kWaitMs);
+}
+
+void drag(DopeSheet* sheet, QPoint from, QPoint to, Qt::KeyboardModifiers modifiers = {}) {
+    QTest::mousePress(sheet, Qt::LeftButton, modifiers, from);
+    QTest::mouseMove(sheet, (from + to) / 2);
+    QTest::mouseMove(sheet, to);
+    QTest::mouseRelease(sheet, Qt::LeftButton, modifiers, to);
+}
+
+}  // namespace
+
+void StudioTest::dopeSheetDragMovesThatKeysTime() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("keys.f2");
+    writeFile(path, kKeyedBall);
+    auto window = windowOn(path, 0);
+    QVERIFY(window);
+    MainWindow& w = *window;
+    const QString original = w.editor()->toPlainText();
+    DopeSheet* sheet = dopeSheetOf(w, "ball");
+    QVERIFY(sheet);
+    QCOMPARE(sheet->rows()[0].keys.size(), std::size_t(3));
+
+    // Esc during a drag: nothing written, nothing to undo.
+    const QPoint key40 = sheet->keyPoint(0, 1);
+    const QPoint at60(xOfFrame(*sheet, 60), key40.y());
+    QTest::mousePress(sheet, Qt::LeftButton, {}, key40);
+    QTest::mouseMove(sheet, at60);
+    QTest::keyClick(sheet, Qt::Key_Escape);
+    QTest::mouseRelease(sheet, Qt::LeftButton, {}, at60);
+    QCOMPARE(w.editor()->toPlainText(), original);
+    QVERIFY(!w.editor()->document()->isUndoAvailable());
+
+    // 40 → 60: exactly that line's time, spacing and comment kept; one undo step.
+    drag(sheet, key40, at60);
+    const QString moved = QString(original).replace("/key 40  ball", "/key 60  ball");
+    QCOMPARE(w.editor()->toPlainText(), moved);
+    QTRY_VERIFY_WITH_TIMEOUT(w.document()->scene()->objects[0].track.keys[1].time == 60, kWaitMs);
+    w.editor()->undo();
+    QCOMPARE(w.editor()->toPlainText(), original);
+    w.editor()->redo();
+    QCOMPARE(w.editor()->toPlainText(), moved);
+
+    // Two selected keys move together (Shift+click adds one), in one undo step.
+    QVERIFY(rowsFollowTheText(w));
+    QCOMPARE(sheet->rows()[0].keys[1].time, 60.0);
+    QTest::mouseClick(sheet, Qt::LeftButton, {}, sheet->keyPoint(0, 0));
+    QTest::mouseClick(sheet, Qt::LeftButton, Qt::ShiftModifier, sheet->keyPoint(0, 1));
+    QCOMPARE(sheet->selectedKeys().size(), std::size_t(2));
+    drag(sheet, sheet->keyPoint(0, 1), {xOfFrame(*sheet, 70), sheet->keyPoint(0, 1).y()});
+    QCOMPARE(w.editor()->toPlainText(),
+             QString(moved).replace("/key 0 ball", "/key 10 ball").replace("/key 60  ball", "/key 70  ball"));
+    w.editor()->undo();
+    QCOMPARE(w.editor()->toPlainText(), moved);
+    w.editor()->undo();
+    QCOMPARE(w.editor()->toPlainText(), original);
+}
+
+void StudioTest::dopeSheetCopiesDeletesAndSetsModes() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("keys.f2");
+    writeFile(path, kKeyedBall);
+    auto window = windowOn(path, 0);
+    QVERIFY(window);
+    MainWindow& w = *window;
+    const QString original = w.editor()->toPlainText();
+    DopeSheet* sheet = dopeSheetOf(w, "ball");
+    QVERIFY(sheet);
+
+    // Alt+drag copies the key at 80 to 20: a line after it, the original stays.
+    drag(sheet, sheet->keyPoint(0, 2), {xOfFrame(*sheet, 20), sheet->keyPoint(0, 2).y()}, Qt::AltModifier);
+    QCOMPARE(w.editor()->toPlainText(), original + "/key 20 ball 3 0 8 0 0 0\n");
+    w.editor()->undo();
+    QCOMPARE(w.editor()->toPlainText(), original);
+    QVERIFY(rowsFollowTheText(w));
+
+    // Right-click: the mode menu sets the key's mode word, comment kept.
+    QTest::mouseClick(sheet, Qt::LeftButton, {}, sheet->keyPoint(0, 1));
+    const auto menu = sheet->modeMenu();
+    QAction* easeIn = nullptr;
+    for (QAction* action : menu->actions())
+        if (action->text() == "ease_in") easeIn = action;
+    QVERIFY(easeIn && easeIn->isEnabled());
+    easeIn->trigger();
+    QCOMPARE(w.editor()->toPlainText(),
+             QString(original).replace("0 0 0   # the top", "0 0 0 ease_in   # the top"));
+    w.editor()->undo();
+    QVERIFY(rowsFollowTheText(w));
+
+    // Delete removes the selected key's line.
+    QTest::mouseClick(sheet, Qt::LeftButton, {}, sheet->keyPoint(0, 1));
+    QTest::keyClick(sheet, Qt::Key_Delete);
+    QCOMPARE(w.editor()->toPlainText(),
+             QString(original).replace("/key 40  ball 0 1 8 0 0 0   # the top\n", ""));
+    w.editor()->undo();
+    QCOMPARE(w.editor()->toPlainText(), original);
+
+    // A drag from an empty place selects the keys in its rectangle: 40 and 80, not 0.
+    QVERIFY(rowsFollowTheText(w));
+    const int y = sheet->keyPoint(0, 0).y();
+    drag(sheet, {xOfFrame(*sheet, 30), y - 3}, {sheet->keyPoint(0, 2).x() + 2, y + 3});
+    QCOMPARE(sheet->selectedKeys(), (std::vector<std::pair<int, int>>{{0, 1}, {0, 2}}));
+    QCOMPARE(w.editor()->toPlainText(), original);
+    QTest::keyClick(sheet, Qt::Key_Delete);
+    QCOMPARE(w.editor()->toPlainText(), QString(original).replace(QRegularExpression("/key [48]0 .*\n"), ""));
+    w.editor()->undo();
+    QCOMPARE(w.editor()->toPlainText(), original);
 }
 
 #include "studio_test.moc"
