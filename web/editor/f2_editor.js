@@ -6,7 +6,7 @@
 // module's diagnostics (`f2 check`'s, with the language server's marked range).
 import {autocompletion} from '@codemirror/autocomplete';
 import {defaultKeymap, history, historyKeymap, indentWithTab} from '@codemirror/commands';
-import {HighlightStyle, StreamLanguage, syntaxHighlighting} from '@codemirror/language';
+import {HighlightStyle, StreamLanguage, forceParsing, syntaxHighlighting} from '@codemirror/language';
 import {forEachDiagnostic, lintGutter, setDiagnostics} from '@codemirror/lint';
 import {EditorState} from '@codemirror/state';
 import {EditorView, hoverTooltip, keymap, lineNumbers, highlightActiveLine} from '@codemirror/view';
@@ -238,6 +238,11 @@ function create(parent, {text, lists, lsp, onChange}) {
     /// Replaces the whole text (an example, a share link).
     setText(newText) {
       view.dispatch({changes: {from: 0, to: view.state.doc.length, insert: newText}});
+    },
+    /// Highlights the whole text now: CodeMirror parses in idle time, which
+    /// comes late on a loaded machine. True when the parse reached the end.
+    parseAll(timeoutMs = 10000) {
+      return forceParsing(view, view.state.doc.length, timeoutMs);
     },
     /// The module's diagnostics (1-based line, byte columns [markColumn, endColumn)) as squiggles.
     setDiagnostics(diagnostics) {
