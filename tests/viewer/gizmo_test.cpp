@@ -37,15 +37,7 @@ namespace {
 std::unique_ptr<MainWindow> bigWindowOn(const QTemporaryDir& dir, const char* text, double t) {
     const QString path = dir.filePath("scene.f2");
     writeFile(path, text);
-    auto w = std::make_unique<MainWindow>();
-    w->resizeForViewport({480, 360});
-    w->show();
-    if (!QTest::qWaitForWindowExposed(w.get())) return nullptr;
-    w->openFile(path);
-    w->playback()->pause();
-    w->playback()->seek(t);
-    if (!waitForShownFrame(*w, t)) return nullptr;
-    return w;
+    return windowOn(path, t, {480, 360});
 }
 
 /// Waits until the editor's text has parsed and its frame `t` is on screen

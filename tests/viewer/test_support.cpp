@@ -24,9 +24,9 @@ QString smallSceneFile(const QTemporaryDir& dir) {
     return path;
 }
 
-std::unique_ptr<MainWindow> windowOn(const QString& path, double t) {
+std::unique_ptr<MainWindow> windowOn(const QString& path, double t, QSize picture) {
     auto w = std::make_unique<MainWindow>();
-    w->resizeForViewport({96, 72});
+    w->resizeForViewport(picture);
     w->show();
     if (!QTest::qWaitForWindowExposed(w.get())) return nullptr;
     w->openFile(path);

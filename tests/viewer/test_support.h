@@ -2,6 +2,7 @@
 // Helpers shared by the viewer's QtTest suites: a tiny scene, file helpers,
 // the core's picture for comparison and waits for the window's frames.
 #include <QByteArray>
+#include <QSize>
 #include <QString>
 #include <memory>
 
@@ -60,9 +61,9 @@ inline constexpr const char* kLampScene = R"(/camera 96 72 0.6 0 0 -10
 /// Writes kSmallScene as scene.f2 in `dir`; returns its path.
 QString smallSceneFile(const QTemporaryDir& dir);
 
-/// A shown window on `path`, paused at frame `t` with that frame on screen
-/// (null if that does not happen in time).
-std::unique_ptr<MainWindow> windowOn(const QString& path, double t);
+/// A shown window on `path` with a `picture`-sized picture, paused at frame
+/// `t` with that frame on screen (null if that does not happen in time).
+std::unique_ptr<MainWindow> windowOn(const QString& path, double t, QSize picture = {96, 72});
 
 /// Writes `text` to `path` (a QVERIFY failure if it cannot).
 void writeFile(const QString& path, const QByteArray& text);
