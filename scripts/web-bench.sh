@@ -19,16 +19,8 @@ f2=${F2:-$root/build/release/apps/cli/f2}
 [ -d "$root/web/test/node_modules/puppeteer-core" ] || { echo "web-bench: run scripts/install-node-packages.sh" >&2; exit 1; }
 
 work=$(mktemp -d)
-server=
-for attempt in 1 2 3 4 5; do
-  port=$(( 20000 + RANDOM % 20000 ))
-  python3 -m http.server "$port" --bind 127.0.0.1 --directory "$root/web/dist" > "$work/server.log" 2>&1 &
-  server=$!
-  sleep 1
-  kill -0 "$server" 2> /dev/null && break
-  server=
-done
-[ -n "$server" ] || { echo "web-bench: python3 -m http.server did not start" >&2; exit 1; }
+. "$root/scripts/static-server.sh"
+start_static_server "$root/web/dist" "$work/server.log" || { echo "web-bench: python3 -m http.server did not start" >&2; exit 1; }
 trap 'kill "$server" 2> /dev/null; rm -rf "$work"' EXIT
 
 echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg)"

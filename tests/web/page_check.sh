@@ -28,17 +28,8 @@ expected=$({ cat "$root/scenes/demo.f2"; echo "$error_line"; } | "$f2" check - 2
 expected=${expected#<stdin>:}
 [ -n "$expected" ] || fail "f2 check found no error in the demo with '$error_line'"
 
-# A free port: http.server exits at once when its port is taken.
-server=
-for attempt in 1 2 3 4 5; do
-  port=$(( 20000 + RANDOM % 20000 ))
-  python3 -m http.server "$port" --bind 127.0.0.1 --directory "$work/dist" > "$work/server.log" 2>&1 &
-  server=$!
-  sleep 1
-  kill -0 "$server" 2> /dev/null && break
-  server=
-done
-[ -n "$server" ] || fail "python3 -m http.server did not start"
+. "$root/scripts/static-server.sh"
+start_static_server "$work/dist" "$work/server.log" || fail "python3 -m http.server did not start"
 trap 'kill "$server" 2> /dev/null' EXIT
 
 status=0
