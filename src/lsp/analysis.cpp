@@ -125,6 +125,7 @@ Analysis analyze(std::string uri, TextDocument document, const SourceOverlay& op
     a.path = pathFromUri(uri);
     a.uri = std::move(uri);
     a.document = std::move(document);
+    a.index.recordSources = true;  // the variables and includes below come from the parse's one pass
     if (const auto rootText = open.find(root); !root.empty() && root != a.path && rootText != open.end()) {
         // This document's own text stands for its file in the including scene
         // (a copy of the texts only when they hold another one: a server's do not).
@@ -135,17 +136,19 @@ Analysis analyze(std::string uri, TextDocument document, const SourceOverlay& op
             withThis[a.path] = a.document.text();
         }
         const SourceOverlay& texts = withThis.empty() ? open : withThis;
-        a.sources = scanScene(root, TextDocument(rootText->second, 0), texts);
+        a.result = parseScene(rootText->second, root, ParseLimits{}, a.index, texts);
+        a.sources = sourcesOf(a.index);
         a.self = a.sources.find(a.path);
         if (a.self >= 0) {
             a.root = root;
-            a.result = parseScene(rootText->second, root, ParseLimits{}, a.index, texts);
             return a;
         }
+        // The root no longer reads this document (the workspace's links were
+        // older than its text): the document is its own scene after all.
     }
     a.root = a.path;
     a.result = parseScene(a.document.text(), a.path, ParseLimits{}, a.index, open);
-    a.sources = scanScene(a.path, a.document, open);
+    a.sources = sourcesOf(a.index);
     a.self = 0;
     return a;
 }
@@ -191,8 +194,7 @@ Range Analysis::anyRangeOf(const TokenSpan& span) const {
 std::vector<const VariableOccurrence*> Analysis::ownVariables() const {
     std::vector<const VariableOccurrence*> out;
     for (const VariableOccurrence& v : sources.variables) {
-        // A file read twice (two includes) lists its lines twice: the first reading is enough.
-        if (v.file == self && v.order == sources.orderOf(self, v.line)) out.push_back(&v);
+        if (v.file == self) out.push_back(&v);
     }
     return out;
 }
@@ -276,11 +278,14 @@ SymbolAt symbolAt(const Analysis& a, Position p) {
             return at;
         }
     }
-    if (const auto include = includeOn(a.document, p.line);
-        include && byte >= include->begin && byte <= include->end) {
+    for (std::size_t i = 0; i < a.sources.includes.size(); ++i) {
+        const IncludeLink& include = a.sources.includes[i];
+        if (include.file != a.self || include.line != p.line || byte < include.begin || byte > include.end)
+            continue;
         at.kind = SymbolAt::Kind::Include;
-        at.range = rangeInLine(include->begin, include->end);
-        at.text = include->path;
+        at.object = i;
+        at.range = rangeInLine(include.begin, include.end);
+        at.text = include.path;
         return at;
     }
 

@@ -53,7 +53,7 @@ struct Analysis {
     TextDocument document;
     ParseResult result;
     SymbolIndex index;
-    SceneSources sources;  ///< the scene's files from `root`, their variables in reading order
+    SceneSources sources;  ///< the scene's files from `root`, their variables in reading order (from `index`)
     int self = 0;          ///< this document in sources.files
     /// The URIs of open documents, shared by every document of a server.
     /// Null: none known.
@@ -67,7 +67,7 @@ struct Analysis {
     }
     /// URI of a file of the scene (this document's own for it).
     std::string uriOf(std::string_view file) const;
-    /// The text of a file of the scene, if the scan read it.
+    /// The text of a file of the scene, if the parser read it.
     const TextDocument* textOf(std::string_view file) const;
     /// Range of a token span in any file of the scene (bytes as UTF-16 when
     /// the file's text is unknown).
@@ -101,11 +101,13 @@ struct SymbolAt {
         ModelPart,
         ModelShape
     } kind = Kind::None;
-    std::size_t object = 0;    ///< Object, Part and Shape: index into index.objects; Light: into index.lights
+    /// Object, Part and Shape: index into index.objects; Light: into index.lights;
+    /// Include: into sources.includes.
+    std::size_t object = 0;
     int part = -1;             ///< Part, Shape and ModelPart: index among the model's parts
     std::string_view command;  ///< Command: its name
     Range range;               ///< the token (or the name, part or shape within it)
-    std::string text;  ///< Variable: its name; Include: the path as written; Model and members: the type
+    std::string text;  ///< Variable: its name; Include: the file it resolves to; Model and members: the type
     int shape = -1;    ///< Shape and ModelShape: index among the model's shapes
 };
 

@@ -5,7 +5,6 @@
 #include <filesystem>
 #include <map>
 
-#include "core/parse/source_expander.h"
 #include "lsp/features.h"
 
 namespace f2::lsp {
@@ -15,14 +14,14 @@ namespace {
 /// At most this many related places in an include line's summary.
 constexpr std::size_t kMaxRelated = 20;
 
-/// The `/include` line of this document through which `file` is read, or -1.
-int includeLineFor(const Analysis& a, const std::string& file) {
+/// The `/include` of this document through which `file` is read, or null.
+const IncludeLink* includeFor(const Analysis& a, const std::string& file) {
     const int target = a.sources.find(file);
-    if (target < 0) return -1;
+    if (target < 0) return nullptr;
     for (const IncludeLink& link : a.sources.includes) {
-        if (link.file == a.self && a.sources.reaches(link.target, target)) return link.line;
+        if (link.file == a.self && link.target >= 0 && a.sources.reaches(link.target, target)) return &link;
     }
-    return -1;
+    return nullptr;
 }
 
 /// What the diagnostic marks: the same bytes the viewer underlines (core markedBytes).
@@ -41,20 +40,13 @@ struct IncludeSummary {
 
 Json publishDiagnostics(const Analysis& a) {
     std::map<std::string, Json> byFile;  // path -> Diagnostic array
-    std::map<std::string, TextDocument> unread;
-    std::map<int, IncludeSummary> summaries;  // by include line of this document
+    const TextDocument unread;
+    std::map<const IncludeLink*, IncludeSummary> summaries;  // by include of this document
     byFile[a.path] = Json::array();
     for (const Diagnostic& d : a.result.diagnostics) {
+        // The parser places every problem in a file it read (a missing include's on the include line).
         const TextDocument* doc = a.textOf(d.loc.file);
-        if (!doc) {
-            // A file the text scan did not reach (an include path built by an expression).
-            auto it = unread.find(d.loc.file);
-            if (it == unread.end()) {
-                FileRead read = readSourceFile(d.loc.file, ParseLimits{}.maxSceneBytes);
-                it = unread.emplace(d.loc.file, TextDocument(std::move(read.text), 0)).first;
-            }
-            doc = &it->second;
-        }
+        if (!doc) doc = &unread;
         const Range range = markedRange(*doc, d);
         Json& list = byFile[d.loc.file];
         if (list.is_null()) list = Json::array();
@@ -63,9 +55,9 @@ Json publishDiagnostics(const Analysis& a) {
                         {"source", "f2"},
                         {"message", d.message}});
         if (a.inDocument(d.loc)) continue;
-        const int line = includeLineFor(a, d.loc.file);
-        if (line < 0) continue;
-        IncludeSummary& s = summaries[line];
+        const IncludeLink* include = includeFor(a, d.loc.file);
+        if (!include) continue;
+        IncludeSummary& s = summaries[include];
         (d.severity == Severity::Error ? s.errors : s.warnings) += 1;
         const std::string shortName = std::filesystem::path(d.loc.file)
                                           .lexically_relative(std::filesystem::path(a.path).parent_path())
@@ -79,12 +71,11 @@ Json publishDiagnostics(const Analysis& a) {
         }
     }
     Json& own = byFile[a.path];
-    for (const auto& [line, s] : summaries) {
-        const auto include = includeOn(a.document, line);
+    for (const auto& [include, s] : summaries) {
+        const int line = include->line;
         const std::string_view text = a.document.line(line);
-        const Range range = include ? Range{{line, utf16Length(text.substr(0, include->begin))},
-                                            {line, utf16Length(text.substr(0, include->end))}}
-                                    : a.document.lineRange(line);
+        const Range range{{line, utf16Length(text.substr(0, include->begin))},
+                          {line, utf16Length(text.substr(0, include->end))}};
         const int more = s.errors + s.warnings - 1;
         std::string message = "in the included file " + s.first;
         if (more > 0)

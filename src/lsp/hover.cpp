@@ -6,7 +6,6 @@
 // variable's definition; an include's file.
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <optional>
 #include <utility>
 
@@ -189,35 +188,6 @@ std::string modelHover(const Analysis& a, const std::string& name) {
     return text;
 }
 
-/// The first argument after a `/let` or `/repeat` variable: a number, a word or a `( … )`.
-std::string_view valueText(std::string_view line, std::size_t nameEnd) {
-    std::size_t b = line.find_first_not_of(" \t", nameEnd);
-    if (b == std::string_view::npos) return {};
-    if (line[b] != '(') return line.substr(b, line.find_first_of(" \t#", b) - b);
-    int depth = 0;
-    for (std::size_t i = b; i < line.size(); ++i) {
-        if (line[i] == '(') ++depth;
-        if (line[i] == ')' && --depth == 0) return line.substr(b, i + 1 - b);
-    }
-    return {};
-}
-
-/// The value a definition gives when the `/let` and `/repeat` lines before it
-/// run in reading order, each loop at its first pass; nullopt when one fails.
-std::optional<double> definedValue(const Analysis& a, const VariableOccurrence& def) {
-    Variables values;
-    for (const VariableOccurrence& v : a.sources.variables) {
-        if (!v.definition) continue;
-        const std::string_view text =
-            valueText(a.sources.files[static_cast<std::size_t>(v.file)].document.line(v.line), v.end);
-        const ExpressionResult r =
-            text.starts_with('(') ? evaluateParenthesized(text, values) : evaluateExpression(text, values);
-        if (r.ok) values.set(v.name, r.value);
-        if (v.file == def.file && v.line == def.line && v.order == def.order) return values.find(def.name);
-    }
-    return std::nullopt;
-}
-
 std::string variableHover(const Analysis& a, const std::string& name, int line) {
     const auto def = definitionOf(a.sources.variables, name, a.sources.orderOf(a.self, line));
     // In a /drive's expression, frame and time are the drive's inputs (SPEC 10.7).
@@ -231,7 +201,8 @@ std::string variableHover(const Analysis& a, const std::string& name, int line) 
     const SceneFile& file = a.sources.files[static_cast<std::size_t>(def->file)];
     const SourceLoc loc{file.path, def->line + 1, 1};
     std::string text = "**" + std::string(def->loop ? "loop variable" : "variable") + "** `" + name + "`";
-    if (const auto value = definedValue(a, *def)) {
+    // The value the parser gave it where it is defined, each loop at its first pass.
+    if (const auto value = def->value) {
         text +=
             def->loop ? " = " + formatNumber(*value) + " on the first pass" : " = " + formatNumber(*value);
     }
@@ -350,11 +321,8 @@ std::string lightHover(const Analysis& a, std::size_t index) {
     return text;
 }
 
-std::string includeHover(const Analysis& a, const std::string& path) {
-    const std::string file = resolveInclude(a.path, path);
-    std::error_code ec;
-    const bool exists = std::filesystem::is_regular_file(file, ec);
-    return "**include** `" + file + "`" + (exists ? "" : " (not a readable file)");
+std::string includeHover(const IncludeLink& include) {
+    return "**include** `" + include.path + "`" + (include.target >= 0 ? "" : " (not a readable file)");
 }
 
 /// A `/drive` on line `line` (1-based) of the document: its value at frame
@@ -403,7 +371,7 @@ Json hover(const Analysis& a, Position p) {
         case SymbolAt::Kind::Variable:
             return markdown(variableHover(a, at.text, p.line), at.range);
         case SymbolAt::Kind::Include:
-            return markdown(includeHover(a, at.text), at.range);
+            return markdown(includeHover(a.sources.includes[at.object]), at.range);
         case SymbolAt::Kind::Camera:
             return markdown(cameraHover(a), at.range);
         case SymbolAt::Kind::Light:

@@ -1,6 +1,6 @@
 // Go to definition, find references and rename of object names (every place
 // the parser saw the name), of model types (their `/model` and instances) and
-// of variables (every place the text has it), in this document, the files it
+// of variables (every place the parser read it), in this document, the files it
 // includes and an open file that includes it; definition of a model's parts
 // and shapes (`name.part`, `name.part.shape`).
 #include <cstdint>
@@ -176,7 +176,7 @@ Json definition(const Analysis& a, Position p) {
         return def ? locationOf(a, *def) : Json();
     }
     if (at.kind == SymbolAt::Kind::Include) {
-        return location(uriFromPath(resolveInclude(a.path, at.text)), Range{});
+        return location(uriFromPath(at.text), Range{});
     }
     if (at.kind == SymbolAt::Kind::Model) {
         const auto known = findModel(a, at.text);

@@ -1,9 +1,7 @@
 #include "lsp/scene_sources.h"
 
-#include <algorithm>
 #include <limits>
-
-#include "core/parse/source_expander.h"
+#include <map>
 
 namespace f2::lsp {
 
@@ -11,75 +9,44 @@ namespace {
 
 constexpr std::uint32_t kNotReached = std::numeric_limits<std::uint32_t>::max();
 
-class Scanner {
-   public:
-    Scanner(SceneSources& out, const SourceOverlay& open) : out_(out), open_(open) {}
-
-    void walk(int file, int depth) {
-        stack_.push_back(file);
-        // Copies: `files` grows while the walk goes on.
-        const std::vector<VariableOccurrence> own = ownVariables_[static_cast<std::size_t>(file)];
-        auto next = own.begin();
-        const int lines = out_.files[static_cast<std::size_t>(file)].document.lineCount();
-        for (int line = 0; line < lines && visited_ < kMaxScannedLines; ++line, ++visited_) {
-            const auto order = static_cast<std::uint32_t>(visited_);
-            auto& first = out_.firstOrder[static_cast<std::size_t>(file)][static_cast<std::size_t>(line)];
-            if (first == kNotReached) first = order;
-            for (; next != own.end() && next->line == line; ++next) {
-                VariableOccurrence v = *next;
-                v.file = file;
-                v.order = order;
-                out_.variables.push_back(std::move(v));
-            }
-            const auto include = includeOn(out_.files[static_cast<std::size_t>(file)].document, line);
-            // A path with an expression is known only to the parser.
-            if (!include || include->path.find_first_of("{(") != std::string::npos) continue;
-            const int target =
-                load(resolveInclude(out_.files[static_cast<std::size_t>(file)].path, include->path));
-            if (target < 0) continue;
-            const IncludeLink link{file, line, target};
-            if (std::none_of(out_.includes.begin(), out_.includes.end(), [&](const IncludeLink& l) {
-                    return l.file == link.file && l.line == link.line;
-                })) {
-                out_.includes.push_back(link);
-            }
-            if (depth < kMaxScanDepth && std::find(stack_.begin(), stack_.end(), target) == stack_.end()) {
-                walk(target, depth + 1);
-            }
-        }
-        stack_.pop_back();
-    }
-
-    int add(std::string path, TextDocument document) {
-        ownVariables_.push_back(scanVariables(document));
-        out_.firstOrder.emplace_back(static_cast<std::size_t>(document.lineCount()), kNotReached);
-        out_.files.push_back({std::move(path), std::move(document)});
-        return static_cast<int>(out_.files.size() - 1);
-    }
-
-   private:
-    /// The file's index, reading it first (from the open texts, else from disk); -1 if unreadable.
-    int load(const std::string& path) {
-        if (const int known = out_.find(path); known >= 0) return known;
-        if (const auto it = open_.find(path); it != open_.end())
-            return add(path, TextDocument(it->second, 0));
-        const std::size_t budget =
-            ParseLimits{}.maxSceneBytes - std::min(ParseLimits{}.maxSceneBytes, bytes_);
-        FileRead read = readSourceFile(path, budget);
-        if (!read.ok) return -1;
-        bytes_ += read.text.size();
-        return add(path, TextDocument(std::move(read.text), 0));
-    }
-
-    SceneSources& out_;
-    const SourceOverlay& open_;
-    std::vector<std::vector<VariableOccurrence>> ownVariables_;
-    std::vector<int> stack_;
-    std::uint64_t visited_ = 0;
-    std::size_t bytes_ = 0;
-};
-
 }  // namespace
+
+SceneSources sourcesOf(const SymbolIndex& index) {
+    SceneSources out;
+    std::map<std::string_view, int> fileIndex;
+    std::vector<std::size_t> bom;  // the parser's columns start after a byte order mark
+    for (const IndexedFile& f : index.files) {
+        fileIndex.emplace(f.path, static_cast<int>(out.files.size()));
+        bom.push_back(std::string_view(f.text).starts_with("\xEF\xBB\xBF") ? 3 : 0);
+        out.files.push_back({f.path, TextDocument(f.text, 0)});
+        out.firstOrder.push_back(f.firstOrder);
+    }
+    // Where a token of the index is: its file and line, and its first byte in the line.
+    struct Place {
+        int file = -1, line = 0;
+        std::size_t begin = 0;
+    };
+    auto placeOf = [&](const TokenSpan& span) {
+        const auto it = fileIndex.find(span.loc.file);
+        if (it == fileIndex.end()) return Place{};
+        const std::size_t shift = span.loc.line == 1 ? bom[static_cast<std::size_t>(it->second)] : 0;
+        return Place{it->second, span.loc.line - 1, shift + static_cast<std::size_t>(span.loc.column - 1)};
+    };
+    for (const IndexedVariable& v : index.variables) {
+        const Place p = placeOf(v.span);
+        if (p.file < 0) continue;
+        out.variables.push_back({v.name, p.line, p.begin, p.begin + static_cast<std::size_t>(v.span.length),
+                                 v.definition, v.loop, p.file, v.order, v.value});
+    }
+    for (const IndexedInclude& i : index.includes) {
+        const Place p = placeOf(i.path);
+        if (p.file < 0) continue;
+        const auto target = fileIndex.find(i.target);
+        out.includes.push_back({p.file, p.line, p.begin, p.begin + static_cast<std::size_t>(i.path.length),
+                                i.read && target != fileIndex.end() ? target->second : -1, i.target});
+    }
+    return out;
+}
 
 int SceneSources::find(std::string_view path) const {
     for (std::size_t i = 0; i < files.size(); ++i) {
@@ -91,8 +58,11 @@ int SceneSources::find(std::string_view path) const {
 std::uint32_t SceneSources::orderOf(int file, int line) const {
     if (file < 0 || static_cast<std::size_t>(file) >= firstOrder.size()) return kNotReached;
     const auto& lines = firstOrder[static_cast<std::size_t>(file)];
-    if (line < 0 || static_cast<std::size_t>(line) >= lines.size()) return kNotReached;
-    return lines[static_cast<std::size_t>(line)];
+    for (auto i = std::min(line, static_cast<int>(lines.size()) - 1); i >= 0; --i) {
+        if (lines[static_cast<std::size_t>(i)] != IndexedFile::kNotRead)
+            return lines[static_cast<std::size_t>(i)];
+    }
+    return kNotReached;
 }
 
 bool SceneSources::reaches(int from, int to) const {
@@ -105,7 +75,9 @@ std::vector<bool> SceneSources::reachableFrom(int from) const {
     std::vector<bool> seen(files.size(), false);
     if (from < 0 || static_cast<std::size_t>(from) >= files.size()) return seen;
     std::vector<std::vector<int>> targets(files.size());
-    for (const IncludeLink& l : includes) targets[static_cast<std::size_t>(l.file)].push_back(l.target);
+    for (const IncludeLink& l : includes) {
+        if (l.target >= 0) targets[static_cast<std::size_t>(l.file)].push_back(l.target);
+    }
     std::vector<int> todo{from};
     seen[static_cast<std::size_t>(from)] = true;
     while (!todo.empty()) {
@@ -121,11 +93,15 @@ std::vector<bool> SceneSources::reachableFrom(int from) const {
     return seen;
 }
 
-SceneSources scanScene(const std::string& path, const TextDocument& document, const SourceOverlay& open) {
-    SceneSources sources;
-    Scanner scanner(sources, open);
-    scanner.walk(scanner.add(path, document), 0);
-    return sources;
+std::optional<VariableOccurrence> definitionOf(const std::vector<VariableOccurrence>& all,
+                                               std::string_view name, std::uint32_t order) {
+    std::optional<VariableOccurrence> first, nearest;
+    for (const VariableOccurrence& o : all) {
+        if (!o.definition || o.name != name) continue;
+        if (!first) first = o;
+        if (o.order <= order) nearest = o;
+    }
+    return nearest ? nearest : first;
 }
 
 }  // namespace f2::lsp

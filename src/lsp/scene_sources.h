@@ -1,17 +1,20 @@
 #pragma once
-/// The files of a scene as the language server reads them: a document and every
-/// file it includes (SPEC 9.5), followed in the text where each `/include`
-/// stands, with their variables in reading order. Textual like source_scan.h,
-/// so it works on a scene with errors; open documents' texts replace the files
-/// on disk.
+/// The files of a scene as the language server sees them: a document and every
+/// file it includes (SPEC 9.5), with their variables in reading order. Built
+/// from the parser's symbol index (core/parse/symbol_index.h), its one pass
+/// over the scene, so it holds what that pass read: the texts of open
+/// documents in place of their files, every line of a scene with errors, up to
+/// a limit that stops the parse. A loop of no pass is not read (SPEC 9.4):
+/// its body's variables are not known, so hover and definition on them answer
+/// nothing, as for a name the scene does not define.
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include "core/parse/parser.h"
-#include "lsp/source_scan.h"
+#include "core/parse/symbol_index.h"
 #include "lsp/text_document.h"
 
 namespace f2::lsp {
@@ -21,40 +24,53 @@ struct SceneFile {
     TextDocument document;
 };
 
-/// An `/include` line of one file that reads another.
+struct VariableOccurrence {
+    std::string name;
+    int line = 0;                    ///< 0-based
+    std::size_t begin = 0, end = 0;  ///< bytes in the line
+    bool definition = false;         ///< the name after /let or /repeat
+    bool loop = false;               ///< defined by /repeat
+    int file = 0;                    ///< index into SceneSources::files
+    std::uint32_t order = 0;         ///< the first reading of its line
+    std::optional<double> value;     ///< a definition's value then (IndexedVariable::value)
+};
+
+/// An `/include` line of one file, each written place once.
 struct IncludeLink {
-    int file = 0;    ///< the including file
-    int line = 0;    ///< 0-based
-    int target = 0;  ///< the included file
+    int file = 0;                    ///< the including file
+    int line = 0;                    ///< 0-based
+    std::size_t begin = 0, end = 0;  ///< the path as written, quotes included: bytes in the line
+    int target = -1;                 ///< the included file, or -1 when it was not read
+    std::string path;                ///< the file the path resolves to
 };
 
 struct SceneSources {
-    std::vector<SceneFile> files;  ///< [0] the document the scan started from
-    std::vector<VariableOccurrence>
-        variables;                      ///< every file's, in reading order (an include read twice: twice)
-    std::vector<IncludeLink> includes;  ///< each link once
+    std::vector<SceneFile> files;               ///< [0] the file parsed as the scene
+    std::vector<VariableOccurrence> variables;  ///< each written place once, in reading order
+    std::vector<IncludeLink> includes;
 
     /// Index of the file `path`, or -1.
     int find(std::string_view path) const;
-    /// Reading order of a line (its first reading); beyond every order when
-    /// the scan never reached it.
+    /// Reading order of a line (its first reading). A line never read (in a
+    /// loop of no pass) has the order of the last line read before it in its
+    /// file; beyond every order when there is none.
     std::uint32_t orderOf(int file, int line) const;
     /// True when `to` is read through the includes of `from` (or is `from`).
     bool reaches(int from, int to) const;
     /// For each file, whether it is read through the includes of `from` (or is `from`).
     std::vector<bool> reachableFrom(int from) const;
 
-    /// Reading order of each line of each file, first reading.
+    /// Reading order of each line of each file, first reading (IndexedFile::firstOrder).
     std::vector<std::vector<std::uint32_t>> firstOrder;
 };
 
-/// Limits of the scan, so that includes nested in a diamond 16 deep stay cheap.
-constexpr std::uint64_t kMaxScannedLines = 2'000'000;
-constexpr int kMaxScanDepth = 16;  ///< as the parser's include depth (SPEC 9.5)
+/// The scene's files, variables and includes as the parse that filled `index` read them.
+SceneSources sourcesOf(const SymbolIndex& index);
 
-/// Scans `document` (the file `path`) and what it includes. An include whose
-/// path is an expression, a missing file and a cycle are not followed (the
-/// parser reports them).
-SceneSources scanScene(const std::string& path, const TextDocument& document, const SourceOverlay& open);
+/// The definition a use at reading order `order` refers to: the nearest `/let`
+/// before it or an enclosing `/repeat` (the nearest definition before), else
+/// the first one; nullopt when no such name is defined.
+std::optional<VariableOccurrence> definitionOf(const std::vector<VariableOccurrence>& all,
+                                               std::string_view name, std::uint32_t order);
 
 }  // namespace f2::lsp

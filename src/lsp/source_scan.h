@@ -1,9 +1,9 @@
 #pragma once
-/// Variables and includes of a document (SPEC 9.4, 9.5), found in its text:
-/// `/let NAME`, `/repeat NAME` define a variable; a name inside `( … )` or
-/// `{ … }` that is not a function uses one; `/include PATH` names a file.
-/// Textual, so it works on a document with errors and needs nothing from the
-/// parser; a variable is known by its name across the document.
+/// What the cursor needs from the text of the open document itself, line by
+/// line: whether it is inside an expression, the blocks to fold, where a path
+/// being typed points. The scene's variables and includes come from the
+/// parser's one pass instead (scene_sources.h). Folding stays textual so that
+/// every `/repeat … /end` folds, a loop of no pass too (the parser skips it).
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -14,34 +14,6 @@
 #include "lsp/text_document.h"
 
 namespace f2::lsp {
-
-struct VariableOccurrence {
-    std::string name;
-    int line = 0;                    ///< 0-based
-    std::size_t begin = 0, end = 0;  ///< bytes in the line
-    bool definition = false;         ///< the name after /let or /repeat
-    bool loop = false;               ///< defined by /repeat
-    int file = 0;                    ///< index into SceneSources::files (scene_sources.h)
-    /// Reading order: the line's place when includes are read where they stand
-    /// (the line itself for one document alone).
-    std::uint32_t order = 0;
-};
-
-/// Every variable occurrence of the document, in text order.
-std::vector<VariableOccurrence> scanVariables(const TextDocument& doc);
-
-/// The definition a use at reading order `order` refers to: the nearest `/let`
-/// before it or an enclosing `/repeat` (the nearest definition before), else
-/// the first one; nullopt when no such name is defined.
-std::optional<VariableOccurrence> definitionOf(const std::vector<VariableOccurrence>& all,
-                                               std::string_view name, std::uint32_t order);
-
-/// The path argument of an `/include` line (quotes removed) and its bytes in the line.
-struct IncludePath {
-    std::string path;
-    std::size_t begin = 0, end = 0;  ///< the argument as written, quotes included
-};
-std::optional<IncludePath> includeOn(const TextDocument& doc, int line);
 
 /// An include's file: relative paths from the directory of `documentPath`.
 std::string resolveInclude(std::string_view documentPath, std::string_view path);

@@ -366,7 +366,7 @@ TEST(Drives, CompletionOfChannelsAndInputsAndHoverWithTheValueAtFrameZero) {
     EXPECT_NE(inside.find("frame / fps"), std::string::npos) << inside;
 }
 
-// Second edition (SPEC 9.4, 9.5): variables and includes are found in the text.
+// Second edition (SPEC 9.4, 9.5): variables and includes, as the parser's one pass finds them.
 constexpr const char* kLoops =
     "/let n 3\n"                                 // 0
     "/repeat i 1 (n)  # (ignored) \n"            // 1
@@ -375,19 +375,38 @@ constexpr const char* kLoops =
     "/let n (n + 1)\n"                           // 4
     "/fps (n)\n";                                // 5
 
-TEST(Variables, FoundInTheText) {
-    const TextDocument doc(kLoops, 1);
-    const auto all = scanVariables(doc);
+TEST(Variables, FoundByTheParsersOnePass) {
+    const Analysis a = analysed(kLoops);
+    const auto& all = a.sources.variables;
     std::vector<std::string> seen;
     for (const VariableOccurrence& v : all) {
         seen.push_back(std::to_string(v.line) + ":" + v.name + (v.definition ? "=" : ""));
     }
+    // The loop's body is read three times and listed once.
     EXPECT_EQ(seen,
               (std::vector<std::string>{"0:n=", "1:i=", "1:n", "2:i", "2:i", "2:n", "4:n=", "4:n", "5:n"}));
-    EXPECT_EQ(definitionOf(all, "n", 5)->line, 4);
-    EXPECT_EQ(definitionOf(all, "n", 2)->line, 0);
-    EXPECT_TRUE(definitionOf(all, "i", 2)->loop);
-    EXPECT_FALSE(definitionOf(all, "zz", 2));
+    EXPECT_EQ(definitionOf(all, "n", a.sources.orderOf(0, 5))->line, 4);
+    EXPECT_EQ(definitionOf(all, "n", a.sources.orderOf(0, 2))->line, 0);
+    EXPECT_TRUE(definitionOf(all, "i", a.sources.orderOf(0, 2))->loop);
+    EXPECT_FALSE(definitionOf(all, "zz", a.sources.orderOf(0, 2)));
+}
+
+TEST(Variables, ALoopBodyReadManyTimesHasOneReferencePerWrittenPlace) {
+    const Analysis a = analysed(
+        "/let k 2\n"                            // 0
+        "/repeat i 1 1000\n"                    // 1
+        "  /sphere s{i} (k) (i * k) 0 0\n"      // 2
+        "/end\n"                                // 3
+        "/repeat j 1 0\n"                       // 4: no pass, never read
+        "  /sphere t{j} (k) 0 0 0\n"            // 5
+        "/end\n");                              // 6
+    EXPECT_EQ(a.sources.variables.size(), 7u);  // k= i= i k i k j=
+    EXPECT_EQ(references(a, {0, 5}, true).size(), 3u);
+    EXPECT_EQ(references(a, {2, 12}, false).size(), 2u);
+    EXPECT_EQ(rename(a, {1, 8}, "m")["changes"][a.uri].size(), 3u);
+    // The body of a loop of no pass is not read: its names are not known there.
+    EXPECT_TRUE(definition(a, {5, 12}).is_null());
+    EXPECT_EQ(references(a, {4, 8}, true).size(), 1u);
 }
 
 TEST(Variables, DefinitionReferencesRenameHoverCompletion) {
@@ -551,6 +570,33 @@ TEST(Includes, VariablesAndObjectsFollowedBothWays) {
     EXPECT_TRUE(definition(alone, {2, 14}).is_null());
 }
 
+TEST(Includes, AUseInAnIncludedFileResolvesAndRenamesAcrossTheInclude) {
+    const TempDir dir("f2_lsp_across_");
+    // The included file is read on each of three passes; its names are listed once.
+    const std::string main = dir.write("main.f2", "/let w 2\n/repeat i 1 3\n  /include part.f2\n/end\n");
+    const std::string part = dir.write("part.f2", "/sphere s{i} (w) 0 0 0\n");
+    const std::string mainUri = uriFromPath(main), partUri = uriFromPath(part);
+    const SourceOverlay open{{main, "/let w 2\n/repeat i 1 3\n  /include part.f2\n/end\n"},
+                             {part, "/sphere s{i} (w) 0 0 0\n"}};
+    const Analysis p = analyze(partUri, TextDocument(open.at(part), 1), open, main);
+    ASSERT_EQ(p.root, main);
+    EXPECT_TRUE(p.result.ok()) << publishDiagnostics(p).dump();
+    EXPECT_EQ(definition(p, {0, 14}), location(mainUri, Range{{0, 5}, {0, 6}}));
+    EXPECT_EQ(definition(p, {0, 10}), location(mainUri, Range{{1, 8}, {1, 9}}));
+    EXPECT_EQ(references(p, {0, 14}, true).size(), 2u);
+    const Json w = rename(p, {0, 14}, "width");
+    ASSERT_EQ(w["changes"][mainUri].size(), 1u);
+    ASSERT_EQ(w["changes"][partUri].size(), 1u);
+    EXPECT_EQ(w["changes"][partUri][0]["range"], toJson(Range{{0, 14}, {0, 15}}));
+    const Json i = rename(p, {0, 10}, "k");
+    EXPECT_EQ(i["changes"][mainUri].size(), 1u);
+    EXPECT_EQ(i["changes"][partUri].size(), 1u);
+    // From the including file: the include's path leads to the file.
+    const Analysis m = analyze(mainUri, TextDocument(open.at(main), 1), open);
+    EXPECT_EQ(definition(m, {2, 12}), location(partUri, Range{}));
+    EXPECT_EQ(references(m, {1, 8}, false).size(), 1u);  // the use in part.f2
+}
+
 TEST(Includes, ParserReadsOpenTextsBeforeTheDisk) {
     const TempDir dir("f2_lsp_overlay_");
     const std::string part = dir.write("part.f2", "/fps x\n");  // broken on disk, fixed in the editor
@@ -574,7 +620,7 @@ TEST(Includes, ParserReadsOpenTextsBeforeTheDisk) {
     EXPECT_EQ(self.diagnostics[0].loc.line, 1);
 }
 
-TEST(Includes, ScanSurvivesCyclesMissingFilesAndDiamonds) {
+TEST(Includes, IndexSurvivesCyclesMissingFilesAndDiamonds) {
     const TempDir dir("f2_lsp_scan_");
     const std::string a =
         dir.write("a.f2", "/let a 1\n/include b.f2\n/include missing.f2\n/include \"{x}.f2\"\n");
@@ -586,14 +632,17 @@ TEST(Includes, ScanSurvivesCyclesMissingFilesAndDiamonds) {
     }
     dir.write("d17.f2", "/let deep 1\n");
     const SceneSources cyc =
-        scanScene(a, TextDocument("/let a 1\n/include b.f2\n/include missing.f2\n", 1), {});
+        analyze(uriFromPath(a), TextDocument("/let a 1\n/include b.f2\n/include missing.f2\n", 1)).sources;
     ASSERT_EQ(cyc.files.size(), 2u);
     EXPECT_TRUE(cyc.reaches(0, 1));
     EXPECT_TRUE(cyc.reaches(1, 0));
-    EXPECT_EQ(cyc.variables.size(), 2u);  // b.f2's include of a.f2 is not followed again
-    const SceneSources deep =
-        scanScene((dir.path / "d0.f2").string(), TextDocument("/include d1.f2\n/include d1.f2\n", 1), {});
-    EXPECT_EQ(deep.files.size(), 18u);    // d0 … d17 read; d17 is 17 deep, beyond 16: not followed
+    EXPECT_EQ(cyc.variables.size(), 2u);  // b.f2's include of a.f2 is a cycle, not read again
+    ASSERT_EQ(cyc.includes.size(), 3u);
+    EXPECT_EQ(cyc.includes[2].target, -1);  // missing.f2
+    const SceneSources deep = analyze(uriFromPath((dir.path / "d0.f2").string()),
+                                      TextDocument("/include d1.f2\n/include d1.f2\n", 1))
+                                  .sources;
+    EXPECT_EQ(deep.files.size(), 17u);    // d0 … d16 read; d17 would be 17 deep, beyond 16 (SPEC 9.5)
     EXPECT_TRUE(deep.variables.empty());  // so its /let is not seen
 }
 

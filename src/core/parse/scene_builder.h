@@ -146,7 +146,9 @@ struct CameraKey {
 class SceneBuilder final : public CommandReader {
    public:
     SceneBuilder(std::string_view fileName, const ParseLimits& limits, SymbolIndex* index)
-        : CommandReader(fileName, limits), index_(index) {}
+        : CommandReader(fileName, limits), index_(index) {
+        if (index && index->recordSources) expander_.setIndex(index);
+    }
 
     /// `identity`: the main file's (device, inode), when it is a file.
     ParseResult run(std::string_view text,

@@ -15,6 +15,7 @@
 
 #include "core/parse/language.h"
 #include "core/parse/number.h"
+#include "core/parse/symbol_index.h"
 #include "core/parse/unusual_char.h"
 #include "core/scene/drive.h"
 
@@ -98,6 +99,30 @@ std::optional<double> literalLoopPasses(std::string_view line) {
     }
     if (bounds[2] == 0) return std::nullopt;
     return loopPasses(bounds[0], bounds[1], bounds[2]);
+}
+
+/// Calls `use(offset, length)` for each variable name inside the `( … )` and
+/// `{ … }` of an argument as written: a name that is not a call and not pi.
+template <typename Use>
+void forEachVariableUse(std::string_view text, const Use& use) {
+    int depth = 0;
+    for (std::size_t i = 0; i < text.size();) {
+        const char c = text[i];
+        if (c == '(' || c == '{') ++depth;
+        if ((c == ')' || c == '}') && depth > 0) --depth;
+        // After a name character is inside a word (the e of 1e3 too).
+        if (depth == 0 || !isNameStart(c) || (i > 0 && isNameChar(text[i - 1]))) {
+            ++i;
+            continue;
+        }
+        std::size_t end = i;
+        while (end < text.size() && isNameChar(text[end])) ++end;
+        std::size_t next = end;
+        while (next < text.size() && (text[next] == ' ' || text[next] == '\t')) ++next;
+        const bool call = next < text.size() && text[next] == '(';
+        if (!call && !Variables::isPredefined(text.substr(i, end - i))) use(i, end - i);
+        i = end;
+    }
 }
 
 }  // namespace
@@ -278,12 +303,67 @@ void SourceExpander::start(std::string_view text, std::string name,
     source->findLoops(linesInFiles_, limits_.maxLineBytes);
     fileBytes_ += text.size();
     const int nameIndex = addFile(std::move(name));
+    if (index_) indexFile(nameIndex, text);
     fileStack_.push_back({source.get(), LineReader(source->text), nameIndex, 0});
     sources_.push_back(std::move(source));
 }
 
 const std::string& SourceExpander::fileName(int index) const {
     return names_[static_cast<std::size_t>(index)];
+}
+
+void SourceExpander::indexFile(int nameIndex, std::string_view text) {
+    const auto i = static_cast<std::size_t>(nameIndex);
+    if (indexedFiles_.size() <= i) indexedFiles_.resize(i + 1, -1);
+    if (indexedFiles_[i] >= 0) return;
+    indexedFiles_[i] = static_cast<int>(index_->files.size());
+    index_->files.push_back({names_[i], std::string(text), {}});
+}
+
+bool SourceExpander::firstReading(int lineNumber) {
+    const auto file =
+        static_cast<std::size_t>(indexedFiles_[static_cast<std::size_t>(fileStack_.back().nameIndex)]);
+    std::vector<std::uint32_t>& orders = index_->files[file].firstOrder;
+    const auto line = static_cast<std::size_t>(lineNumber - 1);
+    if (orders.size() <= line) orders.resize(line + 1, IndexedFile::kNotRead);
+    if (orders[line] != IndexedFile::kNotRead) return false;
+    orders[line] = static_cast<std::uint32_t>(linesRead_);
+    return true;
+}
+
+void SourceExpander::indexVariables(const LogicalLine& line) {
+    const std::string_view command = line.tokens[0].text;
+    // A quoted path is text as written; an unquoted one may hold `{ … }` (part{i}.f2).
+    if (command == kInclude && line.count > 1 && line.tokens[1].written.starts_with('"')) return;
+    lineDefinition_.reset();
+    const SourcePos pos = at(1);
+    auto add = [&](std::string_view name, int column, bool definition, bool loop) {
+        index_->variables.push_back({std::string(name),
+                                     {{fileName(pos.file), pos.line, column}, static_cast<int>(name.size())},
+                                     definition,
+                                     loop,
+                                     pos.seq,
+                                     std::nullopt});
+    };
+    int first = 1;
+    if ((command == kLet || command == kRepeat) && line.count > 1) {
+        const LogicalToken& name = line.tokens[1];
+        if (isVariableName(name.written) && !Variables::isPredefined(name.written)) {
+            lineDefinition_ = index_->variables.size();
+            add(name.written, name.column, true, command == kRepeat);
+            first = 2;
+        }
+    }
+    for (int i = first; i < std::min(line.count, kMaxStoredTokens); ++i) {
+        const LogicalToken& token = line.tokens[static_cast<std::size_t>(i)];
+        forEachVariableUse(token.written, [&](std::size_t offset, std::size_t length) {
+            add(token.written.substr(offset, length), token.column + static_cast<int>(offset), false, false);
+        });
+    }
+}
+
+void SourceExpander::indexValue(double value) {
+    if (firstReading_ && lineDefinition_) index_->variables[*lineDefinition_].value = value;
 }
 
 int SourceExpander::addFile(std::string name) {
@@ -346,6 +426,8 @@ bool SourceExpander::next(LogicalLine& out) {
             stopped_ = true;
             return false;
         }
+        // The index lists each written place once, however often its line is read.
+        if (index_) firstReading_ = firstReading(line.number);
         if (line.text.size() > limits_.maxLineBytes) {
             error(at(1), "line is " + std::to_string(line.text.size()) +
                              " bytes long, more than the limit of " + std::to_string(limits_.maxLineBytes) +
@@ -354,6 +436,7 @@ bool SourceExpander::next(LogicalLine& out) {
         }
         tokenize(line.text, out);
         if (out.count == 0) continue;  // blank or comment
+        if (firstReading_) indexVariables(out);
         const std::string_view command = out.tokens[0].text;
         if (command == kLet) {
             evaluateTokens(out, 2);
@@ -560,6 +643,7 @@ void SourceExpander::runLet(const LogicalLine& line) {
     if (!named) return;
     if (ok && value) {
         variables_.set(name.text, *value);
+        indexValue(*value);
     } else if (!variables_.find(name.text)) {
         variables_.markBroken(name.text);  // a defined variable keeps its value
     }
@@ -633,6 +717,7 @@ void SourceExpander::runRepeat(const LogicalLine& line, int lineNumber) {
     loopStack_.push_back({std::string(name.text), variables_.find(name.text), *from, *step,
                           static_cast<std::uint64_t>(passes), 0, file.reader});
     variables_.set(name.text, *from);
+    indexValue(*from);
 }
 
 void SourceExpander::replayModelBlock(const BlockStart& start) {
@@ -676,6 +761,7 @@ void SourceExpander::runInclude(std::string_view raw, const LogicalLine& line) {
     while (i < raw.size() && (raw[i] == ' ' || raw[i] == '\t')) ++i;
     std::string path;
     int pathColumn = static_cast<int>(i) + 1;
+    int pathLength = 0;  ///< as written, quotes included
     if (i < raw.size() && raw[i] == '"') {
         const std::size_t close = raw.find('"', i + 1);
         if (close == std::string_view::npos) {
@@ -683,6 +769,7 @@ void SourceExpander::runInclude(std::string_view raw, const LogicalLine& line) {
             return;
         }
         path = std::string(raw.substr(i + 1, close - i - 1));
+        pathLength = static_cast<int>(close + 1 - i);
         std::size_t j = close + 1;
         while (j < raw.size() && (raw[j] == ' ' || raw[j] == '\t')) ++j;
         if (j < raw.size() && raw[j] != '#') {
@@ -704,6 +791,7 @@ void SourceExpander::runInclude(std::string_view raw, const LogicalLine& line) {
         if (!evaluateTokens(substituted, 1)) return;
         path = std::string(substituted.tokens[1].text);
         pathColumn = line.tokens[1].column;
+        pathLength = static_cast<int>(line.tokens[1].written.size());
     }
     const SourcePos pathPos = at(pathColumn);
     if (fileStack_.size() > static_cast<std::size_t>(limits_.maxIncludeDepth)) {
@@ -718,6 +806,11 @@ void SourceExpander::runInclude(std::string_view raw, const LogicalLine& line) {
     }
     const int nameIndex = addFile(resolved.lexically_normal().string());
     const SourceFile* source = loadFile(names_[static_cast<std::size_t>(nameIndex)], pathPos);
+    if (index_ && firstReading_) {
+        index_->includes.push_back({{{fileName(pathPos.file), pathPos.line, pathColumn}, pathLength},
+                                    fileName(nameIndex),
+                                    source != nullptr});
+    }
     if (!source) return;
     for (std::size_t k = 0; k < fileStack_.size(); ++k) {
         if (fileStack_[k].source->identity != source->identity) continue;
@@ -728,6 +821,7 @@ void SourceExpander::runInclude(std::string_view raw, const LogicalLine& line) {
         error(pathPos, "include cycle: " + chain);
         return;
     }
+    if (index_) indexFile(nameIndex, source->text);
     fileStack_.push_back({source, LineReader(source->text), nameIndex, loopStack_.size()});
 }
 

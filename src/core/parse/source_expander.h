@@ -24,6 +24,8 @@
 
 namespace f2 {
 
+struct SymbolIndex;
+
 /// A place in the expanded source.
 struct SourcePos {
     int line = 0;    ///< 1-based, in its own file
@@ -118,6 +120,10 @@ class SourceExpander {
     /// must outlive the expander. None by default.
     void setOverlay(const std::map<std::string, std::string, std::less<>>* overlay) { overlay_ = overlay; }
 
+    /// Where to record the files read, their variables and includes
+    /// (symbol_index.h); call before start. None by default.
+    void setIndex(SymbolIndex* index) { index_ = index; }
+
     /// The next command line, or false at the end (or after a limit error).
     bool next(LogicalLine& line);
 
@@ -174,10 +180,22 @@ class SourceExpander {
     SourcePos at(const LogicalToken& token) const;
     /// Where an expression's problem is, its text starting at `textColumn`.
     SourcePos inExpression(int textColumn, const ExpressionResult& result) const;
+    /// Index only: lists file `nameIndex` once, with its text.
+    void indexFile(int nameIndex, std::string_view text);
+    /// Index only: whether line `lineNumber` of the current file is read for the first time.
+    bool firstReading(int lineNumber);
+    /// Index only: the variables the line names.
+    void indexVariables(const LogicalLine& line);
+    /// Index only: the value the line's definition gives, at its first reading.
+    void indexValue(double value);
 
     ExpansionLimits limits_;
     ExpansionSink& sink_;
     const std::map<std::string, std::string, std::less<>>* overlay_ = nullptr;
+    SymbolIndex* index_ = nullptr;
+    std::vector<int> indexedFiles_;              ///< by file name index: its place in index_->files, or -1
+    bool firstReading_ = false;                  ///< of the line being run (index only)
+    std::optional<std::size_t> lineDefinition_;  ///< its definition's place in index_->variables
     Variables variables_;
     std::vector<std::string> names_;
     std::deque<std::unique_ptr<SourceFile>> sources_;

@@ -3,7 +3,10 @@
 /// parser for tools that work on the source (the language server), filled
 /// even when the scene has errors.
 #include <cstddef>
+#include <cstdint>
+#include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -58,14 +61,58 @@ struct IndexedCommand {
     SourceLoc loc;
 };
 
+/// A variable where it is written (SPEC 9.4): the name after `/let` or
+/// `/repeat` (a definition), or a name inside a `( … )` or `{ … }` argument
+/// that is not a function (a use; `frame` and `time` of a `/drive` too).
+struct IndexedVariable {
+    std::string name;
+    TokenSpan span;
+    bool definition = false;
+    bool loop = false;        ///< defined by `/repeat`
+    std::uint32_t order = 0;  ///< the first reading of its line (SourcePos::seq)
+    /// A definition's value at that reading (a loop's first pass); none when it failed.
+    std::optional<double> value;
+};
+
+/// An `/include` line and the file its path resolves to.
+struct IndexedInclude {
+    TokenSpan path;      ///< the path as written, quotes included
+    std::string target;  ///< the file, as diagnostics name it
+    bool read = false;   ///< the file was read (an include cycle too); false: missing, unreadable
+};
+
+/// A file of the scene as the parser read it, the main one first.
+struct IndexedFile {
+    static constexpr std::uint32_t kNotRead = std::numeric_limits<std::uint32_t>::max();
+    std::string path;  ///< as diagnostics name it
+    std::string text;
+    /// By 0-based line: its first reading (SourcePos::seq), kNotRead for a
+    /// line never read (a loop of no pass, after a limit stopped the parse).
+    std::vector<std::uint32_t> firstOrder;
+};
+
 struct SymbolIndex {
     std::vector<IndexedObject> objects;  ///< in creation order
     std::vector<IndexedLight> lights;    ///< named lights, in creation order (SceneDesc::lightMotions' order)
     std::vector<NameUse> uses;           ///< in file order
     std::vector<IndexedCommand> commands;
     std::vector<IndexedModel> models;  ///< the scene's `/model` types, in file order
+    /// Filled, when `recordSources` is set, by the source expander at the
+    /// first reading of each line, so that a loop body read many times lists
+    /// each place once; in reading order.
+    std::vector<IndexedVariable> variables;
+    std::vector<IndexedInclude> includes;
+    std::vector<IndexedFile> files;
+    /// Whether to fill the three above: the language server does; the viewer
+    /// would only pay a copy of every file for them.
+    bool recordSources = false;
 
-    void clear() { *this = SymbolIndex{}; }
+    /// Empties the index; what it records stays as set.
+    void clear() {
+        const bool sources = recordSources;
+        *this = SymbolIndex{};
+        recordSources = sources;
+    }
     /// Keeps the commands listed as symbols (the camera and lights), ignores the rest.
     void noteCommand(std::string_view command, const SourceLoc& loc) {
         if (command == "/camera" || command == "/amb_light" || command == "/dir_light" ||
