@@ -249,6 +249,27 @@ TEST(Diagnostics, RangesCoverWhatTheParserSaysAsTheViewerUnderlinesIt) {
     EXPECT_EQ(list[1]["range"], toJson(Range{{1, 16}, {1, 20}}));  // nope
 }
 
+// The same lines, the same marks: tests/viewer/editor_test.cpp
+// (sameMarksAsTheLanguageServer) underlines these columns in the viewer.
+TEST(Diagnostics, MarksOnBracketsGluedCommentsTabsAndNonAscii) {
+    struct Case {
+        const char* line;
+        int begin, end;  // UTF-16 columns, 0-based, [begin, end)
+    };
+    const Case cases[] = {
+        {"/fps 24x#c", 5, 8},                  // '#' glued to the token: "24x"
+        {"/fps\t24x", 5, 8},                   // a tab is one column
+        {"/sphere \xc3\xa9 1 0 0 0", 8, 9},     // 'é': two bytes, one UTF-16 unit
+        {"/sphere b (1 + nope) 0 0 0", 15, 19},  // a name inside brackets
+    };
+    for (const Case& c : cases) {
+        const Json published = publishDiagnostics(analysed(std::string(c.line) + "\n"));
+        const Json& list = published[0]["diagnostics"];
+        ASSERT_EQ(list.size(), 1u) << c.line << ": " << list.dump();
+        EXPECT_EQ(list[0]["range"], toJson(Range{{0, c.begin}, {0, c.end}})) << c.line;
+    }
+}
+
 TEST(Diagnostics, ThirdEditionLinesAsTheParserReadsThem) {
     // A caption's quoted text with spaces and '#', seconds and a bezier key: no diagnostics;
     // a caption whose quote is left open: the parser's one error, at the quote.
