@@ -47,8 +47,8 @@ SceneDesc generatedScene(const BenchSceneSpec& spec) {
     return std::move(*parsed.scene);
 }
 
-FrameScene evaluatedFrame(const SceneDesc& scene, double t) {
-    FrameScene frame;
+PreparedFrame evaluatedFrame(const SceneDesc& scene, double t) {
+    PreparedFrame frame;
     evaluateFrame(scene, t, frame);
     return frame;
 }

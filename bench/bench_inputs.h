@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/render/frame_scene.h"
+#include "core/render/prepared_frame.h"
 #include "io/bench_scenes.h"
 
 namespace f2::bench {
@@ -26,6 +26,6 @@ std::vector<Ray> randomRays(std::size_t count, std::uint32_t seed);
 SceneDesc generatedScene(const BenchSceneSpec& spec);
 
 /// The scene evaluated at time t, BVH not built.
-FrameScene evaluatedFrame(const SceneDesc& scene, double t);
+PreparedFrame evaluatedFrame(const SceneDesc& scene, double t);
 
 }  // namespace f2::bench

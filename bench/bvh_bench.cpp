@@ -14,7 +14,8 @@ namespace f2::bench {
 namespace {
 
 void BM_BvhBuild(benchmark::State& state) {
-    const FrameScene frame = evaluatedFrame(generatedScene({BenchShape::Robots, int(state.range(0))}), 6.0);
+    const PreparedFrame frame =
+        evaluatedFrame(generatedScene({BenchShape::Robots, int(state.range(0))}), 6.0);
     const bool pooled = state.range(1) != 0;
     std::unique_ptr<ThreadPool> pool = pooled ? std::make_unique<ThreadPool>(0) : nullptr;
     Bvh bvh;

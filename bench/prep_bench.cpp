@@ -21,7 +21,7 @@ void BM_Prepare(benchmark::State& state) {
     const double step = double(state.range(2));
     const bool cold = state.range(3) != 0;
     std::vector<unsigned char> evictor(cold ? std::size_t{64} << 20 : 0);
-    FrameScene frame;
+    PreparedFrame frame;
     double t = 6.5;
     prepareFrame(scene, t, frame, &pool);  // sizes the buffers and builds the tree
     for (auto _ : state) {

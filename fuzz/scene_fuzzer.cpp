@@ -78,7 +78,7 @@ void renderAt(const f2::SceneDesc& scene, double t) {
     f2::Image image;
     renderer.render(scene, t, camera, image);
     if (image.width != 8 || image.height != 6 || image.pixels.size() != 48) fail("wrong image size", "");
-    const f2::FrameScene& frame = renderer.frame();
+    const f2::PreparedFrame& frame = renderer.frame();
     if (frame.primitives.size() != scene.primitiveCount()) fail("primitive count", "");
     for (int j = 0; j < 6; ++j)
         for (int i = 0; i < 8; ++i) {

@@ -7,7 +7,8 @@
 #   scripts/web.sh [--install] [serve [PORT]]   build web/dist/; serve: then on http://localhost:PORT (8000)
 #   scripts/web.sh module simd|scalar DIR        one module into DIR (DIR/f2-simd.js or DIR/f2.js + .wasm)
 #   scripts/web.sh dist SIMD_DIR SCALAR_DIR OUT  the page from two built modules into OUT
-# --install: apt-get install emscripten first when emcc is missing (root).
+# --install: apt-get install emscripten first when emcc is missing (root), and
+# the npm packages (web/package.json: CodeMirror, esbuild) when missing.
 # -j: F2_WEB_JOBS (default 2).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -21,6 +22,7 @@ export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$root}
 if [ "${1:-}" = --install ]; then
   shift
   command -v emcc > /dev/null || apt-get install -y emscripten
+  [ -x "$root/web/node_modules/.bin/esbuild" ] || "$root/scripts/install-node-packages.sh"
 fi
 command -v emcc > /dev/null || { echo "web.sh: emcc not found: apt-get install emscripten (or scripts/web.sh --install)" >&2; exit 1; }
 
@@ -41,6 +43,11 @@ assemble() {
   rm -rf "$out" && mkdir -p "$out"
   cp "$1/f2-simd.js" "$1/f2-simd.wasm" "$2/f2.js" "$2/f2.wasm" \
      "$root"/web/src/*.html "$root"/web/src/*.js "$root"/web/src/*.css "$root/scenes/demo.f2" "$out/"
+  # The editor: CodeMirror 6 and web/editor/ in one script (esbuild, web/package.json).
+  [ -x "$root/web/node_modules/.bin/esbuild" ] ||
+    { echo "web.sh: no esbuild in web/node_modules: run scripts/install-node-packages.sh (or web.sh --install)" >&2; exit 1; }
+  "$root/web/node_modules/.bin/esbuild" "$root/web/editor/f2_editor.js" --bundle --minify --format=iife \
+    --target=es2020 --log-level=warning --outfile="$out/editor.js"
   # The Examples menu: the gallery's scenes and their list.
   mkdir -p "$out/examples"
   cp "$root"/scenes/gallery/*.f2 "$out/examples/"

@@ -38,4 +38,17 @@ std::string sourcePath(const std::string& relative);
 /// failure can be replayed.
 std::uint32_t testSeed(std::uint32_t fallback);
 
+/// Built with AddressSanitizer or ThreadSanitizer (GCC's macros, clang's feature test).
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+inline constexpr bool kSanitized = true;
+#elif defined(__has_feature)
+inline constexpr bool kSanitized = __has_feature(address_sanitizer) || __has_feature(thread_sanitizer);
+#else
+inline constexpr bool kSanitized = false;
+#endif
+/// How many random cases a property test draws: `n`, a fifth of it under a
+/// sanitizer, which runs every case 5-20 times slower and needs only a few to
+/// see each code path the release suite checks with all of them.
+constexpr int randomCases(int n) { return kSanitized ? (n + 4) / 5 : n; }
+
 }  // namespace f2::test

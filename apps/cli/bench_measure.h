@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/render/camera.h"
-#include "core/render/frame_scene.h"
+#include "core/render/prepared_frame.h"
 #include "core/render/renderer.h"
 #include "io/bench_scenes.h"
 #include "scene_source.h"

@@ -67,7 +67,7 @@ int printPixelStory(const LoadedScene& loaded, const Camera& camera, double t, i
     Renderer renderer(threads);
     Image image;
     renderer.render(loaded.scene, t, camera, image, {antialias});
-    const FrameScene& frame = renderer.frame();
+    const PreparedFrame& frame = renderer.frame();
     const PixelReport r = tracePixel(frame, camera, x, y);
     auto name = [&](std::uint32_t primitive) { return primitiveName(loaded.scene, frame, primitive); };
     std::ostream& out = std::cout;

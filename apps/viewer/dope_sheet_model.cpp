@@ -66,11 +66,22 @@ std::vector<DopeRow> dopeSheetRows(const QString& text, const SceneDesc& scene,
                                    const std::optional<Selection>& selection) {
     LazyLines lines(text);
     std::vector<DopeRow> rows;
-    if (!selection) {
+    if (!selection || selection->kind == Selection::Kind::Camera) {
         const QString camera = toQString(kCameraName);
         addRow(rows, lines, scene.fps, camera, camera, std::nullopt, &scene.camera.track, true);
         addRow(rows, lines, scene.fps, camera + u' ' + word(KeyProperty::Zoom), camera, KeyProperty::Zoom,
                &scene.camera.zoom, false);
+        return rows;
+    }
+    if (selection->kind == Selection::Kind::Light) {
+        // A named light (selected by its marker in the picture): its pose and intensity.
+        for (const LightMotion& light : scene.lightMotions) {
+            if (light.name != selection->object) continue;
+            const QString name = QString::fromStdString(light.name);
+            if (!light.ambient) addRow(rows, lines, scene.fps, name, name, std::nullopt, &light.track, true);
+            addRow(rows, lines, scene.fps, name + u' ' + word(KeyProperty::Intensity), name,
+                   KeyProperty::Intensity, &light.intensity, false);
+        }
         return rows;
     }
     const auto index = findObject(scene, *selection);

@@ -15,10 +15,11 @@
 #include <QVBoxLayout>
 #include <QWindow>
 
+#include "core/render/orbit_camera.h"
 #include "editor_dock.h"
+#include "gizmo_tool.h"
 #include "help_windows.h"
 #include "opening_indicator.h"
-#include "orbit_camera.h"
 #include "playback.h"
 #include "problems_dock.h"
 #include "scene_document.h"
@@ -100,6 +101,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     });
 
     exports_ = new ExportActions(this, session_, viewport_);
+    gizmo_ = new GizmoTool(session_, viewport_, editor(), this);
+    gizmo_->setCanEdit([this] { return files_->textIsReady(); });
+    connect(gizmo_, &GizmoTool::message, statusBar(), &QStatusBar::showMessage);
     createActions();
     setAcceptDrops(true);
     resizeForViewport(viewport_->sizeHint());
@@ -213,6 +217,7 @@ void MainWindow::createActions() {
                                  savedMode <= int(PlaybackAntialiasMode::On)
                              ? PlaybackAntialiasMode(savedMode)
                              : PlaybackAntialiasMode::Auto);
+    gizmo_->addActions(view, stage);
     view->addSeparator();
     view->addAction(editorDock_->toggleViewAction());
     view->addAction(diagnosticsDock_->toggleViewAction());

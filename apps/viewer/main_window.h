@@ -28,6 +28,7 @@ class FrameSink;
 namespace f2::viewer {
 
 class EditorDock;
+class GizmoTool;
 class OpeningIndicator;
 class Playback;
 class SceneEditor;
@@ -64,6 +65,7 @@ class MainWindow : public QMainWindow {
     Playback* playback() const { return playback_; }
     TimelineWidget* timeline() const { return timeline_; }
     ViewportWidget* viewport() const { return viewport_; }
+    GizmoTool* gizmoTool() const { return gizmo_; }
     RenderController* renderController() const { return session_->renderController(); }
     /// View › Mode: what the picture shows (shaded or a diagnostic view).
     ViewModeMenu* viewModes() const { return viewModes_; }
@@ -152,6 +154,7 @@ class MainWindow : public QMainWindow {
 
     StudioSession* session_ = nullptr;
     ExportActions* exports_ = nullptr;
+    GizmoTool* gizmo_ = nullptr;
     SceneFiles* files_ = nullptr;
     StatusReadouts* readouts_ = nullptr;
     SceneDocument* document_ = nullptr;

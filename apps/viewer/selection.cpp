@@ -20,6 +20,7 @@ Selection selectionOf(const SceneDesc& scene, const PickHit& hit) {
 }
 
 std::optional<std::size_t> findObject(const SceneDesc& scene, const Selection& selection) {
+    if (selection.kind != Selection::Kind::Object) return std::nullopt;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         if (scene.objects[i].name != selection.object) continue;
         // A part is known by its name too: an edit of its model may move or drop it (SPEC 10.1).

@@ -12,13 +12,18 @@
 namespace f2::viewer {
 
 struct Selection {
-    std::string object;       ///< the object's name
+    std::string object;       ///< the object's name (a light's, or `camera`)
     std::optional<int> part;  ///< a part of a model instance: its index among the model's parts
     std::string partName;     ///< that part's name
     /// The shape clicked on that part: its index among the model's shapes
     /// (Ctrl+click goes to its line in the `/model` block; the outline and
     /// the keys stay the part's, as a shape takes no pose).
     std::optional<int> shape = std::nullopt;
+    /// An object (or a part of one), else a named light or the camera: what
+    /// the handles move besides objects (selected by their markers in the
+    /// picture, gizmo_tool.h). findObject() finds only objects.
+    enum class Kind { Object, Light, Camera };
+    Kind kind = Kind::Object;
 
     /// `name` or `name.part`, as the scene language writes the target.
     QString target() const;

@@ -1,5 +1,6 @@
 #include "studio_session.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "camera_key_writer.h"
@@ -10,6 +11,7 @@
 #include "core/render/renderer.h"
 #include "core/scene/models.h"
 #include "include_origin.h"
+#include "key_target.h"
 #include "playback.h"
 #include "scene_document.h"
 
@@ -40,6 +42,10 @@ StudioSession::StudioSession(QObject* parent)
     frameTimer_.setInterval(0);
     connect(&frameTimer_, &QTimer::timeout, this, &StudioSession::requestFrame);
     connect(document_, &SceneDocument::sceneChanged, this, &StudioSession::onSceneChanged);
+    // A written key that does not parse (the text had errors): show the text's last good scene.
+    connect(document_, &SceneDocument::diagnosticsChanged, this, [this] {
+        if (document_->hasErrors() && previewScene_ && !dragging_) cancelPreview();
+    });
     connect(controller_.get(), &RenderController::frameReady, this, &StudioSession::onFrameReady);
     connect(playback_, &Playback::timeChanged, this, &StudioSession::scheduleFrame);
     // Pausing shows the frame again, then refines it.
@@ -51,6 +57,8 @@ StudioSession::StudioSession(QObject* parent)
 StudioSession::~StudioSession() = default;
 
 void StudioSession::onSceneChanged(bool newDocument) {
+    // The text now holds the released key (or changed under a drag: the drag goes on over its copy).
+    if (!dragging_) previewScene_.reset();
     const auto scene = document_->scene();
     playback_->setRange(scene->lastFrame(), scene->fps);
     // A playing frame may take one tick of the clock; another scene's cost is not known yet.
@@ -74,15 +82,17 @@ void StudioSession::scheduleFrame() {
 }
 
 void StudioSession::requestFrame() {
-    auto scene = document_->scene();
+    auto scene = sceneShown();
     if (!scene) return;
     const double time = playback_->time();
     const Camera sceneCamera = cameraAt(*scene, time);
     RenderOptions options;
     options.view = viewMode_;
     const std::optional<BoundsOf> outlined = selectionIn(*scene);
-    lastRequest_ = {std::move(scene), time, viewCamera_ ? viewCamera_(sceneCamera) : sceneCamera, options,
-                    outlined};
+    Camera camera = viewCamera_ ? viewCamera_(sceneCamera) : sceneCamera;
+    // A drag's frames come at a quarter of the size (the same view), to keep up with the mouse.
+    if (dragging_) camera = camera.resized(std::max(1, camera.width / 4), std::max(1, camera.height / 4));
+    lastRequest_ = {std::move(scene), time, camera, options, outlined};
     RenderRequest request = lastRequest_;
     if (playback_->isPlaying() && options.view == ViewMode::Shaded)
         request.options.antialias = playbackAntialias_.level();
@@ -98,7 +108,7 @@ void StudioSession::setRefinement(bool on) {
 }
 
 bool StudioSession::isRefining() const {
-    return refinement_ && !playback_->isPlaying() && shownFrame_.serial != 0 &&
+    return refinement_ && !playback_->isPlaying() && !dragging_ && shownFrame_.serial != 0 &&
            shownFrame_.view == ViewMode::Shaded && shownFrame_.antialias < kRefinedAntialias;
 }
 
@@ -186,31 +196,39 @@ void StudioSession::updateDopeSheet() {
 void StudioSession::updateSelectionView() {
     updateDopeSheet();
     const auto scene = document_->scene();
-    const auto object = selection_ && scene ? findObject(*scene, *selection_) : std::nullopt;
-    if (!object) {
+    const Track* track = selection_ && scene ? targetTrack(*scene, *selection_) : nullptr;
+    if (!track) {
         selection_.reset();  // deleted or renamed in the text
         selectionView_.reset();
+        motionPath_.reset();
         updateDopeSheet();
         return;
     }
-    const SceneObject& target = scene->objects[*object];
+    // A preview is a copy of the document's scene with one key changed: the same objects.
+    const auto shown = sceneShown();
+    updateMotionPath(shown);
     SelectionView view;
     // The timeline's steps are whole frames: a key at a fractional time
     // (SPEC 10.4) shows at the nearest one.
-    for (const Key& key :
-         (selection_->part ? target.partTracks[std::size_t(*selection_->part)] : target.track).keys)
-        view.keyFrames << int(std::lround(key.time));
-    // The frame shown brings the bounds when it was rendered from this scene
-    // with this selection; otherwise (a click, an edit since) evaluate it here.
-    if (shownFrame_.bounds && shownFrame_.scene == scene &&
-        shownFrame_.boundsOf == BoundsOf{*object, selection_->part}) {
-        view.bounds = *shownFrame_.bounds;
+    for (const Key& key : track->keys) view.keyFrames << int(std::lround(key.time));
+    const auto object = findObject(*scene, *selection_);
+    Vec3 centre;
+    if (!object) {
+        // A light or the camera: no surface to outline; the label says where it is.
+        centre = targetPosition(*shown, *selection_, shownFrame_.time).value_or(Vec3{});
     } else {
-        EvaluatedFrame frame;
-        evaluateFrame(*scene, shownFrame_.time, frame);
-        view.bounds = selectionBounds(*scene, frame, *object, selection_->part);
+        // The frame shown brings the bounds when it was rendered from this scene
+        // with this selection; otherwise (a click, an edit since) evaluate it here.
+        if (shownFrame_.bounds && (shownFrame_.scene == scene || shownFrame_.scene == shown) &&
+            shownFrame_.boundsOf == BoundsOf{*object, selection_->part}) {
+            view.bounds = *shownFrame_.bounds;
+        } else {
+            EvaluatedFrame frame;
+            evaluateFrame(*shown, shownFrame_.time, frame);
+            view.bounds = selectionBounds(*shown, frame, *object, selection_->part);
+        }
+        centre = (view.bounds.lo + view.bounds.hi) * 0.5f;
     }
-    const Vec3 centre = (view.bounds.lo + view.bounds.hi) * 0.5f;
     view.label = tr("%1 at (%2, %3, %4)")
                      .arg(selection_->target())
                      .arg(double(centre.x), 0, 'f', 1)
@@ -303,6 +321,11 @@ StudioSession::Capture StudioSession::cameraFromView(const QString& text,
 StudioSession::Capture StudioSession::keySelectionHere(const QString& text) const {
     const auto scene = document_->scene();
     const auto object = selection_ ? findObject(*scene, *selection_) : std::nullopt;
+    if (selection_ && !object)
+        return {{},
+                tr("Key Selection Here keys objects and parts: move %1 with its handles.")
+                    .arg(selection_->target()),
+                5000};
     if (!object) return {{}, tr("Select an object or part first (click it in the picture)."), 5000};
     const int frame = playback_->frame();
     const Pose pose = selectionKeyPose(*scene, *object, selection_->part, frame);
@@ -326,6 +349,80 @@ StudioSession::Capture StudioSession::keyCameraHere(const QString& text,
     if (lookAround && scene->camera.lookAt)
         notes << tr("The camera's /look_at turns it: the key moves the eye, not where it looks.");
     return {std::move(write.edits), notes.join(u' '), 8000};
+}
+
+std::shared_ptr<const SceneDesc> StudioSession::sceneShown() const {
+    return previewScene_ ? previewScene_ : document_->scene();
+}
+
+std::optional<GizmoFrame> StudioSession::selectionKeyFrame() const {
+    const auto scene = sceneShown();
+    if (!selection_ || !scene) return std::nullopt;
+    return targetKeyFrame(*scene, *selection_, playback_->frame());
+}
+
+std::vector<TargetMarker> StudioSession::targetMarkers() const {
+    const auto scene = sceneShown();
+    return scene ? f2::viewer::targetMarkers(*scene, shownFrame_.time) : std::vector<TargetMarker>{};
+}
+
+void StudioSession::previewKey(const Pose& key) {
+    // Rendering a changed copy of the parsed scene rather than the edited text:
+    // no parse per mouse move, no undo step per move, and the text is left
+    // byte for byte as it was if the drag is cancelled.
+    const auto scene = document_->scene();
+    if (!selection_ || !scene || !targetTrack(*scene, *selection_)) return;
+    if (!dragging_) {
+        dragging_ = true;
+        playback_->pause();
+        // The key goes at the frame on the timeline: show that frame exactly.
+        if (playback_->time() != playback_->frame()) playback_->seek(playback_->frame());
+    }
+    previewScene_ = sceneWithKey(*scene, *selection_, playback_->frame(), key);
+    scheduleFrame();
+}
+
+void StudioSession::cancelPreview() {
+    dragging_ = false;
+    previewScene_.reset();
+    scheduleFrame();
+}
+
+WriteBack StudioSession::releaseKey(const QString& text, const Pose& key) {
+    const auto scene = document_->scene();
+    if (!selection_ || !scene || !targetTrack(*scene, *selection_)) {
+        cancelPreview();
+        return {};
+    }
+    const Vec3 p = key.position, r = key.rotation;
+    WriteBack write = writeBack(
+        text, {selection_->target(), std::nullopt, playback_->frame(), {p.x, p.y, p.z, r.x, r.y, r.z}});
+    const QString written = withEdits(text, write.edits);
+    if (write.refused() || written == text) {
+        cancelPreview();  // nothing to parse: back to the text's picture now
+        return write;
+    }
+    dragging_ = false;
+    // Parsed now rather than after the editor's typing pause: the preview goes
+    // at that parse's scene, so an undo straight after still gets its own parse.
+    document_->setText(written);
+    scheduleFrame();  // the preview at full size, until the text's scene comes
+    return write;
+}
+
+void StudioSession::updateMotionPath(const std::shared_ptr<const SceneDesc>& scene) {
+    if (motionPath_ && pathScene_ == scene && pathSelection_ == selection_) return;
+    pathScene_ = scene;
+    pathSelection_ = selection_;
+    const auto at = [&](double t) { return targetPosition(*scene, *selection_, t).value_or(Vec3{}); };
+    MotionPath path;
+    const int last = scene->lastFrame();
+    const int step = std::max(1, (last + kMaxPathPoints - 1) / kMaxPathPoints);
+    for (int frame = 0; frame <= last; frame += step) path.points.push_back(at(frame));
+    if (last % step != 0) path.points.push_back(at(last));
+    for (const Key& key : targetTrack(*scene, *selection_)->keys)
+        path.keys.push_back({int(std::lround(key.time)), at(key.time)});
+    motionPath_ = std::move(path);
 }
 
 WriteBack StudioSession::writeBack(const QString& text, const WriteRequest& request) const {

@@ -18,6 +18,8 @@
 #include "core/render/camera.h"
 #include "core/render/image.h"
 #include "dope_sheet_model.h"
+#include "gizmo.h"
+#include "key_target.h"
 #include "playback_antialias.h"
 #include "render_controller.h"
 #include "scene_locations.h"
@@ -124,6 +126,43 @@ class StudioSession : public QObject {
     /// there (capture_pose.h, camera_key_writer.h).
     Capture keyCameraHere(const QString& text, const std::optional<Pose>& lookAround) const;
 
+    /// The selection's key as the handles drag it (key_target.h): at the
+    /// frame on the timeline, in the scene on screen. Nothing without a selection.
+    std::optional<GizmoFrame> selectionKeyFrame() const;
+    /// A handle is being dragged: the frame on the timeline is rendered with
+    /// the selection's key there set to `key`, at a quarter of the view's size
+    /// and without refinement, while the text stays as it is. The first call
+    /// pauses playback.
+    void previewKey(const Pose& key);
+    /// The drag ended without writing (Esc): the text's picture again, at full size.
+    void cancelPreview();
+    /// The drag ended: the edits that write `key` at the frame on the
+    /// timeline into `text` (write_back.h: the key line's numbers in place, a
+    /// new key line, or the creating command's numbers; one undo step), and
+    /// the edited text goes to the document at once. The picture keeps
+    /// showing `key`, at full size, until that text has parsed (no flash of
+    /// the old pose). A refusal (a target made in a loop or an included
+    /// file) or no change: the text's picture again.
+    WriteBack releaseKey(const QString& text, const Pose& key);
+    bool isDragging() const { return dragging_; }
+
+    /// The selection's path over the animation in the scene on screen: its
+    /// origin (a part: its shape's centre) at every frame, and where it is at
+    /// each of its keys.
+    struct MotionPath {
+        std::vector<Vec3> points;  ///< frames 0..last, at most kMaxPathPoints evenly spaced
+        struct Dot {
+            int frame;  ///< the key's time, to the nearest whole frame (as the timeline shows it)
+            Vec3 at;
+        };
+        std::vector<Dot> keys;
+    };
+    /// Nothing without a selection; follows the frames shown.
+    const std::optional<MotionPath>& motionPath() const { return motionPath_; }
+    /// The named lights and the camera where they are in the frame shown:
+    /// what the picture marks for a click to select them.
+    std::vector<TargetMarker> targetMarkers() const;
+    static constexpr int kMaxPathPoints = 1000;
     /// write_back.h's writeBack() on `text` with the document's last parse
     /// (a refusal without a scene): what a gesture released at the current
     /// frame writes. The window applies `edits` (or, asked, `offer`) with
@@ -161,6 +200,9 @@ class StudioSession : public QObject {
     /// "robot", "lamp"), or 0 when it is in another file or the text has
     /// changed there since the scene parsed.
     int lineOf(const QString& text, const CreatedAt& created, std::string_view type) const;
+    /// The scene the picture shows: the drag's preview, else the document's.
+    std::shared_ptr<const SceneDesc> sceneShown() const;
+    void updateMotionPath(const std::shared_ptr<const SceneDesc>& scene);
 
     SceneDocument* document_ = nullptr;
     Playback* playback_ = nullptr;
@@ -173,6 +215,13 @@ class StudioSession : public QObject {
     FrameInfo shownFrame_;
     std::optional<Selection> selection_;
     std::optional<SelectionView> selectionView_;
+    // A drag's picture (sceneWithKey): kept after the release until the edited text parses.
+    std::shared_ptr<const SceneDesc> previewScene_;
+    bool dragging_ = false;
+    std::optional<MotionPath> motionPath_;
+    // What motionPath_ was computed for.
+    std::shared_ptr<const SceneDesc> pathScene_;
+    std::optional<Selection> pathSelection_;
     std::vector<DopeRow> dopeRows_;
     QString dopeText_;
     std::shared_ptr<const SceneDesc> dopeScene_;

@@ -1,5 +1,6 @@
 #include "viewport_widget.h"
 
+#include <QKeyEvent>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QWheelEvent>
@@ -12,7 +13,7 @@ namespace f2::viewer {
 
 ViewportWidget::ViewportWidget(QWidget* parent) : QWidget(parent) {
     setFocusPolicy(Qt::StrongFocus);
-    setMouseTracking(false);
+    setMouseTracking(true);                 // the overlay lights the handle under the mouse
     setAttribute(Qt::WA_OpaquePaintEvent);  // paintEvent covers every pixel
     setCursor(Qt::OpenHandCursor);
     setToolTip(tr("Drag to orbit, wheel to zoom; View > Scene Camera to go back"));
@@ -82,6 +83,13 @@ void ViewportWidget::paintEvent(QPaintEvent*) {
         painter.setBrush(Qt::NoBrush);
         painter.drawRect(r.adjusted(-2, -2, 2, 2));
     }
+    if (overlay_) overlay_->paint(painter);
+}
+
+Camera ViewportWidget::displayCamera() const {
+    const QRectF r = imageRect();
+    return viewCamera(
+        QSize(std::max(1, int(std::lround(r.width()))), std::max(1, int(std::lround(r.height())))));
 }
 
 QRectF ViewportWidget::imageRect() const {
@@ -118,6 +126,11 @@ OrbitCamera& ViewportWidget::startOrbit() {
 
 void ViewportWidget::mousePressEvent(QMouseEvent* event) {
     if (event->button() != Qt::LeftButton) return QWidget::mousePressEvent(event);
+    if (overlay_ && !image_.isNull() && overlay_->press(event->position(), event->modifiers())) {
+        overlayDrag_ = true;
+        pressAt_ = event->position().toPoint();
+        return;
+    }
     dragFrom_ = event->position().toPoint();
     pressAt_ = *dragFrom_;
     dragged_ = false;
@@ -125,7 +138,12 @@ void ViewportWidget::mousePressEvent(QMouseEvent* event) {
 }
 
 void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
-    if (!dragFrom_) return QWidget::mouseMoveEvent(event);
+    if (overlayDrag_) return overlay_->move(event->position(), event->modifiers());
+    if (!dragFrom_) {
+        if (overlay_ && event->buttons() == Qt::NoButton && !image_.isNull())
+            overlay_->hover(event->position());
+        return QWidget::mouseMoveEvent(event);
+    }
     const QPoint now = event->position().toPoint();
     // A hand that shakes during a click does not turn the view.
     if (!dragged_ && (now - pressAt_).manhattanLength() <= kClickSlop) return;
@@ -142,6 +160,13 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
 
 void ViewportWidget::mouseReleaseEvent(QMouseEvent* event) {
     if (event->button() != Qt::LeftButton) return QWidget::mouseReleaseEvent(event);
+    if (overlayDrag_) {
+        overlayDrag_ = false;
+        const bool click = (event->position().toPoint() - pressAt_).manhattanLength() <= kClickSlop;
+        if (overlay_->release(event->position(), event->modifiers()) && click)
+            if (const auto point = imagePointAt(event->position())) emit clicked(*point, event->modifiers());
+        return;
+    }
     const bool click = dragFrom_ && !dragged_;
     dragFrom_.reset();
     setCursor(Qt::OpenHandCursor);
@@ -155,6 +180,11 @@ void ViewportWidget::wheelEvent(QWheelEvent* event) {
     startOrbit().zoom(float(std::pow(kZoomPerWheelStep, steps)));
     emit viewChanged();
     event->accept();
+}
+
+void ViewportWidget::keyPressEvent(QKeyEvent* event) {
+    if (overlay_ && overlay_->key(event)) return event->accept();
+    QWidget::keyPressEvent(event);
 }
 
 }  // namespace f2::viewer

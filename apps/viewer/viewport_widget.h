@@ -9,9 +9,32 @@
 #include <optional>
 
 #include "core/render/camera.h"
-#include "orbit_camera.h"
+#include "core/render/orbit_camera.h"
+
+class QKeyEvent;
+class QPainter;
 
 namespace f2::viewer {
+
+/// What draws over the picture and may take the mouse before the orbit and
+/// the click (the selection's handles and motion path: gizmo_tool.h).
+/// Positions are the widget's.
+class ViewportOverlay {
+   public:
+    virtual ~ViewportOverlay() = default;
+    virtual void paint(QPainter& painter) = 0;
+    /// A left press: true if it takes this drag (then no orbit and no click).
+    virtual bool press(QPointF pos, Qt::KeyboardModifiers modifiers) = 0;
+    virtual void move(QPointF pos, Qt::KeyboardModifiers modifiers) = 0;
+    /// The release of a press it took: true if, had nothing been dragged, it
+    /// is a click of the picture all the same (a handle clicked without
+    /// moving selects what is under it, as anywhere else).
+    virtual bool release(QPointF pos, Qt::KeyboardModifiers modifiers) = 0;
+    /// A key pressed while the picture has the focus: true if it used it.
+    virtual bool key(QKeyEvent* event) = 0;
+    /// The mouse moved over the picture with no button held.
+    virtual void hover(QPointF pos) = 0;
+};
 
 /// How the render size follows the window.
 enum class RenderScale { Quarter, Half, Full, SceneSize };
@@ -51,6 +74,12 @@ class ViewportWidget : public QWidget {
     /// Draws a rectangle round `rect` (in image pixels) over the picture; nothing to clear it.
     void setSelectionOutline(std::optional<QRectF> rect);
     std::optional<QRectF> selectionOutline() const { return outline_; }
+    /// Draws over the picture and gets the mouse first; null for none.
+    void setOverlay(ViewportOverlay* overlay) { overlay_ = overlay; }
+    /// The view at the size the picture is drawn on screen: its pixels are
+    /// the widget's, from imageRect()'s top left corner, whatever size the
+    /// frame on screen was rendered at (a drag's are a quarter).
+    Camera displayCamera() const;
 
     QSize sizeHint() const override { return {800, 600}; }
     QSize minimumSizeHint() const override { return {160, 120}; }
@@ -74,6 +103,7 @@ class ViewportWidget : public QWidget {
     void mouseMoveEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
 
    private:
     OrbitCamera& startOrbit();
@@ -87,6 +117,8 @@ class ViewportWidget : public QWidget {
     QPoint pressAt_;
     bool dragged_ = false;
     std::optional<QRectF> outline_;
+    ViewportOverlay* overlay_ = nullptr;
+    bool overlayDrag_ = false;  // the overlay took the press: its moves and release go there
 };
 
 }  // namespace f2::viewer

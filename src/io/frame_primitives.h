@@ -2,7 +2,7 @@
 /// The primitives of one evaluated frame as exact placed shapes (kind, size,
 /// local-to-world transform, colour, material), in scene order — what the
 /// exporters write. Built from the animation API rather than from the
-/// renderer's FrameScene, whose intersection layout is free to change.
+/// renderer's PreparedFrame, whose intersection layout is free to change.
 #include <string>
 #include <vector>
 

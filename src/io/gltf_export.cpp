@@ -16,7 +16,7 @@
 
 #include "core/anim/camera_motion.h"
 #include "core/anim/frame_builder.h"
-#include "core/anim/light_frame.h"
+#include "core/anim/light_evaluation.h"
 #include "core/anim/track.h"
 #include "core/scene/models.h"
 #include "io/frame_primitives.h"

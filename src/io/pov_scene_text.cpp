@@ -5,7 +5,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "core/anim/light_frame.h"
+#include "core/anim/light_evaluation.h"
 #include "core/render/reflection.h"
 #include "io/comment_text.h"
 

@@ -2,7 +2,7 @@
 
 #include <sstream>
 
-#include "core/anim/light_frame.h"
+#include "core/anim/light_evaluation.h"
 #include "io/comment_text.h"
 #include "io/frame_primitives.h"
 

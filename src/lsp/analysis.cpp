@@ -34,10 +34,12 @@ bool modelMemberAt(const Analysis& a, Position p, std::size_t byte, const RangeI
     LineTokens tokens;
     tokenizeLine(line, tokens);
     if (tokens.count < 2) return false;
-    const std::string_view command = tokens.tokens[0].text;
-    const bool isPart = command == "/part";
-    const bool namesShape = command == "/sphere" || command == "/cylinder" || command == "/box" ||
-                            command == "/paint" || command == "/material" || command == "/checker";
+    const CommandSpec* command = findCommand(tokens.tokens[0].text);
+    if (!command) return false;
+    const bool isPart = command->id == CommandId::Part;
+    // The commands a `/model` block takes with a `part.shape` (SPEC 10.1).
+    const bool namesShape = createsModelShape(command->id) || command->id == CommandId::Paint ||
+                            command->id == CommandId::Material || command->id == CommandId::Checker;
     if (!isPart && !namesShape) return false;
     const auto block = modelBlockAt(a.document, p.line);
     if (!block) return false;

@@ -11,7 +11,7 @@
 #include <utility>
 
 #include "core/anim/camera_motion.h"
-#include "core/anim/light_frame.h"
+#include "core/anim/light_evaluation.h"
 #include "core/anim/track.h"
 #include "core/parse/expression.h"
 #include "core/parse/language.h"

@@ -1,5 +1,6 @@
 #include "lsp/model_types.h"
 
+#include "core/parse/language.h"
 #include "core/parse/lexer.h"
 
 namespace f2::lsp {
@@ -32,20 +33,20 @@ std::optional<ModelBlock> modelBlockAt(const TextDocument& doc, int line) {
         if (text.find('/') == std::string_view::npos) continue;
         tokenizeLine(text, tokens);
         if (tokens.count == 0) continue;
-        const std::string_view command = tokens.tokens[0].text;
+        const CommandSpec* command = findCommand(tokens.tokens[0].text);
+        if (!command) continue;
         const std::string_view first = tokens.count > 1 ? tokens.tokens[1].text : std::string_view{};
-        if (command == "/model") {
+        if (command->id == CommandId::Model) {
             open.push_back(true);
             block = ModelBlock{std::string(first), i, {}, {}};
-        } else if (command == "/repeat") {
+        } else if (command->id == CommandId::Repeat) {
             open.push_back(false);
-        } else if (command == "/end") {
+        } else if (command->id == CommandId::End) {
             if (!open.empty() && open.back()) block.reset();
             if (!open.empty()) open.pop_back();
-        } else if (block && command == "/part" && !first.empty()) {
+        } else if (block && command->id == CommandId::Part && !first.empty()) {
             block->parts.emplace_back(first);
-        } else if (block && (command == "/sphere" || command == "/cylinder" || command == "/box") &&
-                   first.find('.') != std::string_view::npos) {
+        } else if (block && createsModelShape(command->id) && first.find('.') != std::string_view::npos) {
             block->shapes.emplace_back(first);
         }
     }

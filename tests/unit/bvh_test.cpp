@@ -244,7 +244,7 @@ TEST(BvhProperty, MatchesBruteForceOnRandomScenes) {
         auto [depth, leafPrims] = inspectTree(bvh);
         EXPECT_EQ(leafPrims, std::uint64_t(count)) << "every primitive in exactly one leaf";
         EXPECT_GT(depth, 0);
-        for (int n = 0; n < 3000; ++n, ++rays) {
+        for (int n = 0; n < test::randomCases(3000); ++n, ++rays) {
             Ray ray = randomRay(rng, prims, spread);
             float tMin = u01(rng) < 0.5f ? 0.0f : 1e-3f;
             float tMax = u01(rng) < 0.5f ? kInfinity : 1 + 300 * u01(rng);
@@ -286,7 +286,7 @@ TEST(BvhProperty, RefitAfterMotionMatchesBruteForce) {
         auto [depth, leafPrims] = inspectTree(bvh);  // also checks that parents contain children
         EXPECT_EQ(leafPrims, prims.size());
         EXPECT_GT(depth, 8);
-        ASSERT_TRUE(matchesBruteForce(prims, bvh, rng, spread, 1500)) << "frame " << frame;
+        ASSERT_TRUE(matchesBruteForce(prims, bvh, rng, spread, test::randomCases(1500))) << "frame " << frame;
     }
     EXPECT_GE(refits, 4) << "small motion refits instead of rebuilding";
     std::cout << "[   INFO   ] refit test: " << refits << " refits, " << rebuilds << " rebuilds\n";
@@ -324,7 +324,7 @@ TEST(BvhProperty, DegradedSubtreesAreRebuiltInPlace) {
         auto [depth, leafPrims] = inspectTree(bvh);
         EXPECT_EQ(leafPrims, prims.size());
         EXPECT_LE(bvh.liveNodeCount(), 2 * prims.size() - 1);
-        ASSERT_TRUE(matchesBruteForce(prims, bvh, rng, 500, 1000)) << "frame " << frame;
+        ASSERT_TRUE(matchesBruteForce(prims, bvh, rng, 500, test::randomCases(1000))) << "frame " << frame;
     }
     EXPECT_GT(subtreeRebuilds, 0) << "shuffled clusters degrade their subtrees";
     std::cout << "[   INFO   ] subtree test: " << subtreeRebuilds << " subtree rebuilds, " << fullRebuilds
@@ -367,7 +367,7 @@ TEST(BvhProperty, StagedRebuildSpreadsItsWorkOverFrames) {
         auto [depth, leafPrims] = inspectTree(bvh);  // also checks that parents contain children
         EXPECT_EQ(leafPrims, n);
         EXPECT_LE(bvh.liveNodeCount(), 2 * std::size_t(n) - 1);
-        ASSERT_TRUE(matchesBruteForce(prims, bvh, rng, spread, 250)) << "frame " << frame;
+        ASSERT_TRUE(matchesBruteForce(prims, bvh, rng, spread, test::randomCases(250))) << "frame " << frame;
     }
     EXPECT_GE(swapped, 2) << "the flight wears the tree out again and again";
     EXPECT_GT(staged, swapped) << "each staged rebuild takes more than one frame";
@@ -398,7 +398,7 @@ TEST(BvhProperty, ParallelBuildMakesTheSameTree) {
     ASSERT_EQ(parallel.originalIndices().size(), serial.originalIndices().size());
     EXPECT_TRUE(std::equal(parallel.originalIndices().begin(), parallel.originalIndices().end(),
                            serial.originalIndices().begin()));
-    for (int n = 0; n < 3000; ++n) {
+    for (int n = 0; n < test::randomCases(3000); ++n) {
         Ray ray = randomRay(rng, prims, spread);
         ASSERT_TRUE(agrees(prims, parallel, ray, 0, kInfinity)) << "ray " << n;
         ASSERT_EQ(parallel.occluded(ray, 0, kInfinity), bruteAny(prims, ray, 0, kInfinity)) << "ray " << n;
@@ -406,7 +406,7 @@ TEST(BvhProperty, ParallelBuildMakesTheSameTree) {
     // And it refits like any other tree.
     for (Primitive& p : prims) p.centre = p.centre + Vec3{1, -2, 0.5f};
     EXPECT_FALSE(parallel.update(prims, &pool));
-    for (int n = 0; n < 1000; ++n)
+    for (int n = 0; n < test::randomCases(1000); ++n)
         ASSERT_TRUE(agrees(prims, parallel, randomRay(rng, prims, spread), 0, kInfinity))
             << "after refit, ray " << n;
 }
@@ -425,7 +425,7 @@ TEST(BvhProperty, EntryNodesOfATileLoseNoHit) {
     Bvh bvh;
     bvh.build(prims);
     int hits = 0, rays = 0, trimmed = 0;
-    for (int view = 0; view < 40; ++view) {
+    for (int view = 0; view < test::randomCases(40); ++view) {
         Camera camera;
         camera.width = 160;
         camera.height = 120;
@@ -474,7 +474,7 @@ TEST(BvhProperty, EntryNodesOfATileLoseNoHit) {
     }
     // Not vacuous: many rays hit, and many tiles start below the root.
     EXPECT_GT(hits, rays / 5);
-    EXPECT_GT(trimmed, 40);
+    EXPECT_GT(trimmed, test::randomCases(40));
     std::cout << "[   INFO   ] entry nodes: " << hits << " of " << rays << " rays hit; " << trimmed
               << " of 480 tiles start below the root\n";
 }
@@ -512,7 +512,7 @@ TEST(BvhProperty, ShadowPacketsMatchBruteForce) {
     bvh.build(prims);
     const Vec3 axial[] = {{1, 0, 0}, {0, -1, 0}, {0, 0, 1}, {0.6f, 0, -0.8f}};
     int blockedLanes = 0;
-    for (int packet = 0; packet < 400; ++packet) {
+    for (int packet = 0; packet < test::randomCases(400); ++packet) {
         Vec3 direction = packet % 4 == 0 ? axial[(packet / 4) % 4] : randomUnit(rng);
         std::vector<Vec3> origins;
         for (int i = 0; i < simd::kWidth; ++i)
@@ -521,7 +521,8 @@ TEST(BvhProperty, ShadowPacketsMatchBruteForce) {
         if (HasFatalFailure()) return;
         for (const Vec3& o : origins) blockedLanes += bruteAny(prims, {o, direction}, 0, kInfinity);
     }
-    EXPECT_GT(blockedLanes, 400 * simd::kWidth / 10);  // not vacuous: many lanes are blocked
+    EXPECT_GT(blockedLanes,
+              test::randomCases(400) * simd::kWidth / 10);  // not vacuous: many lanes are blocked
 }
 
 TEST(BvhProperty, GrazingShadowPacketsFarFromTheOrigin) {
@@ -547,7 +548,7 @@ TEST(BvhProperty, GrazingShadowPacketsFarFromTheOrigin) {
     Bvh bvh;
     bvh.build(prims);
     int blockedLanes = 0;
-    for (int packet = 0; packet < 300; ++packet) {
+    for (int packet = 0; packet < test::randomCases(300); ++packet) {
         const Vec3 direction = randomUnit(rng);
         std::vector<Vec3> origins;
         for (int i = 0; i < simd::kWidth; ++i) {
@@ -571,10 +572,10 @@ TEST(BvhProperty, GrazingShadowPacketsFarFromTheOrigin) {
         for (const Vec3& o : origins) blockedLanes += bruteAny(prims, {o, direction}, 0, kInfinity);
     }
     // Not vacuous: many grazing rays are blocked, and many pass.
-    EXPECT_GT(blockedLanes, 300 * simd::kWidth / 5);
-    EXPECT_LT(blockedLanes, 300 * simd::kWidth * 4 / 5);
-    std::cout << "[   INFO   ] grazing shadow rays: " << blockedLanes << " of " << 300 * simd::kWidth
-              << " blocked\n";
+    EXPECT_GT(blockedLanes, test::randomCases(300) * simd::kWidth / 5);
+    EXPECT_LT(blockedLanes, test::randomCases(300) * simd::kWidth * 4 / 5);
+    std::cout << "[   INFO   ] grazing shadow rays: " << blockedLanes << " of "
+              << test::randomCases(300) * simd::kWidth << " blocked\n";
 }
 
 TEST(BvhProperty, BeamEntryNodesLoseNoOccluder) {
@@ -591,7 +592,7 @@ TEST(BvhProperty, BeamEntryNodesLoseNoOccluder) {
     bvh.build(prims);
     const Vec3 axial[] = {{0, 1, 0}, {-1, 0, 0}, {0, 0, -1}, {0.8f, 0, 0.6f}};
     int blockedLanes = 0, trimmed = 0;
-    for (int beam = 0; beam < 200; ++beam) {
+    for (int beam = 0; beam < test::randomCases(200); ++beam) {
         Vec3 direction = beam % 4 == 0 ? axial[(beam / 4) % 4] : randomUnit(rng);
         Vec3 corner{coordinate(rng), coordinate(rng), coordinate(rng)};
         Vec3 size = Vec3{u01(rng), u01(rng), u01(rng)} * (beam % 2 ? 5.0f : 60.0f);
@@ -617,10 +618,11 @@ TEST(BvhProperty, BeamEntryNodesLoseNoOccluder) {
         }
     }
     // Not vacuous: many lanes are blocked, and most beams start below the root.
-    EXPECT_GT(blockedLanes, 200 * simd::kWidth / 10);
-    EXPECT_GT(trimmed, 100);
-    std::cout << "[   INFO   ] beam entry nodes: " << blockedLanes << " of " << 200 * simd::kWidth
-              << " rays blocked; " << trimmed << " of 200 beams start below the root\n";
+    EXPECT_GT(blockedLanes, test::randomCases(200) * simd::kWidth / 10);
+    EXPECT_GT(trimmed, test::randomCases(100));
+    std::cout << "[   INFO   ] beam entry nodes: " << blockedLanes << " of "
+              << test::randomCases(200) * simd::kWidth << " rays blocked; " << trimmed
+              << " of 200 beams start below the root\n";
 }
 
 TEST(BvhProperty, OriginsInsidePrimitives) {

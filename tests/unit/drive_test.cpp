@@ -16,7 +16,7 @@
 #include "core/anim/animation_program.h"
 #include "core/anim/camera_motion.h"
 #include "core/anim/frame_builder.h"
-#include "core/anim/light_frame.h"
+#include "core/anim/light_evaluation.h"
 #include "core/parse/expression.h"
 #include "core/render/camera.h"
 #include "core/scene/models.h"

@@ -29,7 +29,7 @@ bool samePrimitive(const Primitive& a, const Primitive& b) {
 }
 
 /// Everything the tracer reads of `frame` is as in `reference`.
-void expectSamePrepared(const FrameScene& reference, const FrameScene& frame, const std::string& what) {
+void expectSamePrepared(const PreparedFrame& reference, const PreparedFrame& frame, const std::string& what) {
     ASSERT_EQ(frame.primitives.size(), reference.primitives.size()) << what;
     for (std::size_t i = 0; i < frame.primitives.size(); ++i)
         ASSERT_TRUE(samePrimitive(reference.primitives[i], frame.primitives[i]))
@@ -64,7 +64,7 @@ PathsTaken expectSameAsEvaluateThenUpdate(const SceneDesc& scene, const std::vec
     ThreadPool pool(2);
     // A tree built on a pool lays its nodes out in another order than a serial
     // build: each is compared with its own kind.
-    FrameScene serialReference, pooledReference, serial, pooled;
+    PreparedFrame serialReference, pooledReference, serial, pooled;
     PathsTaken paths;
     for (double t : times) {
         const std::string what = name + " at t = " + std::to_string(t);

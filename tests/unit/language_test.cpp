@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <string>
+#include <vector>
 
 #include "core/parse/parser.h"
 
@@ -27,6 +28,34 @@ TEST(LanguageTable, TheParserRunsEveryCommandOfTheTableAndNoOther) {
     }
     EXPECT_TRUE(saysUnknownCommand(parseScene("/colour s 1 2 3\n", "t.f2")));
     EXPECT_EQ(commandNames().size(), commands().size());
+}
+
+TEST(LanguageTable, TheParserCountsArgumentsByTheRow) {
+    // Hand-written, as a user reads them in the docs: the table must say so.
+    EXPECT_EQ(
+        std::vector<int>(command(CommandId::Camera).counts.begin(), command(CommandId::Camera).counts.end()),
+        (std::vector<int>{3, 6, 9}));
+    EXPECT_EQ(std::vector<int>(command(CommandId::Box).counts.begin(), command(CommandId::Box).counts.end()),
+              (std::vector<int>{7, 10}));
+    int counted = 0;
+    for (const CommandSpec& c : commands()) {
+        if (c.counts.empty()) continue;
+        SCOPED_TRACE(std::string(c.name));
+        ++counted;
+        // One argument fewer than the fewest it takes (more could be a light's options).
+        const int tooFew = c.counts.front() - 1;
+        std::string line(c.name);
+        for (int i = 0; i < tooFew; ++i) line += " 1";
+        // `/part` stands only in a model block.
+        if (c.id == CommandId::Part) line = "/model m\n" + line + "\n/end";
+        const ParseResult r = parseScene(line + "\n", "t.f2");
+        ASSERT_FALSE(r.diagnostics.empty());
+        const std::string& message = r.diagnostics.front().message;
+        EXPECT_NE(message.find("takes "), std::string::npos) << message;
+        EXPECT_NE(message.find(", got " + std::to_string(tooFew)), std::string::npos) << message;
+        for (int n : c.counts) EXPECT_NE(message.find(std::to_string(n)), std::string::npos) << message;
+    }
+    EXPECT_GE(counted, 20);
 }
 
 TEST(LanguageTable, EveryRowIsComplete) {

@@ -8,7 +8,7 @@
 #include <numbers>
 #include <set>
 
-#include "core/anim/light_frame.h"
+#include "core/anim/light_evaluation.h"
 #include "core/render/pixel_report.h"
 #include "core/render/renderer.h"
 #include "io/bench_scenes.h"

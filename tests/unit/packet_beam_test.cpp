@@ -11,7 +11,7 @@
 
 #include "core/anim/frame_builder.h"
 #include "core/geometry/bvh_packet.h"
-#include "core/render/frame_scene.h"
+#include "core/render/prepared_frame.h"
 #include "io/bench_scenes.h"
 #include "test_scenes.h"
 
@@ -24,7 +24,7 @@ TEST(PacketBeam, NarrowedEntryNodesAnswerLikeTheRoot) {
     spec.count = 100;
     const SceneDesc scene =
         test::sceneFromText(benchSceneText(spec, 160, 120) + "/dir_light 0.4 -0.2 -1 0.5 angle 6 4\n");
-    FrameScene frame;
+    PreparedFrame frame;
     evaluateFrame(scene, 0, frame);
     frame.bvh.build(frame.primitives);
     ASSERT_FALSE(frame.lights.empty());

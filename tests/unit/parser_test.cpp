@@ -1029,12 +1029,6 @@ TEST(ParserLimits, SceneSize) {
               "t.f2:1:1: error: the scene is 17 bytes, more than the limit of 10 bytes");
 }
 
-#if defined(__has_feature)  // clang's way to tell a sanitizer build
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
-#define F2_TEST_SANITIZED 1
-#endif
-#endif
-
 TEST(ParserLimits, AMillionLinesWithOutOfOrderKeysParse) {
     // 1,000,000 lines: 1000 spheres with 999 keys each, half of them out of order.
     std::string text;

@@ -120,7 +120,7 @@ TEST(Pick, ProjectInvertsRayThrough) {
 TEST(Pick, SelectionBoundsHoldWhatIsPicked) {
     const SceneDesc scene = test::sceneFromText(kFlatScene);
     const Camera camera = Camera::fromDesc(scene.camera);
-    FrameScene frame;
+    PreparedFrame frame;
     evaluateFrame(scene, 3, frame);
     frame.bvh.build(frame.primitives);
     int checked = 0;

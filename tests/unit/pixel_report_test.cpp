@@ -96,7 +96,7 @@ TEST(PixelReport, TheFloorUnderTheBallIsInItsShadow) {
 
 TEST(PixelReport, NamesModelParts) {
     Rendered r(kBallOverFloor);
-    const FrameScene& frame = r.renderer.frame();
+    const PreparedFrame& frame = r.renderer.frame();
     // floor, ball, then the robot's six shapes in the model's order.
     ASSERT_EQ(frame.primitives.size(), 8u);
     EXPECT_EQ(primitiveName(r.scene, frame, 0), "floor (box)");

@@ -54,7 +54,7 @@ struct Comparison {
 /// For every block of `camera`'s image, rays through random points of its
 /// pixels: the hits from the bins (as findSurfaces looks them up) against
 /// those of the walk from the root, lane by lane.
-void compareHits(const FrameScene& frame, const Camera& camera, float marginPixels, std::mt19937& rng,
+void compareHits(const PreparedFrame& frame, const Camera& camera, float marginPixels, std::mt19937& rng,
                  Comparison& out) {
     PrimaryBins bins;
     bins.build(frame.bvh, camera, nullptr, 0, marginPixels);
@@ -105,7 +105,7 @@ void compareHits(const FrameScene& frame, const Camera& camera, float marginPixe
 /// down, some rolled, with boxes across their eye plane.
 Comparison compareRandomCameras(float marginPixels) {
     const SceneDesc scene = crowd();
-    FrameScene frame;
+    PreparedFrame frame;
     evaluateFrame(scene, 7, frame);
     frame.bvh.build(frame.primitives);
     const Bounds box = frame.bvh.nodes()[0].bounds;
@@ -160,7 +160,7 @@ TEST(PrimaryBins, AMarginTooSmallLosesHits) {
 
 TEST(PrimaryBins, FallBackToTheTreeWhereBinningCannotPay) {
     const SceneDesc scene = crowd();
-    FrameScene frame;
+    PreparedFrame frame;
     evaluateFrame(scene, 0, frame);
     frame.bvh.build(frame.primitives);
     const Camera camera = lookingFrom(Vec3{0, 400, -1500}, 20, 0, 0, 0.5f, 64, 48);

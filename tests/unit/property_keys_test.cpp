@@ -7,7 +7,7 @@
 #include <limits>
 
 #include "core/anim/frame_builder.h"
-#include "core/anim/light_frame.h"
+#include "core/anim/light_evaluation.h"
 #include "core/render/camera.h"
 #include "core/render/renderer.h"
 #include "core/scene/models.h"

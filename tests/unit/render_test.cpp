@@ -180,7 +180,7 @@ TEST(Render, DefaultSceneShowsTheRobotAndBothPeople) {
     SceneDesc scene = test::sceneFromRepo("demo.f2");
     scene.camera.width = 320;
     scene.camera.height = 240;
-    FrameScene frame;
+    PreparedFrame frame;
     evaluateFrame(scene, 0, frame);
     Image image = renderScene(scene, 0);
     Camera camera = Camera::fromDesc(scene.camera);
@@ -233,7 +233,7 @@ TEST(Render, CancelStopsEarly) {
     Renderer renderer(2);
     Image image;
     std::atomic<bool> cancel{true};
-    FrameScene frame;
+    PreparedFrame frame;
     evaluateFrame(scene, 0, frame);
     frame.bvh.build(frame.primitives);
     EXPECT_FALSE(renderer.trace(frame, Camera::fromDesc(scene.camera), image, {}, &cancel));

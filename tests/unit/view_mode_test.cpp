@@ -267,7 +267,7 @@ TEST(ViewModes, CountingChangesNoAnswer) {
     Image image;
     const Camera camera = Camera::fromDesc(scene.camera).resized(80, 60);
     renderer.render(scene, 118, camera, image);
-    const FrameScene& frame = renderer.frame();
+    const PreparedFrame& frame = renderer.frame();
     for (int y = 0; y < camera.height; ++y)
         for (int x = 0; x < camera.width; ++x) {
             const Ray ray = camera.rayThrough(float(x) + 0.5f, float(y) + 0.5f);

@@ -1,6 +1,6 @@
 # Sourced by the web tests after tests/skip.sh: `needs TOOL...` skips the
 # test (skip_missing) unless each is there: emcc, node, chromium, or
-# puppeteer (web/test's npm package). `root` is the repository.
+# puppeteer (web/test's npm package), esbuild (web's, with CodeMirror). `root` is the repository.
 needs() {
   for tool in "$@"; do
     case $tool in
@@ -12,6 +12,8 @@ needs() {
         skip_missing "chromium is not installed (apt-get install chromium)" ;;
       puppeteer) [ -d "$root/web/test/node_modules/puppeteer-core" ] ||
         skip_missing "npm package puppeteer-core is missing in web/test: run scripts/install-node-packages.sh" ;;
+      esbuild) [ -x "$root/web/node_modules/.bin/esbuild" ] ||
+        skip_missing "npm package esbuild (the page's editor bundle) is missing in web: run scripts/install-node-packages.sh" ;;
       *) echo "needs: unknown tool $tool"; exit 1 ;;
     esac
   done

@@ -12,6 +12,8 @@
 
 #include "core/parse/parser.h"
 #include "core/render/camera.h"
+#include "core/render/captions.h"
+#include "core/render/orbit_camera.h"
 #include "core/render/renderer.h"
 #include "core/scene/default_scene.h"
 #include "core/scene/drive.h"
@@ -22,7 +24,10 @@ constexpr std::string_view kSceneName = "scene.f2";
 
 struct Module {
     std::optional<f2::SceneDesc> scene;  ///< the last scene without errors
-    f2::Renderer renderer{1};            ///< no threads: the page runs one module per worker
+    /// The frame time the renderer last evaluated and built for this scene:
+    /// the page renders a frame in many pieces (bands, previews, anti-aliasing).
+    std::optional<double> preparedFrame;
+    f2::Renderer renderer{1};  ///< no threads: the page runs one module per worker
     f2::Image image;
     std::vector<std::uint8_t> rgba;
     std::string text;  ///< returned strings live here until the next call
@@ -105,7 +110,10 @@ const char* f2_set_scene(const char* text) {
         }
     }
     const bool ok = result.scene.has_value();
-    if (ok) m.scene = std::move(result.scene);
+    if (ok) {
+        m.scene = std::move(result.scene);
+        m.preparedFrame.reset();
+    }
     std::string& out = m.text;
     out = "{\"ok\":";
     out += ok ? "true" : "false";
@@ -135,18 +143,40 @@ const char* f2_set_scene(const char* text) {
 
 /// Renders rows [y0, y1) of frame `frame` (scene frames, may be fractional)
 /// of the kept scene at width x height, through the scene's camera, as
-/// `f2 render --frame` does. Returns (y1 - y0) * width RGBA pixels, or null
-/// without a scene, with a frame that is not finite or with a bad size.
-const std::uint8_t* f2_render(double frame, int width, int height, int y0, int y1) {
+/// `f2 render --frame` does, with `antialias` x `antialias` samples per pixel
+/// (`--aa`). A look-around (the page's mouse drag, the viewer's orbit): the
+/// camera turned by `yawDeg` and `pitchDeg` about a point in front of it and
+/// its distance to that point times `zoom`; 0, 0, 1 is the scene's camera
+/// itself. Returns (y1 - y0) * width RGBA pixels, or null without a scene,
+/// with a frame that is not finite or with a bad size.
+const std::uint8_t* f2_render(double frame, int width, int height, int y0, int y1, int antialias,
+                              double yawDeg, double pitchDeg, double zoom) {
     Module& m = module();
     if (!m.scene || !std::isfinite(frame) || width < 1 || height < 1 || width > 16384 || height > 16384 ||
-        y0 < 0 || y1 > height || y0 >= y1)
+        y0 < 0 || y1 > height || y0 >= y1 || antialias < 1 || antialias > 16 || !std::isfinite(yawDeg) ||
+        !std::isfinite(pitchDeg) || !(zoom > 0) || !std::isfinite(zoom))
         return nullptr;
     f2::RenderOptions options;
+    options.antialias = antialias;
     options.firstRow = y0;
     options.endRow = y1;
-    m.renderer.render(*m.scene, frame, f2::cameraAt(*m.scene, frame).resized(width, height), m.image,
-                      options);
+    f2::Camera camera = f2::cameraAt(*m.scene, frame).resized(width, height);
+    if (yawDeg != 0 || pitchDeg != 0 || zoom != 1) {
+        // The same orbit in every worker: the target depends only on the scene and the frame.
+        f2::OrbitCamera orbit =
+            f2::OrbitCamera::fromCamera(camera, f2::orbitTargetDistance(*m.scene, camera));
+        orbit.orbit(float(yawDeg), float(pitchDeg));
+        orbit.zoom(float(zoom));
+        camera = orbit.apply(camera);
+    }
+    if (m.preparedFrame == frame) {
+        // The frame is evaluated and its BVH built: render()'s last steps only.
+        m.renderer.trace(m.renderer.frame(), camera, m.image, options);
+        f2::drawCaptions(m.image, m.scene->captions, frame);
+    } else {
+        m.renderer.render(*m.scene, frame, camera, m.image, options);
+        m.preparedFrame = frame;
+    }
     m.rgba.resize(std::size_t(y1 - y0) * std::size_t(width) * 4);
     std::uint8_t* p = m.rgba.data();
     for (int y = y0; y < y1; ++y) {

@@ -1,5 +1,6 @@
 // One render worker: its own instance of the module (wasm SIMD or the
-// fallback, as the page chose), rendering the bands of rows it is handed.
+// fallback, as the page chose), rendering the bands of rows it is handed,
+// or (the page's language worker) answering the editor's requests.
 'use strict';
 let f2 = null;
 const pending = [];
@@ -9,12 +10,14 @@ function handle(message) {
   if (m.type === 'scene') {
     const result = f2.setScene(m.text);
     postMessage({type: 'scene', id: m.id, result});
+  } else if (m.type === 'lsp') {
+    postMessage({type: 'lsp', id: m.id, result: f2.lsp(m.method, m.params)});
   } else if (m.type === 'render') {
     const start = performance.now();
-    const pixels = f2.render(m.frame, m.width, m.height, m.y0, m.y1);
+    const pixels = f2.render(m.frame, m.width, m.height, m.y0, m.y1, m.view);
     const ms = performance.now() - start;
     const buffer = pixels ? pixels.buffer : null;
-    postMessage({type: 'band', job: m.job, y0: m.y0, y1: m.y1, pixels, ms}, buffer ? [buffer] : []);
+    postMessage({type: 'band', job: m.job, worker: m.worker, y0: m.y0, y1: m.y1, pixels, ms}, buffer ? [buffer] : []);
   }
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 /// A scene evaluated at one time: every primitive in world space with its
 /// surface, and the lights. What animation produces; render adds the BVH
-/// (FrameScene). Refilled in place each frame; its vectors keep their
+/// (PreparedFrame). Refilled in place each frame; its vectors keep their
 /// capacity so steady-state frames do not allocate.
 #include <cstdint>
 #include <memory>

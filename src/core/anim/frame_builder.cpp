@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "core/anim/animation_program.h"
-#include "core/anim/light_frame.h"
+#include "core/anim/light_evaluation.h"
 #include "core/anim/track.h"
 #include "core/scene/models.h"
 

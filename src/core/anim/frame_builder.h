@@ -61,7 +61,7 @@ Vec3 partShapeCentre(const SceneObject& object, int part, const Transform& world
 /// pool's threads when one is given, from the scene's compiled animation
 /// (animation_program.h; compiled by the first call for a scene). Gives the
 /// bits that the object-by-object functions above give. The BVH is the
-/// renderer's business (FrameScene::bvh, updated from frame.primitives).
+/// renderer's business (PreparedFrame::bvh, updated from frame.primitives).
 /// `t` must be a finite number (asserted; the front ends refuse others).
 void evaluateFrame(const SceneDesc& scene, double t, EvaluatedFrame& frame, ThreadPool* pool = nullptr);
 

@@ -62,26 +62,26 @@ struct TrackSegment {
 };
 
 /// The segment of time `t` among `keyCount` keys (at least one) whose times,
-/// sorted and unique, are `frameOf(i)` and whose segment modes are `modeOf(i)`
+/// sorted and unique, are `timeOf(i)` and whose segment modes are `modeOf(i)`
 /// (the Easing from key i to key i + 1). NaN gives the first key.
-template <class FrameOf, class ModeOf>
-TrackSegment segmentAt(std::size_t keyCount, FrameOf frameOf, ModeOf modeOf, double t) {
+template <class TimeOf, class ModeOf>
+TrackSegment segmentAt(std::size_t keyCount, TimeOf timeOf, ModeOf modeOf, double t) {
     const std::uint32_t last = std::uint32_t(keyCount - 1);
     // `!(t > first)` also sends NaN to the first key, so the search below
     // always finds a key after t.
-    if (!(t > frameOf(0))) return {};
-    if (t >= frameOf(last)) return {TrackSegment::Kind::Hold, last, last, last, last, 0};
-    // First key strictly after t (frameOf(0) <= t < frameOf(last)); the segment is [i1, i2].
+    if (!(t > timeOf(0))) return {};
+    if (t >= timeOf(last)) return {TrackSegment::Kind::Hold, last, last, last, last, 0};
+    // First key strictly after t (timeOf(0) <= t < timeOf(last)); the segment is [i1, i2].
     std::uint32_t lo = 1, hi = last;
     while (lo < hi) {
         const std::uint32_t mid = lo + (hi - lo) / 2;
-        if (t < frameOf(mid))
+        if (t < timeOf(mid))
             hi = mid;
         else
             lo = mid + 1;
     }
     const std::uint32_t i2 = lo, i1 = i2 - 1;
-    const double u = (t - frameOf(i1)) / (frameOf(i2) - frameOf(i1));
+    const double u = (t - timeOf(i1)) / (timeOf(i2) - timeOf(i1));
     const Easing& easing = modeOf(i1);
     const Interpolation mode = easing.mode;
     if (mode == Interpolation::Step)

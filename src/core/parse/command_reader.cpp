@@ -125,7 +125,7 @@ Pos CommandReader::tokenPos(int i) const {
     return p;
 }
 
-bool CommandReader::expectArgs(std::initializer_list<int> allowed, int optionArgs) {
+bool CommandReader::expectArgs(std::span<const int> allowed, int optionArgs) {
     const int n = argCount() - optionArgs;
     if (std::find(allowed.begin(), allowed.end(), n) != allowed.end()) return true;
     std::string list;
@@ -135,7 +135,7 @@ bool CommandReader::expectArgs(std::initializer_list<int> allowed, int optionArg
         list += std::to_string(a);
         ++i;
     }
-    const bool plural = allowed.size() > 1 || *allowed.begin() != 1;
+    const bool plural = allowed.size() > 1 || allowed.front() != 1;
     // A no-break space glues two arguments into one, so the count is the first thing wrong.
     error(commandPos(),
           noteCharacters(quoteToken(commandText()) + " takes " + list +

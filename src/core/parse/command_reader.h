@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <initializer_list>
+#include <span>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -108,7 +109,10 @@ class CommandReader : protected ExpansionSink {
 
     /// Checks the argument count against the allowed ones ("3, 6 or 9"),
     /// not counting `optionArgs` arguments of options the command found.
-    bool expectArgs(std::initializer_list<int> allowed, int optionArgs = 0);
+    bool expectArgs(std::span<const int> allowed, int optionArgs = 0);
+    bool expectArgs(std::initializer_list<int> allowed, int optionArgs = 0) {
+        return expectArgs(std::span<const int>(allowed.begin(), allowed.size()), optionArgs);
+    }
 
     // Argument readers: on a problem they report it, clear `ok` and return a harmless value.
     double number(int i, bool& ok);

@@ -75,6 +75,9 @@ enum class CommandId : std::uint8_t {
     Model,
     Part,
     Drive,
+#ifdef F2_SCRATCH_COMMAND
+    Scratch,  // tests/scratch_command: a command added as docs/design.md says, in a build of its own
+#endif
 };
 
 struct CommandSpec {
@@ -83,9 +86,15 @@ struct CommandSpec {
     Edition edition;
     CommandGroup group;
     std::span<const ArgKind> args;  ///< argument kinds; the last repeats for further arguments
-    std::string_view syntax;        ///< "/robot <name> <px> <py> <pz> [<rx> <ry> <rz>]"
-    std::string_view snippet;       ///< LSP snippet of the whole command
-    std::string_view meaning;       ///< a short explanation (Markdown)
+    /// The argument counts it takes, a light's options not counted: what the
+    /// parser checks and its message lists ("takes 3, 6 or 9 arguments").
+    /// Empty where the count depends on the line: /key (its property),
+    /// /caption (its colour), /model (its parameters) and the four the
+    /// SourceExpander reads.
+    std::span<const int> counts;
+    std::string_view syntax;   ///< "/robot <name> <px> <py> <pz> [<rx> <ry> <rz>]"
+    std::string_view snippet;  ///< LSP snippet of the whole command
+    std::string_view meaning;  ///< a short explanation (Markdown)
     /// Whether its first target (or object) argument may be `camera` (SPEC 9.1)
     /// or a named light (SPEC 10.2): /anim, /key, /interp and /attach's rider.
     bool takesCamera = false;
@@ -95,6 +104,11 @@ struct CommandSpec {
     /// The index of the argument that may be `camera`, or -1.
     int cameraArgument() const;
 };
+
+/// Whether the command makes a shape in a `/model` block (SPEC 10.1): /sphere, /cylinder, /box.
+constexpr bool createsModelShape(CommandId id) {
+    return id == CommandId::Sphere || id == CommandId::Cylinder || id == CommandId::Box;
+}
 
 /// Every command of the language, in CommandId order.
 std::span<const CommandSpec> commands();

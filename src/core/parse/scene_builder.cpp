@@ -99,6 +99,7 @@ void SceneBuilder::parseLine() {
     }
     if (const TypeBook* type = typeOfCommand(head)) {
         if (index_) index_->noteCommand(head, sourceLoc(commandPos()));
+        command_ = CommandId::Robot;  // an instance is written as /robot is (SPEC 10.1)
         return parseObject(ObjectKind::Model, type);
     }
     unknownCommand(head);
@@ -113,6 +114,7 @@ void SceneBuilder::unknownCommand(std::string_view head) {
 }
 
 void SceneBuilder::dispatch(CommandId command) {
+    command_ = command;
     using enum CommandId;
     switch (command) {
         case Camera:
@@ -166,6 +168,10 @@ void SceneBuilder::dispatch(CommandId command) {
             return;
         case Drive:
             return parseDrive();
+#ifdef F2_SCRATCH_COMMAND
+        case Scratch:
+            return parseScratch();  // tests/scratch_command/scratch_builder.cpp
+#endif
         case Let:
         case Repeat:
         case End:

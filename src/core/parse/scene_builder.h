@@ -165,6 +165,12 @@ class SceneBuilder final : public CommandReader {
     void unknownCommand(std::string_view head);
 
     void dispatch(CommandId command);
+#ifdef F2_SCRATCH_COMMAND
+    void parseScratch();
+#endif
+    /// The argument count of the line against its command's row of the
+    /// language table (CommandSpec::counts), not counting `optionArgs`.
+    bool expectCounts(int optionArgs = 0) { return expectArgs(command(command_).counts, optionArgs); }
 
     /// A name for a new object: valid and not yet used.
     bool newName(int i);
@@ -238,9 +244,9 @@ class SceneBuilder final : public CommandReader {
     /// "Point and spot lights"); each of `allowed` at most once.
     bool lightOptions(int first, std::initializer_list<LightOption> allowed, LightOptions& out);
 
-    /// A light command's `fixed` arguments are there (options may follow) and
-    /// the light limit is not reached.
-    bool lightArgsAllowed(int fixed);
+    /// A light command's arguments before its options (its row's count) are
+    /// there and the light limit is not reached.
+    bool lightArgsAllowed();
 
     /// The most arguments of a light command: /spot_light's 9 and its four
     /// options (tightness k, fade d p, size s n, name n). Every one is stored (kMaxStoredTokens).
@@ -493,6 +499,8 @@ class SceneBuilder final : public CommandReader {
 
     SymbolIndex* index_ = nullptr;
     SceneDesc scene_;
+    /// The command of the line being built (a model instance's line reads as /robot's).
+    CommandId command_ = CommandId::Camera;
 
     /// Loop notes of objects defined in a loop ("in /repeat k = 0"); ObjectBook::loopNote - 1.
     std::vector<std::string> loopNotes_;

@@ -12,7 +12,7 @@
 namespace f2::parsing {
 
 void SceneBuilder::parseLookAt() {
-    if (!firstOnly(lookAtSeen_) || !expectArgs({1, 3})) return;
+    if (!firstOnly(lookAtSeen_) || !expectCounts()) return;
     LookAt look;
     if (argCount() == 3) {
         bool ok = true;
@@ -32,7 +32,7 @@ void SceneBuilder::parseAttach() {
         error(argPos(2), "'at' needs a time: '/attach <name> <target> at <t>'");
         return;
     }
-    if (!expectArgs({2, 4})) return;
+    if (!expectCounts()) return;
     const bool timed = argCount() == 4;
     if (timed && (failed(2) || arg(2) != kAtWord)) {
         if (!failed(2)) error(argPos(2), "expected 'at' before the time, got " + quoteToken(arg(2)));

@@ -12,7 +12,7 @@
 namespace f2::parsing {
 
 void SceneBuilder::parseAnim() {
-    if (!expectArgs({1, 2}) || failed(0)) return;
+    if (!expectCounts() || failed(0)) return;
     // Only validates: /key needs no /anim (SPEC 6).
     if (argCount() == 1) {
         target(0, CameraTarget::Accepted, LightTarget::Accepted);
@@ -36,7 +36,7 @@ void SceneBuilder::parseAnim() {
 }
 
 void SceneBuilder::parseInterp() {
-    if (!expectArgs({2, 6})) return;
+    if (!expectCounts()) return;
     const std::optional<Target> t = target(0, CameraTarget::Accepted, LightTarget::Accepted);
     const std::optional<Easing> mode = easing(1, argCount());
     if (!t || !mode) return;
@@ -221,7 +221,7 @@ void SceneBuilder::parsePropertyKey(int numbers, int modeAt) {
 }
 
 void SceneBuilder::parseDrive() {
-    if (!expectArgs({3})) return;
+    if (!expectCounts()) return;
     const std::optional<Target> t =
         target(0, CameraTarget::Accepted, LightTarget::Accepted, ShapeTarget::Accepted);
     const std::optional<DriveChannel> channel = driveChannelFromWord(arg(1));

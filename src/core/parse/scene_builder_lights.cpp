@@ -11,7 +11,7 @@
 namespace f2::parsing {
 
 void SceneBuilder::parseCamera() {
-    if (!firstOnly(cameraSeen_) || !expectArgs({3, 6, 9})) return;
+    if (!firstOnly(cameraSeen_) || !expectCounts()) return;
     bool ok = true;
     CameraDesc camera;
     camera.width = whole(0, "image width", 1, limits_.maxImageSide, ok);
@@ -50,7 +50,7 @@ bool SceneBuilder::lightAllowed() {
 }
 
 void SceneBuilder::parseAmbLight() {
-    if (!expectArgs({1, 3}) || !lightAllowed()) return;
+    if (!expectCounts() || !lightAllowed()) return;
     bool ok = true;
     const float i = nonNegative(0, "ambient intensity", ok);
     LightOptions options;
@@ -151,9 +151,10 @@ bool SceneBuilder::lightOptions(int first, std::initializer_list<LightOption> al
     return ok;
 }
 
-bool SceneBuilder::lightArgsAllowed(int fixed) {
+bool SceneBuilder::lightArgsAllowed() {
+    const int fixed = command(command_).counts.front();
     if (argCount() < fixed) {
-        expectArgs({fixed});
+        expectCounts();
         return false;
     }
     if (argCount() > kMostLightArgs) {
@@ -165,7 +166,7 @@ bool SceneBuilder::lightArgsAllowed(int fixed) {
 }
 
 void SceneBuilder::parseDirLight() {
-    if (!lightArgsAllowed(4)) return;
+    if (!lightArgsAllowed()) return;
     bool ok = true;
     DirectionalLight light;
     light.intensity = nonNegative(0, "light intensity", ok);
@@ -179,8 +180,8 @@ void SceneBuilder::parseDirLight() {
 
 void SceneBuilder::parseLocalLight(LocalLightKind kind) {
     const bool spot = kind == LocalLightKind::Spot;
-    const int fixed = spot ? 9 : 4;
-    if (!lightArgsAllowed(fixed)) return;
+    const int fixed = command(command_).counts.front();
+    if (!lightArgsAllowed()) return;
     bool ok = true;
     LocalLight light;
     light.kind = kind;
@@ -232,14 +233,14 @@ std::int32_t SceneBuilder::registerLight(int nameArg, bool ambient) {
 }
 
 void SceneBuilder::parseBackground() {
-    if (!firstOnly(backgroundSeen_) || !expectArgs({3})) return;
+    if (!firstOnly(backgroundSeen_) || !expectCounts()) return;
     bool ok = true;
     const Color8 c = color(0, ok);
     if (ok) scene_.background = c;
 }
 
 void SceneBuilder::parseFps() {
-    if (!firstOnly(fpsSeen_) || !expectArgs({1})) return;
+    if (!firstOnly(fpsSeen_) || !expectCounts()) return;
     bool ok = true;
     const int fps = whole(0, "fps", 1, limits_.maxFps, ok);
     if (ok) scene_.fps = fps;

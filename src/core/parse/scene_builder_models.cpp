@@ -197,6 +197,7 @@ void SceneBuilder::parseModelLine(std::string_view head) {
     }
     if (build.nested > 0) return;  // the lines of a refused block
     if (!c) return unknownCommand(head);
+    command_ = c->id;
     using enum CommandId;
     switch (c->id) {
         case Part:
@@ -224,7 +225,7 @@ void SceneBuilder::parseModelLine(std::string_view head) {
 
 void SceneBuilder::parsePart() {
     ModelType& type = *building_->type;
-    if (!expectArgs({5, 8})) return;
+    if (!expectCounts()) return;
     bool ok = true;
     ModelPart part;
     part.pivot = vec3(2, ok);
@@ -302,8 +303,8 @@ std::optional<int> SceneBuilder::modelShapeArgument(int i) {
 
 void SceneBuilder::parseModelShape(ShapeKind kind, ObjectKind sized) {
     ModelType& type = *building_->type;
-    const int sizeArgs = sizeArgCount(sized), withoutRotation = 1 + sizeArgs + 3;
-    if (!expectArgs({withoutRotation, withoutRotation + 3})) return;
+    const int sizeArgs = sizeArgCount(sized), withoutRotation = command(command_).counts.front();
+    if (!expectCounts()) return;
     bool ok = true;
     ModelShape shape;
     shape.kind = kind;

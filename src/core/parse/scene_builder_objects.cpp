@@ -31,7 +31,7 @@ Vec3 SceneBuilder::primitiveSize(ObjectKind kind, int first, bool& ok) {
 
 void SceneBuilder::parseObject(ObjectKind kind, const TypeBook* type) {
     const int sizeArgs = sizeArgCount(kind);
-    const int withoutRotation = 1 + sizeArgs + 3;
+    const int withoutRotation = command(command_).counts.front();  // name, sizes, centre
     SceneObject object;
     object.kind = kind;
     if (type) makeInstance(object, type->type);
@@ -49,7 +49,7 @@ void SceneBuilder::parseObject(ObjectKind kind, const TypeBook* type) {
     // registered with its kind, so later lines that use it do not add
     // "unknown name" errors. The error count caps how far this goes past
     // the object limit.
-    const bool countOk = expectArgs({withoutRotation, withoutRotation + 3}, argCount() - options);
+    const bool countOk = expectCounts(argCount() - options);
     const bool roomOk = scene_.objects.size() < limits_.maxObjects;
     if (countOk && !roomOk) {
         error(commandPos(), "too many objects: at most " + std::to_string(limits_.maxObjects) +
@@ -131,7 +131,7 @@ SceneBuilder::LookTarget SceneBuilder::lookTarget(int i) {
 }
 
 void SceneBuilder::parsePaint() {
-    if (!expectArgs({4})) return;
+    if (!expectCounts()) return;
     bool ok = true;
     const LookTarget t = lookTarget(0);
     const Color8 c = color(1, ok);
@@ -149,7 +149,7 @@ void SceneBuilder::parseMaterial() {
         error(argPos(5), "'emit' takes a number (the emission e >= 0)");
         return;
     }
-    if (!expectArgs({5, 6}, emits ? 2 : 0)) return;
+    if (!expectCounts(emits ? 2 : 0)) return;
     bool ok = true;
     const LookTarget t = lookTarget(0);
     Material m;
@@ -164,7 +164,7 @@ void SceneBuilder::parseMaterial() {
 }
 
 void SceneBuilder::parseNoShadow() {
-    if (!expectArgs({1})) return;
+    if (!expectCounts()) return;
     const std::optional<Target> t =
         target(0, CameraTarget::Refused, LightTarget::Refused, ShapeTarget::Accepted);
     if (!t) return;
@@ -172,7 +172,7 @@ void SceneBuilder::parseNoShadow() {
 }
 
 void SceneBuilder::parseChecker() {
-    if (!expectArgs({5})) return;
+    if (!expectCounts()) return;
     bool ok = true;
     const LookTarget t = lookTarget(0);
     Checker checker;

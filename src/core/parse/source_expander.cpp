@@ -249,14 +249,14 @@ struct SourceExpander::SourceFile {
     }
 };
 
-struct SourceExpander::FileFrame {
+struct SourceExpander::OpenFile {
     const SourceFile* source;
     LineReader reader;
     int nameIndex;
     std::size_t loopBase;  ///< loops open when the file was entered
 };
 
-struct SourceExpander::LoopFrame {
+struct SourceExpander::OpenLoop {
     std::string variable;
     std::optional<double> saved;  ///< its value before the loop, restored after /end
     double from, step;
@@ -314,7 +314,7 @@ std::string SourceExpander::loopNote() const {
     if (loopStack_.empty()) return {};
     std::string note = " (in /repeat ";
     for (std::size_t i = 0; i < loopStack_.size(); ++i) {
-        const LoopFrame& loop = loopStack_[i];
+        const OpenLoop& loop = loopStack_[i];
         if (i > 0) note += ", ";
         const double value = loop.from + static_cast<double>(loop.pass) * loop.step;
         note += loop.variable + " = " + formatNumber(value == 0 ? 0.0 : value);
@@ -325,9 +325,9 @@ std::string SourceExpander::loopNote() const {
 
 bool SourceExpander::next(LogicalLine& out) {
     while (!stopped_ && !fileStack_.empty()) {
-        FileFrame& frame = fileStack_.back();
+        OpenFile& file = fileStack_.back();
         SourceLine line;
-        if (!frame.reader.next(line)) {
+        if (!file.reader.next(line)) {
             fileStack_.pop_back();
             continue;
         }
@@ -370,15 +370,15 @@ bool SourceExpander::next(LogicalLine& out) {
         } else if (command == kEnd) {
             runEnd(out);
         } else if (command == kModel) {
-            if (!frame.source->closedModels.contains(line.number)) {
+            if (!file.source->closedModels.contains(line.number)) {
                 // Nothing after it in this file can be read as it was meant.
                 error(at(out.tokens[0]), "'/model' without '/end' in the same file");
-                frame.reader = LineReader(std::string_view());
+                file.reader = LineReader(std::string_view());
                 continue;
             }
             evaluateTokens(out, 1);
             modelBlocks_.push_back({fileStack_.size(), loopStack_.size(), variables_, false});
-            lastModelBlock_ = {frame.source, frame.reader, frame.nameIndex};
+            lastModelBlock_ = {file.source, file.reader, file.nameIndex};
             return true;
         } else if (command == kInclude) {
             runInclude(line.text, out);
@@ -568,13 +568,13 @@ void SourceExpander::runLet(const LogicalLine& line) {
 void SourceExpander::skipLoop(const LoopInfo& info) { fileStack_.back().reader = info.afterEnd; }
 
 void SourceExpander::runRepeat(const LogicalLine& line, int lineNumber) {
-    FileFrame& frame = fileStack_.back();
+    OpenFile& file = fileStack_.back();
     const SourcePos commandPos = at(line.tokens[0]);
-    const auto found = frame.source->loops.find(lineNumber);
-    if (found == frame.source->loops.end()) {
+    const auto found = file.source->loops.find(lineNumber);
+    if (found == file.source->loops.end()) {
         // The rest of the file is not read: it would only add follow-on errors.
         error(commandPos, "'/repeat' without '/end' in the same file");
-        frame.reader = LineReader(std::string_view());
+        file.reader = LineReader(std::string_view());
         return;
     }
     const LoopInfo& info = found->second;
@@ -631,7 +631,7 @@ void SourceExpander::runRepeat(const LogicalLine& line, int lineNumber) {
         return;
     }
     loopStack_.push_back({std::string(name.text), variables_.find(name.text), *from, *step,
-                          static_cast<std::uint64_t>(passes), 0, frame.reader});
+                          static_cast<std::uint64_t>(passes), 0, file.reader});
     variables_.set(name.text, *from);
 }
 
@@ -647,17 +647,17 @@ bool SourceExpander::endsModel() const {
 }
 
 void SourceExpander::runEnd(const LogicalLine& line) {
-    FileFrame& frame = fileStack_.back();
-    if (loopStack_.size() == frame.loopBase) {
+    OpenFile& file = fileStack_.back();
+    if (loopStack_.size() == file.loopBase) {
         error(at(line.tokens[0]), "'/end' without '/repeat'");
         return;
     }
     if (line.count > 1) error(at(line.tokens[1]), "'/end' takes no arguments");
-    LoopFrame& loop = loopStack_.back();
+    OpenLoop& loop = loopStack_.back();
     if (++loop.pass < loop.passes) {
         const double value = loop.from + static_cast<double>(loop.pass) * loop.step;
         variables_.set(loop.variable, value == 0 ? 0.0 : value);
-        frame.reader = loop.bodyStart;
+        file.reader = loop.bodyStart;
         return;
     }
     if (loop.saved) {
@@ -711,7 +711,7 @@ void SourceExpander::runInclude(std::string_view raw, const LogicalLine& line) {
         return;
     }
     namespace fs = std::filesystem;
-    const FileFrame& including = fileStack_.back();
+    const OpenFile& including = fileStack_.back();
     fs::path resolved(path);
     if (resolved.is_relative() && !including.source->directory.empty()) {
         resolved = fs::path(including.source->directory) / resolved;

@@ -151,8 +151,8 @@ class SourceExpander {
    private:
     struct SourceFile;
     struct LoopInfo;
-    struct FileFrame;
-    struct LoopFrame;
+    struct OpenFile;
+    struct OpenLoop;
 
     void tokenize(std::string_view text, LogicalLine& out);
     /// Evaluates the `( … )` and `{ … }` of tokens from `first` on; token
@@ -181,8 +181,8 @@ class SourceExpander {
     Variables variables_;
     std::vector<std::string> names_;
     std::deque<std::unique_ptr<SourceFile>> sources_;
-    std::vector<FileFrame> fileStack_;
-    std::vector<LoopFrame> loopStack_;
+    std::vector<OpenFile> fileStack_;
+    std::vector<OpenLoop> loopStack_;
     /// Open `/model` blocks (SPEC 10.1): the depths of the file and loop
     /// stacks at their `/model`, so that the `/end` at those depths is theirs.
     struct ModelBlock {

@@ -7,7 +7,7 @@
 
 namespace f2 {
 
-RayProbe probeRay(const FrameScene& frame, const Ray& ray, bool lights) {
+RayProbe probeRay(const PreparedFrame& frame, const Ray& ray, bool lights) {
     RayProbe probe;
     probe.lights = int(frame.lights.size() + frame.localLights.size());
     HitRecord hit;
@@ -85,7 +85,7 @@ Rgb8 costColor(std::uint32_t cost, std::uint32_t maxCost) {
     return {toByte(c.x), toByte(c.y), toByte(c.z)};
 }
 
-bool traceView(const FrameScene& frame, const Camera& camera, ViewMode mode, Image& out, ThreadPool* pool,
+bool traceView(const PreparedFrame& frame, const Camera& camera, ViewMode mode, Image& out, ThreadPool* pool,
                const std::atomic<bool>* cancel, ViewRange* range, RayCounts* rays) {
     out.resize(camera.width, camera.height);
     const bool scaled = mode == ViewMode::Depth || mode == ViewMode::Cost;

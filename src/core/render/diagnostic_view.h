@@ -10,8 +10,8 @@
 
 #include "core/geometry/traversal_count.h"
 #include "core/render/camera.h"
-#include "core/render/frame_scene.h"
 #include "core/render/image.h"
+#include "core/render/prepared_frame.h"
 #include "core/render/ray_counts.h"
 #include "core/render/view_mode.h"
 #include "core/util/thread_pool.h"
@@ -35,7 +35,7 @@ struct RayProbe {
 /// same shadow rays), recording instead of shading. Without `lights`, the
 /// shadow rays are not cast (lit, blocked, shadowRays stay 0 and cost counts
 /// the primary ray alone): the modes that do not show them run faster.
-RayProbe probeRay(const FrameScene& frame, const Ray& ray, bool lights = true);
+RayProbe probeRay(const PreparedFrame& frame, const Ray& ray, bool lights = true);
 
 /// Normals view: floor(255·(n + 1)/2 + 0.5) per channel; background black.
 Rgb8 normalColor(const RayProbe& probe);
@@ -61,7 +61,7 @@ struct ViewRange {
 
 /// Renders diagnostic view `mode` (not Shaded) of `frame` into `out`, rows on
 /// `pool` (serially without one). Returns false if `cancel` was raised.
-bool traceView(const FrameScene& frame, const Camera& camera, ViewMode mode, Image& out,
+bool traceView(const PreparedFrame& frame, const Camera& camera, ViewMode mode, Image& out,
                ThreadPool* pool = nullptr, const std::atomic<bool>* cancel = nullptr,
                ViewRange* range = nullptr, RayCounts* rays = nullptr);
 

@@ -7,7 +7,7 @@
 
 namespace f2 {
 
-PreparationTimes prepareFrame(const SceneDesc& scene, double t, FrameScene& frame, ThreadPool* pool,
+PreparationTimes prepareFrame(const SceneDesc& scene, double t, PreparedFrame& frame, ThreadPool* pool,
                               std::size_t intoLeavesFrom) {
     PreparationTimes times;
     auto start = Clock::now();

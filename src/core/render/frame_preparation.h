@@ -4,7 +4,7 @@
 /// whenever the last tree is refitted.
 #include <cstddef>
 
-#include "core/render/frame_scene.h"
+#include "core/render/prepared_frame.h"
 #include "core/scene/scene_desc.h"
 #include "core/util/thread_pool.h"
 
@@ -32,7 +32,7 @@ inline constexpr std::size_t kIntoLeavesFrom = std::size_t{1} << 16;
 /// primitive is evaluated into both the frame and its slot of the leaf order,
 /// around the caches, instead of into the frame and then copied into leaf
 /// order (a pass over 64 bytes a primitive that large frames pay from memory).
-PreparationTimes prepareFrame(const SceneDesc& scene, double t, FrameScene& frame, ThreadPool* pool,
+PreparationTimes prepareFrame(const SceneDesc& scene, double t, PreparedFrame& frame, ThreadPool* pool,
                               std::size_t intoLeavesFrom = kIntoLeavesFrom);
 
 }  // namespace f2

@@ -3,8 +3,8 @@
 /// reference path (docs/rendering.md, "Point and spot lights", "Soft
 /// shadows"). packet_light_sampling.h is the lane version, operation for
 /// operation.
-#include "core/anim/light_frame.h"
-#include "core/render/frame_scene.h"
+#include "core/anim/light_evaluation.h"
+#include "core/render/prepared_frame.h"
 
 namespace f2 {
 
@@ -18,7 +18,7 @@ struct SampledShadow {
 /// origin `origin` of a surface with normal `normal` (skipping `skip`): a
 /// direction below the surface's horizon (N·L_k <= 0) does not.
 template <class Count>
-inline SampledShadow visibleSunSamples(const FrameScene& frame, const LightSample& light, Vec3 origin,
+inline SampledShadow visibleSunSamples(const PreparedFrame& frame, const LightSample& light, Vec3 origin,
                                        Vec3 normal, std::uint32_t skip, Count& count) {
     SampledShadow shadow;
     for (std::uint32_t k = 0; k < light.sampleCount; ++k) {
@@ -46,7 +46,7 @@ inline LocalLightView viewLocalLight(const LocalLightSample& light, Vec3 origin)
 /// `origin`: one ray from the light toward the point (all the rays of a
 /// packet then leave one place), ending at the point.
 template <class Count>
-inline bool localLightBlocked(const FrameScene& frame, const LocalLightSample& light,
+inline bool localLightBlocked(const PreparedFrame& frame, const LocalLightSample& light,
                               const LocalLightView& view, std::uint32_t skip, Count& count) {
     return frame.bvh.occluded({light.position, -view.toLight}, 0.0f, view.distance, skip, count);
 }
@@ -55,7 +55,7 @@ inline bool localLightBlocked(const FrameScene& frame, const LocalLightSample& l
 /// disc faces the point (discAxes), and a sample below the surface's horizon
 /// does not count. Rays go from each sample to the point.
 template <class Count>
-inline SampledShadow visibleDiscSamples(const FrameScene& frame, const LocalLightSample& light,
+inline SampledShadow visibleDiscSamples(const PreparedFrame& frame, const LocalLightSample& light,
                                         const LocalLightView& view, Vec3 origin, Vec3 normal,
                                         std::uint32_t skip, Count& count) {
     const DiscAxes axes = discAxes(view.toLight);

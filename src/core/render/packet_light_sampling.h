@@ -19,7 +19,7 @@ inline std::uint64_t laneCount(Mask m) { return std::uint64_t(__builtin_popcount
 
 /// visibleSunSamples() for the `lit` lanes; the shadow rays start from
 /// `entry` (Bvh::beamEntryNodes of the tile's origins along the samples).
-inline Int visibleSunSamplesP(const FrameScene& frame, const LightSample& light, const Vec3P& origin,
+inline Int visibleSunSamplesP(const PreparedFrame& frame, const LightSample& light, const Vec3P& origin,
                               const Vec3P& normal, Int skip, Mask lit, std::span<const std::uint32_t> entry,
                               RayCounts& counts) {
     Int visible(0);
@@ -62,7 +62,7 @@ inline Float localLightIntensityP(const LocalLightSample& light, const LocalLigh
 }
 
 /// Lanes of `active` whose point light is hidden: localLightBlocked() per lane.
-inline Mask localLightBlockedP(const FrameScene& frame, const LocalLightSample& light,
+inline Mask localLightBlockedP(const PreparedFrame& frame, const LocalLightSample& light,
                                const LocalLightViewP& view, Int skip, Mask active, RayCounts& counts) {
     counts.shadow += laneCount(active);
     return occludedPacket(frame.bvh, EyeRays(light.position, -view.toLight), active, Float(0.0f),
@@ -70,7 +70,7 @@ inline Mask localLightBlockedP(const FrameScene& frame, const LocalLightSample& 
 }
 
 /// visibleDiscSamples() for the `active` lanes.
-inline Int visibleDiscSamplesP(const FrameScene& frame, const LocalLightSample& light,
+inline Int visibleDiscSamplesP(const PreparedFrame& frame, const LocalLightSample& light,
                                const LocalLightViewP& view, const Vec3P& origin, const Vec3P& normal,
                                Int skip, Mask active, RayCounts& counts) {
     // discAxes() per lane.

@@ -15,7 +15,7 @@ inline Vec3P reflectedDirectionP(const Vec3P& d, const Vec3P& n) {
 }
 
 /// The surfaces that the mirrored rays of `s` (from its `active` lanes) meet.
-inline PacketSurface findMirroredSurfaces(const FrameScene& frame, const PacketSurface& s, Mask active,
+inline PacketSurface findMirroredSurfaces(const PreparedFrame& frame, const PacketSurface& s, Mask active,
                                           RayCounts& counts) {
     counts.reflected += std::uint64_t(__builtin_popcount(simd::bits(active)));
     const FreeRays rays(s.shadowOrigin, reflectedDirectionP(-s.toEye, s.normal));
@@ -26,7 +26,7 @@ inline PacketSurface findMirroredSurfaces(const FrameScene& frame, const PacketS
 
 /// The colours of a packet's surfaces `s` (their own shading `local`, from
 /// shadeSurfaces()) with what their mirrors reflect, to kMaxTraceLevel.
-inline ColorP withReflections(const FrameScene& frame, const PacketSurface& s, const ColorP& local,
+inline ColorP withReflections(const PreparedFrame& frame, const PacketSurface& s, const ColorP& local,
                               RayCounts& counts) {
     Mask mirrors = s.hitLanes & (s.reflection > Float(0.0f));
     if (simd::none(mirrors)) return local;

@@ -4,10 +4,10 @@
 /// approximation of simd_math.h (within 1e-6 relative). Private to the core
 /// (SIMD types).
 #include "core/geometry/bvh_packet.h"
-#include "core/render/frame_scene.h"
 #include "core/render/packet_beam.h"
 #include "core/render/packet_checker.h"
 #include "core/render/packet_light_sampling.h"
+#include "core/render/prepared_frame.h"
 #include "core/render/ray_counts.h"
 #include "core/render/shading.h"
 #include "core/simd/simd_math.h"
@@ -34,7 +34,7 @@ struct PacketSurface {
 /// The surfaces that `rays` met at `hit` in the `active` lanes (shadingPoint()
 /// and the surface's values, lane by lane).
 template <class Origin>
-inline PacketSurface surfacesAt(const FrameScene& frame, const Rays<Origin, Vec3P>& rays,
+inline PacketSurface surfacesAt(const PreparedFrame& frame, const Rays<Origin, Vec3P>& rays,
                                 const PacketHit& hit, Mask active) {
     PacketSurface s;
     s.hitLanes = active & (hit.t < Float(kInfinity));
@@ -79,7 +79,7 @@ inline PacketSurface surfacesAt(const FrameScene& frame, const Rays<Origin, Vec3
 /// in the subtrees of `entry` and then of `cell`: for rays that all lie inside
 /// one frustum, its Bvh::entryNodes() (and no `cell`); in a frame binned by
 /// PrimaryBins, its everywhere() and the packet's cell().
-inline PacketSurface findSurfaces(const FrameScene& frame, const EyeRays& rays, Mask active,
+inline PacketSurface findSurfaces(const PreparedFrame& frame, const EyeRays& rays, Mask active,
                                   std::span<const std::uint32_t> entry, std::span<const std::uint32_t> cell,
                                   RayCounts& counts) {
     counts.primary += std::uint64_t(__builtin_popcount(simd::bits(active)));
@@ -121,7 +121,7 @@ constexpr std::size_t kPacketEntryNodes = 8;
 /// from shadowEntry[i].nodes (Bvh::beamEntryNodes of a box holding their
 /// origins; for a soft sun narrowed to this packet's beam first), or from
 /// the root for lights past the end of shadowEntry.
-inline ColorP shadeSurfaces(const FrameScene& frame, const PacketSurface& s,
+inline ColorP shadeSurfaces(const PreparedFrame& frame, const PacketSurface& s,
                             std::span<const LightEntry> shadowEntry, RayCounts& counts) {
     ColorP out{Float(frame.background.x), Float(frame.background.y), Float(frame.background.z)};
     if (simd::none(s.hitLanes)) return out;

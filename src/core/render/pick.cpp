@@ -8,7 +8,7 @@
 
 namespace f2 {
 
-std::optional<PickHit> pickPoint(const SceneDesc& scene, const FrameScene& frame, const Camera& camera,
+std::optional<PickHit> pickPoint(const SceneDesc& scene, const PreparedFrame& frame, const Camera& camera,
                                  float px, float py) {
     const Ray ray = camera.rayThrough(px, py);
     HitRecord hit;
@@ -32,7 +32,7 @@ std::optional<PickHit> pickPoint(const SceneDesc& scene, const FrameScene& frame
 }
 
 std::optional<PickHit> pickPixel(const SceneDesc& scene, double t, const Camera& camera, int x, int y) {
-    FrameScene frame;
+    PreparedFrame frame;
     evaluateFrame(scene, t, frame);
     frame.bvh.build(frame.primitives);
     frame.bvh.setRayMask(frame.rayMask);  // hidden things cannot be picked (SPEC 10.7)

@@ -6,7 +6,7 @@
 #include <optional>
 
 #include "core/render/camera.h"
-#include "core/render/frame_scene.h"
+#include "core/render/prepared_frame.h"
 #include "core/scene/scene_desc.h"
 
 namespace f2 {
@@ -23,7 +23,7 @@ struct PickHit {
 /// What image point (px, py) (pixel coordinates as Camera::rayThrough; the
 /// centre of pixel (i, j) is (i + 0.5, j + 0.5)) shows in `frame`, which is
 /// `scene` evaluated at some time with its BVH built. Nothing for the background.
-std::optional<PickHit> pickPoint(const SceneDesc& scene, const FrameScene& frame, const Camera& camera,
+std::optional<PickHit> pickPoint(const SceneDesc& scene, const PreparedFrame& frame, const Camera& camera,
                                  float px, float py);
 
 /// What pixel (x, y) of `camera`'s image shows at time `t` (evaluates the frame).

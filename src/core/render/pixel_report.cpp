@@ -28,7 +28,7 @@ std::vector<PixelReport::Crossing> crossingsOf(const EvaluatedFrame& frame, cons
 }
 }  // namespace
 
-PixelReport tracePixel(const FrameScene& frame, const Camera& camera, int x, int y) {
+PixelReport tracePixel(const PreparedFrame& frame, const Camera& camera, int x, int y) {
     PixelReport r;
     r.px = float(x) + 0.5f;
     r.py = float(y) + 0.5f;

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "core/render/camera.h"
-#include "core/render/frame_scene.h"
 #include "core/render/image.h"
+#include "core/render/prepared_frame.h"
 #include "core/render/shading.h"
 
 namespace f2 {
@@ -51,7 +51,7 @@ struct PixelReport {
 
 /// Traces the centre of pixel (x, y) of `camera` through `frame` (its BVH
 /// built) by the reference path and reports each step.
-PixelReport tracePixel(const FrameScene& frame, const Camera& camera, int x, int y);
+PixelReport tracePixel(const PreparedFrame& frame, const Camera& camera, int x, int y);
 
 /// "r1.head.face (box)", "s1 (sphere)": the object (and part and shape) a frame primitive
 /// belongs to. `frame` must have been evaluated from `scene`.

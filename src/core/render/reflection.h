@@ -29,7 +29,8 @@ inline Ray mirroredRay(const ShadingPoint& s, Vec3 direction) {
 /// Colour (0..1, unclamped) of hit `hit` of a ray on trace level `level`:
 /// its own shading plus, on a mirror, r times what its mirrored ray sees
 /// (the background when that ray escapes).
-inline Vec3 shadeWithReflections(const FrameScene& frame, const Ray& ray, const HitRecord& hit, int level) {
+inline Vec3 shadeWithReflections(const PreparedFrame& frame, const Ray& ray, const HitRecord& hit,
+                                 int level) {
     const Vec3 local = shadeHit(frame, ray, hit);
     const float r = frame.surfaces[hit.primitive].material.reflection;
     if (!(r > 0.0f) || level >= kMaxTraceLevel) return local;
@@ -44,7 +45,7 @@ inline Vec3 shadeWithReflections(const FrameScene& frame, const Ray& ray, const 
 
 /// Colour of a primary ray from the eye: the shaded nearest hit (with its
 /// reflections) or the background.
-inline Vec3 traceRay(const FrameScene& frame, const Ray& ray) {
+inline Vec3 traceRay(const PreparedFrame& frame, const Ray& ray) {
     HitRecord hit;
     if (!frame.bvh.intersect(ray, primaryRayStart(ray.origin), kInfinity, hit)) return frame.background;
     return shadeWithReflections(frame, ray, hit, 1);

@@ -21,7 +21,7 @@ Renderer::Renderer(int threads) : pool_(threads) {}
 const char* packetIsaName() { return simd::kIsaName; }
 int packetWidth() { return simd::kWidth; }
 
-Vec3 renderSample(const FrameScene& frame, const Camera& camera, float px, float py) {
+Vec3 renderSample(const PreparedFrame& frame, const Camera& camera, float px, float py) {
     return traceRay(frame, camera.rayThrough(px, py));
 }
 
@@ -76,7 +76,7 @@ constexpr std::size_t kShadowEntryLights = 4;
 class TileRenderer {
    public:
     /// `bins`: this frame's PrimaryBins for `camera`, or null to walk the BVH.
-    TileRenderer(const FrameScene& frame, const Camera& camera, const PrimaryBins* bins, int aa,
+    TileRenderer(const PreparedFrame& frame, const Camera& camera, const PrimaryBins* bins, int aa,
                  RayCounts& counts)
         : frame_(frame), camera_(camera), bins_(bins), aa_(aa), counts_(counts) {}
 
@@ -161,7 +161,7 @@ class TileRenderer {
     /// (lane-wise bounds of the tile's shadow origins).
     class ShadowEntries {
        public:
-        ShadowEntries(const FrameScene& frame, const Vec3P& lo, const Vec3P& hi) {
+        ShadowEntries(const PreparedFrame& frame, const Vec3P& lo, const Vec3P& hi) {
             const Bounds origins{{simd::minLane(lo.x), simd::minLane(lo.y), simd::minLane(lo.z)},
                                  {simd::maxLane(hi.x), simd::maxLane(hi.y), simd::maxLane(hi.z)}};
             if (!(origins.lo.x <= origins.hi.x)) return;  // nothing was hit: no shadow rays
@@ -219,7 +219,7 @@ class TileRenderer {
         }
     }
 
-    const FrameScene& frame_;
+    const PreparedFrame& frame_;
     const Camera& camera_;
     const PrimaryBins* bins_;
     const int aa_;
@@ -262,8 +262,8 @@ bool forEachTile(ThreadPool& pool, const Camera& camera, int firstRow, int endRo
 }
 }  // namespace
 
-bool Renderer::trace(const FrameScene& frame, const Camera& camera, Image& out, const RenderOptions& options,
-                     const std::atomic<bool>* cancel, RayCounts* rays) {
+bool Renderer::trace(const PreparedFrame& frame, const Camera& camera, Image& out,
+                     const RenderOptions& options, const std::atomic<bool>* cancel, RayCounts* rays) {
     if (options.view != ViewMode::Shaded) {
         ViewRange range;
         if (!traceView(frame, camera, options.view, out, &pool_, cancel, &range, rays)) return false;
@@ -289,7 +289,7 @@ bool Renderer::trace(const FrameScene& frame, const Camera& camera, Image& out, 
         });
 }
 
-bool Renderer::traceAdding(const FrameScene& frame, const Camera& camera, LinearImage& sum,
+bool Renderer::traceAdding(const PreparedFrame& frame, const Camera& camera, LinearImage& sum,
                            const RenderOptions& options, const std::atomic<bool>* cancel, RayCounts* rays) {
     const int aa = options.antialias < 1 ? 1 : options.antialias;
     primaryBins_.build(frame.bvh, camera, &pool_, primaryBinsFrom_);
@@ -311,7 +311,7 @@ bool Renderer::traceAdding(const FrameScene& frame, const Camera& camera, Linear
 }
 
 /// The single-ray reference path over the whole image (tests compare it with trace()).
-void traceReference(const FrameScene& frame, const Camera& camera, Image& out) {
+void traceReference(const PreparedFrame& frame, const Camera& camera, Image& out) {
     out.resize(camera.width, camera.height);
     for (int y = 0; y < camera.height; ++y)
         for (int x = 0; x < camera.width; ++x) {

@@ -8,9 +8,9 @@
 #include <span>
 
 #include "core/render/camera.h"
-#include "core/render/frame_scene.h"
 #include "core/render/image.h"
 #include "core/render/linear_image.h"
+#include "core/render/prepared_frame.h"
 #include "core/render/primary_bins.h"
 #include "core/render/ray_counts.h"
 #include "core/render/view_mode.h"
@@ -57,8 +57,9 @@ class Renderer {
     /// Traces a prepared frame (its BVH built) into `out` at the camera's size,
     /// in the view mode of `options` (depth and cost with their legend, view_legend.h).
     /// Returns false if `cancel` was raised (the image is then incomplete).
-    bool trace(const FrameScene& frame, const Camera& camera, Image& out, const RenderOptions& options = {},
-               const std::atomic<bool>* cancel = nullptr, RayCounts* rays = nullptr);
+    bool trace(const PreparedFrame& frame, const Camera& camera, Image& out,
+               const RenderOptions& options = {}, const std::atomic<bool>* cancel = nullptr,
+               RayCounts* rays = nullptr);
 
     /// The whole frame: evaluate `scene` at time `t` (frames), build, trace,
     /// and in the shaded view draw the captions shown at `t` (captions.h).
@@ -85,18 +86,18 @@ class Renderer {
     void setPrimaryBinsFrom(std::size_t primitives) { primaryBinsFrom_ = primitives; }
 
     /// The frame evaluated by the last render().
-    const FrameScene& frame() const { return frame_; }
+    const PreparedFrame& frame() const { return frame_; }
     int threadCount() const { return pool_.threadCount(); }
 
    private:
     /// Evaluates `scene` at `t` into frame_ and updates its BVH (render()'s first two steps).
     void prepare(const SceneDesc& scene, double t, FrameTimings& timings);
     /// As trace(), but adds each pixel's colour (before the 8-bit conversion) to `sum`.
-    bool traceAdding(const FrameScene& frame, const Camera& camera, LinearImage& sum,
+    bool traceAdding(const PreparedFrame& frame, const Camera& camera, LinearImage& sum,
                      const RenderOptions& options, const std::atomic<bool>* cancel, RayCounts* rays);
 
     ThreadPool pool_;
-    FrameScene frame_;
+    PreparedFrame frame_;
     LinearImage sum_;          // renderAveraged's accumulator, kept for its capacity
     PrimaryBins primaryBins_;  // this frame's, rebuilt by each trace
     std::size_t primaryBinsFrom_ = PrimaryBins::kMinPrimitives;
@@ -104,11 +105,11 @@ class Renderer {
 
 /// Colour (0..1) of one pixel's sample at image point (px, py): the single-ray
 /// reference path, used by tests and debugging.
-Vec3 renderSample(const FrameScene& frame, const Camera& camera, float px, float py);
+Vec3 renderSample(const PreparedFrame& frame, const Camera& camera, float px, float py);
 
 /// The whole image by the single-ray reference path, one thread, one sample per
 /// pixel. The packet path of Renderer::trace must agree with it (tests).
-void traceReference(const FrameScene& frame, const Camera& camera, Image& out);
+void traceReference(const PreparedFrame& frame, const Camera& camera, Image& out);
 
 /// The instruction set the core's packets were built for ("AVX-512",
 /// "AVX2", "scalar") and their width in rays.

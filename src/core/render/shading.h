@@ -6,8 +6,8 @@
 #include <limits>
 
 #include "core/render/checker.h"
-#include "core/render/frame_scene.h"
 #include "core/render/light_sampling.h"
+#include "core/render/prepared_frame.h"
 
 namespace f2 {
 
@@ -42,7 +42,7 @@ struct ShadingPoint {
     Vec3 shadowOrigin;  ///< position lifted off the surface (kShadowBias)
 };
 
-inline ShadingPoint shadingPoint(const FrameScene& frame, const Ray& ray, const HitRecord& hit) {
+inline ShadingPoint shadingPoint(const PreparedFrame& frame, const Ray& ray, const HitRecord& hit) {
     ShadingPoint s;
     s.position = ray.origin + ray.direction * hit.t;
     Vec3 n = primitiveNormal(frame.primitives[hit.primitive], s.position, hit.face);
@@ -61,7 +61,7 @@ inline float unlitSum(const Material& m, float ambient) { return m.ka * ambient 
 
 /// One light's part in shading a point, as shadeHit() computed it.
 struct LightTerm {
-    std::size_t light = 0;       ///< FrameScene::lights, then localLights (index - lights.size())
+    std::size_t light = 0;       ///< PreparedFrame::lights, then localLights (index - lights.size())
     Vec3 toLight;                ///< unit, toward the light (its centre)
     float distance = kInfinity;  ///< to a point or spot light's centre
     float intensity = 0;         ///< what arrives, before shadows: after a spot's cone and fade
@@ -91,7 +91,7 @@ inline void addPhong(LightTerm& term, const Material& m, Vec3 n, Vec3 toEye, flo
 /// sees each light's LightTerm (the --pixel report); the shadow rays'
 /// traversals add their work to `count` (TraversalCount: the cost view).
 template <class OnLight, class Count>
-inline Vec3 shadeHit(const FrameScene& frame, const Ray& ray, const HitRecord& hit, OnLight&& onLight,
+inline Vec3 shadeHit(const PreparedFrame& frame, const Ray& ray, const HitRecord& hit, OnLight&& onLight,
                      Count& count) {
     const Surface& surface = frame.surfaces[hit.primitive];
     const Material& m = surface.material;
@@ -157,12 +157,12 @@ inline Vec3 shadeHit(const FrameScene& frame, const Ray& ray, const HitRecord& h
 }
 
 template <class OnLight>
-inline Vec3 shadeHit(const FrameScene& frame, const Ray& ray, const HitRecord& hit, OnLight&& onLight) {
+inline Vec3 shadeHit(const PreparedFrame& frame, const Ray& ray, const HitRecord& hit, OnLight&& onLight) {
     NoTraversalCount none;
     return shadeHit(frame, ray, hit, onLight, none);
 }
 
-inline Vec3 shadeHit(const FrameScene& frame, const Ray& ray, const HitRecord& hit) {
+inline Vec3 shadeHit(const PreparedFrame& frame, const Ray& ray, const HitRecord& hit) {
     return shadeHit(frame, ray, hit, [](const LightTerm&) {});
 }
 

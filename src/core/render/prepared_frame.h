@@ -7,7 +7,7 @@
 
 namespace f2 {
 
-struct FrameScene : EvaluatedFrame {
+struct PreparedFrame : EvaluatedFrame {
     Bvh bvh;
 };
 

@@ -1,4 +1,4 @@
-#include "core/anim/light_frame.h"
+#include "core/anim/light_evaluation.h"
 
 #include <algorithm>
 #include <limits>

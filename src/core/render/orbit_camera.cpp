@@ -1,4 +1,4 @@
-#include "orbit_camera.h"
+#include "core/render/orbit_camera.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include "core/math/transform.h"
 
-namespace f2::viewer {
+namespace f2 {
 
 namespace {
 constexpr float kFallbackTargetDistance = 500.0f;  // cm: a few metres, the scale of our models
@@ -58,4 +58,4 @@ Camera OrbitCamera::apply(const Camera& base) const {
 
 Pose OrbitCamera::pose() const { return {apply(Camera{}).eye, {pitchDeg_, yawDeg_, 0.0f}}; }
 
-}  // namespace f2::viewer
+}  // namespace f2

@@ -1,10 +1,10 @@
 #pragma once
-/// Look-around camera of the viewer: orbits a target point in front of the
+/// Look-around camera of the viewer and the web page: orbits a target point in front of the
 /// scene's camera. Pure math (no Qt), so it is unit-tested on its own.
 #include "core/render/camera.h"
 #include "core/scene/scene_desc.h"
 
-namespace f2::viewer {
+namespace f2 {
 
 /// Distance along the camera's view direction to orbit around: the median
 /// depth of the scene's objects in front of the eye, so the pivot sits inside
@@ -47,4 +47,4 @@ class OrbitCamera {
     float pitchDeg_ = 0.0f;
 };
 
-}  // namespace f2::viewer
+}  // namespace f2
