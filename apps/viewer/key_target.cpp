@@ -5,7 +5,7 @@
 #include "capture_pose.h"
 #include "core/anim/camera_motion.h"
 #include "core/anim/frame_builder.h"
-#include "core/anim/light_frame.h"
+#include "core/anim/light_evaluation.h"
 #include "core/anim/track.h"
 #include "core/scene/models.h"
 
