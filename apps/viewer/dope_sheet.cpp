@@ -33,6 +33,11 @@ void DopeSheet::setRows(std::vector<DopeRow> rows, const QString& text, int fps)
     fps_ = fps;
     if (rows == rows_) return;
     rows_ = std::move(rows);
+    // A press under way named keys by their old places: it ends here.
+    pressAt_.reset();
+    pressKey_.reset();
+    dragging_ = false;
+    band_.reset();
     firstRow_ = std::clamp(firstRow_, 0, std::max(0, int(rows_.size()) - kVisibleRows));
     // Keys that are gone are no longer selected.
     std::erase_if(selected_, [&](const KeyId& id) {
