@@ -33,6 +33,11 @@ void DopeSheet::setRows(std::vector<DopeRow> rows, const QString& text, int fps)
     fps_ = fps;
     if (rows == rows_) return;
     rows_ = std::move(rows);
+    // A press under way named keys by their old places: it ends here.
+    pressAt_.reset();
+    pressKey_.reset();
+    dragging_ = false;
+    band_.reset();
     firstRow_ = std::clamp(firstRow_, 0, std::max(0, int(rows_.size()) - kVisibleRows));
     // Keys that are gone are no longer selected.
     std::erase_if(selected_, [&](const KeyId& id) {
@@ -162,6 +167,17 @@ void DopeSheet::mousePressEvent(QMouseEvent* event) {
     const auto key = keyAt(at);
     const bool adding = event->modifiers() & (Qt::ShiftModifier | Qt::ControlModifier);
     if (event->button() != Qt::LeftButton && event->button() != Qt::RightButton) return;
+    const int named = at.y() / kRowHeight + firstRow_;
+    if (!key && at.x() < xOf(slider_->minimum()) - kHalf && named < int(rows_.size()) &&
+        event->button() == Qt::LeftButton) {
+        // A click on a row's name selects all its keys.
+        if (!adding) selected_.clear();
+        const DopeRow& r = rows_[std::size_t(named)];
+        for (int k = 0; k < int(r.keys.size()); ++k)
+            if (!isSelected(named, k))
+                selected_.push_back({r.target, r.property, r.keys[std::size_t(k)].time});
+        return update();
+    }
     if (!key) {
         if (!adding) selected_.clear();
         // A drag from an empty place selects the keys in its rectangle.

@@ -2,7 +2,8 @@
 /// The dope sheet under the timeline's slider: one row per key track of the
 /// selection (dope_sheet_model.h), each key a diamond at its frame, aligned
 /// with the slider. Click a key to go to it (Shift/Ctrl+click adds to the
-/// selection, a drag from an empty place selects a rectangle's keys), drag
+/// selection, a click on a row's name selects its keys, a drag from an
+/// empty place selects a rectangle's keys), drag
 /// a key to move the selected keys, Alt+drag to copy them, Delete
 /// removes them, right-click sets their mode; Esc during a drag cancels it.
 /// Each gesture asks for its edits as one request (editsRequested), which

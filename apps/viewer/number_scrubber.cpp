@@ -49,7 +49,19 @@ void NumberScrubber::write(Number& number, int steps, bool join) {
 }
 
 bool NumberScrubber::eventFilter(QObject* watched, QEvent* event) {
-    if (editor_->isReadOnly()) return false;
+    // Only input events touch the editor: others come while it is being destroyed too.
+    switch (event->type()) {
+        case QEvent::MouseButtonPress:
+        case QEvent::MouseMove:
+        case QEvent::MouseButtonRelease:
+        case QEvent::ShortcutOverride:
+        case QEvent::KeyPress:
+        case QEvent::Wheel:
+            if (editor_->isReadOnly()) return false;
+            break;
+        default:
+            return false;
+    }
     switch (event->type()) {
         case QEvent::MouseButtonPress: {
             auto* mouse = static_cast<QMouseEvent*>(event);

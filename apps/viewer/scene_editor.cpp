@@ -78,11 +78,14 @@ QTextDocument* SceneEditor::makeDocument(const QString& text, const QFont& font,
 
 void SceneEditor::adoptDocument(QTextDocument* document) {
     QTextDocument* previous = this->document();
+    // Asked before setDocument(): that deletes a previous document the text
+    // control made itself (ASan: reading its parent afterwards was a use after free).
+    const bool adoptedBefore = previous && previous != document && previous->parent() == this;
     document->setParent(this);
     setDocument(document);
     highlighter_ = document->findChild<SceneHighlighter*>();
     setTabStopDistance(fontMetrics().horizontalAdvance(QLatin1Char(' ')) * 4);
-    if (previous && previous != document && previous->parent() == this) delete previous;
+    if (adoptedBefore) delete previous;
     setViewportMargins(lineNumberAreaWidth(), 0, 0, 0);
     updateSelections();
 }

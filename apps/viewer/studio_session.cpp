@@ -170,6 +170,15 @@ bool StudioSession::selectTarget(const QString& target) {
     if (!scene) return false;
     Selection selection{target.section(u'.', 0, 0).toStdString(), std::nullopt,
                         target.section(u'.', 1).toStdString()};
+    // The camera and a named light, as their markers in the picture select them.
+    const bool light = std::any_of(scene->lightMotions.begin(), scene->lightMotions.end(),
+                                   [&](const LightMotion& l) { return l.name == selection.object; });
+    if (selection.partName.empty() &&
+        (target == QLatin1String(kCameraName.data(), kCameraName.size()) || light)) {
+        selection.kind = light ? Selection::Kind::Light : Selection::Kind::Camera;
+        setSelection(selection);
+        return selection_.has_value();  // an ambient light has no pose to select
+    }
     for (const SceneObject& object : scene->objects) {
         if (object.name != selection.object) continue;
         if (!selection.partName.empty()) {

@@ -78,8 +78,9 @@ class StudioSession : public QObject {
     /// selection on the background. Returns whether something is selected.
     bool pick(QPointF imagePoint, const Camera& camera);
     void setSelection(std::optional<Selection> selection);
-    /// Selects `target` (`name` or `name.part`) in the current scene; false
-    /// (and nothing selected) when there is no scene or no such target.
+    /// Selects `target` (`name`, `name.part`, a named light or `camera`) in
+    /// the current scene; false (and nothing selected) when there is no scene
+    /// or no such target.
     bool selectTarget(const QString& target);
     const std::optional<Selection>& selection() const { return selection_; }
     /// What shows the selection at the frame shown.

@@ -84,7 +84,10 @@ ViewerOptions parseViewerOptions(int& argc, char** argv) {
                                   "the window's size and, when paused, refined), then quit.",
                                   "file");
     QCommandLineOption select(
-        "select", "Select <target> (name or name.part): its outline, its keys in the dope sheet.", "target");
+        "select",
+        "Select <target> (name, name.part, a named light or camera): its outline or marker, its keys in "
+        "the dope sheet.",
+        "target");
     parser.addOptions({frame, scale, size, quitAfter, stats, screenshot, select});
     // Read argv as QCoreApplication::arguments() does, without an application:
     // no window system is needed to show the usage or to refuse an option.

@@ -43,7 +43,11 @@ struct WriteRequest {
     QString target;                       ///< `name`, `name.part`, a named light or `camera`
     std::optional<KeyProperty> property;  ///< none: the pose
     int frame = 0;
-    std::vector<double> values;  ///< x y z rx ry rz for a pose, else the property's numbers
+    /// x y z rx ry rz for a pose, else the property's numbers (r g b; i; d;
+    /// 0 or 1), as the key's numbers mean them (capture_pose.h): an attached
+    /// target's pose in the frame it rides on, a part's offset and rotation
+    /// about its pivot, a light's pose in its own frame.
+    std::vector<double> values;
 };
 
 struct WriteBack {
@@ -54,6 +58,9 @@ struct WriteBack {
     bool refused() const { return !refusal.isEmpty(); }
 };
 
+/// What writing `request` into `source.text` takes (see the rules above).
+/// Its edits' offsets are in `source.text`: apply them with applySourceEdits()
+/// (or applyWriteBack(), write_back_prompt.h) to an editor holding that text.
 WriteBack writeBack(const SceneSource& source, const WriteRequest& request);
 /// writeBack() of a pose.
 WriteBack writePose(const SceneSource& source, const QString& target, int frame, const Pose& pose);

@@ -226,6 +226,10 @@ void SessionTest::selectedTargetsKeysAndWriteBack() {
     const WriteBack write = session.writeBack(text, {"l1.arm", std::nullopt, 10, {0, 0, 0, 0, 0, -45}});
     QVERIFY(!write.refused());
     QCOMPARE(withEdits(text, write.edits), QString(text).replace("0 0 0 0 0 -40", "0 0 0 0 0 -45"));
+    // The camera by its name: its rows.
+    QVERIFY(session.selectTarget("camera"));
+    QCOMPARE(session.selection()->kind, Selection::Kind::Camera);
+    QCOMPARE(session.dopeSheetRows().front().target, QStringLiteral("camera"));
 }
 
 #include "session_test.moc"

@@ -394,6 +394,12 @@ void StudioTest::dopeSheetCopiesDeletesAndSetsModes() {
     drag(sheet, {xOfFrame(*sheet, 30), y - 3}, {sheet->keyPoint(0, 2).x() + 2, y + 3});
     QCOMPARE(sheet->selectedKeys(), (std::vector<std::pair<int, int>>{{0, 1}, {0, 2}}));
     QCOMPARE(w.editor()->toPlainText(), original);
+    // A click on the row's name selects its three keys; a click on an empty place none.
+    QTest::mouseClick(sheet, Qt::LeftButton, {}, {4, y});
+    QCOMPARE(sheet->selectedKeys().size(), std::size_t(3));
+    QTest::mouseClick(sheet, Qt::LeftButton, {}, {xOfFrame(*sheet, 60), y});
+    QVERIFY(sheet->selectedKeys().empty());
+    drag(sheet, {xOfFrame(*sheet, 30), y - 3}, {sheet->keyPoint(0, 2).x() + 2, y + 3});
     QTest::keyClick(sheet, Qt::Key_Delete);
     QCOMPARE(w.editor()->toPlainText(), QString(original).replace(QRegularExpression("/key [48]0 .*\n"), ""));
     w.editor()->undo();
