@@ -103,6 +103,7 @@ class EditorTest : public QObject {
     void editorShowsFileAndHighlights();
     void typingRendersLive();
     void errorKeepsImageAndUnderlinesColumn();
+    void sameMarksAsTheLanguageServer();
     void saveWritesTextAtomically();
     void autosaveRestoresAfterCrash();
     void diskChangeWithUnsavedEditsAsks();
@@ -199,6 +200,37 @@ void EditorTest::typingRendersLive() {
     // A space typed in the editor is text, not Play.
     QTest::keyClick(w->editor(), Qt::Key_Space);
     QVERIFY(!w->playback()->isPlaying());
+}
+
+void EditorTest::sameMarksAsTheLanguageServer() {
+    // The lines and columns of lsp.Diagnostics.MarksOnBracketsGluedCommentsTabsAndNonAscii:
+    // the viewer underlines what the language server ranges.
+    struct Case {
+        QString line;
+        int begin, end;  // UTF-16 columns, 0-based, [begin, end)
+    };
+    const Case cases[] = {
+        {"/fps 24x#c", 5, 8},
+        {"/fps\t24x", 5, 8},
+        {QString::fromUtf8("/sphere \xc3\xa9 1 0 0 0"), 8, 9},
+        {"/sphere b (1 + nope) 0 0 0", 15, 19},
+    };
+    QTemporaryDir dir;
+    auto w = windowOn(smallSceneFile(dir), 0);
+    QVERIFY(w);
+    SceneEditor* editor = w->editor();
+    const QString good = editor->toPlainText();
+    for (const Case& c : cases) {
+        editor->selectAll();
+        editor->insertPlainText(good + c.line + "\n");
+        QTRY_VERIFY_WITH_TIMEOUT(w->document()->hasErrors() && editor->problems().size() == 1, kWaitMs);
+        const int lineStart = editor->document()->findBlockByNumber(good.count('\n')).position();
+        QCOMPARE(editor->problemRange(editor->problems().front()),
+                 std::make_pair(lineStart + c.begin, c.end - c.begin));
+        editor->selectAll();
+        editor->insertPlainText(good);
+        QTRY_VERIFY_WITH_TIMEOUT(!w->document()->hasErrors(), kWaitMs);
+    }
 }
 
 void EditorTest::errorKeepsImageAndUnderlinesColumn() {
