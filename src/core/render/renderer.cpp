@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <new>
 
 #include "core/anim/frame_builder.h"
 #include "core/render/captions.h"
@@ -127,8 +128,10 @@ class TileRenderer {
                     Mask inside = (px < Float(float(camera_.width))) & (py < Float(float(camera_.height)));
                     const std::span<const std::uint32_t> cell =
                         bins_ ? bins_->cell(bx, by) : std::span<const std::uint32_t>();
-                    surfaces_[k] = findSurfaces(frame_, primaryRays(camera_, px + ox, py + oy), inside, entry,
-                                                cell, counts_);
+                    // Built in place (a prvalue into placement new): assigned, the surface
+                    // would be built aside and copied in, a call to memcpy in wasm.
+                    new (&surfaces_[k]) PacketSurface(findSurfaces(
+                        frame_, primaryRays(camera_, px + ox, py + oy), inside, entry, cell, counts_));
                     const PacketSurface& s = surfaces_[k];
                     lo = select(s.hitLanes, vmin(s.shadowOrigin, lo), lo);
                     hi = select(s.hitLanes, vmax(s.shadowOrigin, hi), hi);
