@@ -5,6 +5,7 @@
 #   scripts/install-deps.sh          everything: build, tests, benchmarks, video,
 #                                    POV-Ray, plots, fuzzing (test.sh, CI)
 #   scripts/install-deps.sh --run    only what building f2 and f2-viewer needs (run.sh)
+#   scripts/install-deps.sh --web    only what building the browser page needs (web.sh --install)
 #   scripts/install-deps.sh --check  installs nothing; exit 0 if everything is there
 set -euo pipefail
 
@@ -37,15 +38,21 @@ MORE_PACKAGES=(
   emscripten chromium
 )
 
+# The browser page (scripts/web.sh): the core compiled by emscripten, the
+# header-only libraries it reads from the host, python3's static server.
+WEB_PACKAGES=(cmake ninja-build nlohmann-json3-dev libstb-dev emscripten python3)
+
 mode=${1:-all}
 case "$mode" in
   --run) PACKAGES=("${RUN_PACKAGES[@]}") ;;
+  --web) PACKAGES=("${WEB_PACKAGES[@]}") ;;
   all | --check) PACKAGES=("${RUN_PACKAGES[@]}" "${MORE_PACKAGES[@]}") ;;
-  *) echo "usage: $0 [--run | --check]" >&2; exit 2 ;;
+  *) echo "usage: $0 [--run | --web | --check]" >&2; exit 2 ;;
 esac
 
-# Node.js and npm for the VS Code extension and its grammar test (not for
-# run.sh); a Node.js installed another way (with its own npm) is kept.
+# Node.js and npm for the VS Code extension, its grammar test and the web
+# page's bundle (not for run.sh); a Node.js installed another way (with its
+# own npm) is kept.
 if [ "$mode" != --run ] && ! command -v npm >/dev/null 2>&1; then
   PACKAGES+=(nodejs npm)
 fi

@@ -7,8 +7,9 @@
 #   scripts/web.sh [--install] [serve [PORT]]   build web/dist/; serve: then on http://localhost:PORT (8000)
 #   scripts/web.sh module simd|scalar DIR        one module into DIR (DIR/f2-simd.js or DIR/f2.js + .wasm)
 #   scripts/web.sh dist SIMD_DIR SCALAR_DIR OUT  the page from two built modules into OUT
-# --install: apt-get install emscripten first when emcc is missing (root), and
-# the npm packages (web/package.json: CodeMirror, esbuild) when missing.
+# --install: first the Debian packages the page needs when missing
+# (scripts/install-deps.sh --web: emscripten, cmake, ...; sudo when not root),
+# and the npm packages (web/package.json: CodeMirror, esbuild) when missing.
 # -j: F2_WEB_JOBS (default 2).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -21,7 +22,7 @@ export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$root}
 
 if [ "${1:-}" = --install ]; then
   shift
-  command -v emcc > /dev/null || apt-get install -y emscripten
+  "$root/scripts/install-deps.sh" --web
   [ -x "$root/web/node_modules/.bin/esbuild" ] || "$root/scripts/install-node-packages.sh"
 fi
 command -v emcc > /dev/null || { echo "web.sh: emcc not found: apt-get install emscripten (or scripts/web.sh --install)" >&2; exit 1; }

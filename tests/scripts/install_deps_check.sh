@@ -49,6 +49,14 @@ for p in clang povray gnuplot-nox ffmpeg libgtest-dev libbenchmark-dev libembree
   grep -qx -- "$p" <<<"$all_list" || fail "install-deps.sh (for test.sh) does not install $p"
 done
 
+# scripts/web.sh --install: the browser page on a machine that has nothing.
+web_list=$(installs --web)
+for p in cmake ninja-build emscripten nlohmann-json3-dev libstb-dev python3; do
+  grep -qx -- "$p" <<<"$web_list" || fail "install-deps.sh --web does not install $p, which web.sh needs"
+done
+! grep -qx -- qt6-base-dev <<<"$web_list" || fail "install-deps.sh --web installs Qt, which the page does not need"
+grep -q 'scripts/install-deps.sh" --web$' "$src/scripts/web.sh" || fail "web.sh --install does not use install-deps.sh --web"
+
 grep -q '^scripts/install-deps.sh --run$' "$src/scripts/run.sh" || fail "run.sh does not use install-deps.sh --run"
 grep -q '^scripts/install-deps.sh$' "$src/scripts/test.sh" || fail "test.sh does not install everything"
 
