@@ -257,9 +257,9 @@ TEST(Diagnostics, MarksOnBracketsGluedCommentsTabsAndNonAscii) {
         int begin, end;  // UTF-16 columns, 0-based, [begin, end)
     };
     const Case cases[] = {
-        {"/fps 24x#c", 5, 8},                  // '#' glued to the token: "24x"
-        {"/fps\t24x", 5, 8},                   // a tab is one column
-        {"/sphere \xc3\xa9 1 0 0 0", 8, 9},     // 'é': two bytes, one UTF-16 unit
+        {"/fps 24x#c", 5, 8},                    // '#' glued to the token: "24x"
+        {"/fps\t24x", 5, 8},                     // a tab is one column
+        {"/sphere \xc3\xa9 1 0 0 0", 8, 9},      // 'é': two bytes, one UTF-16 unit
         {"/sphere b (1 + nope) 0 0 0", 15, 19},  // a name inside brackets
     };
     for (const Case& c : cases) {
