@@ -31,6 +31,7 @@ command -v emcc > /dev/null || { echo "web.sh: emcc not found: apt-get install e
 build_module() {
   local variant=$1 dir=$2 simd=ON
   [ "$variant" = scalar ] && simd=OFF
+  mkdir -p "$(dirname "$dir")"  # build/ of a fresh clone
   if [ ! -f "$dir/build.ninja" ]; then
     emcmake cmake -S "$root/web" -B "$dir" -G Ninja -DF2_WASM_SIMD=$simd > "$dir.configure.log" 2>&1 ||
       { cat "$dir.configure.log" >&2; exit 1; }
