@@ -260,6 +260,13 @@ constexpr const char* kKeyedBall = R"(/camera 96 72 0.6 0 1 -10
 
 /// The dope sheet of `w` with the rows of `object` shown, its slider wide
 /// enough for a frame per pixel or two.
+/// A window on kKeyedBall (as keys.f2 in `dir`) at frame 0.
+std::unique_ptr<MainWindow> keyedBallWindow(const QTemporaryDir& dir) {
+    const QString path = dir.filePath("keys.f2");
+    writeFile(path, kKeyedBall);
+    return windowOn(path, 0);
+}
+
 DopeSheet* dopeSheetOf(MainWindow& w, const std::string& object) {
     w.resize(900, w.height());
     if (!QTest::qWaitFor([&] { return w.width() == 900; }, kWaitMs)) return nullptr;
@@ -304,9 +311,7 @@ void drag(DopeSheet* sheet, QPoint from, QPoint to, Qt::KeyboardModifiers modifi
 
 void StudioTest::dopeSheetDragMovesThatKeysTime() {
     QTemporaryDir dir;
-    const QString path = dir.filePath("keys.f2");
-    writeFile(path, kKeyedBall);
-    auto window = windowOn(path, 0);
+    auto window = keyedBallWindow(dir);
     QVERIFY(window);
     MainWindow& w = *window;
     const QString original = w.editor()->toPlainText();
@@ -351,9 +356,7 @@ void StudioTest::dopeSheetDragMovesThatKeysTime() {
 
 void StudioTest::dopeSheetCopiesDeletesAndSetsModes() {
     QTemporaryDir dir;
-    const QString path = dir.filePath("keys.f2");
-    writeFile(path, kKeyedBall);
-    auto window = windowOn(path, 0);
+    auto window = keyedBallWindow(dir);
     QVERIFY(window);
     MainWindow& w = *window;
     const QString original = w.editor()->toPlainText();
